@@ -1,0 +1,1 @@
+"""Internal foundations shared by every layer: errors, validation, compilation."""

@@ -1,0 +1,113 @@
+"""The exception hierarchy of rigidmech.
+
+Every error raised on purpose by rigidmech derives from :class:`RigidmechError`; the specific
+errors also derive from the builtin that fits (``ValueError`` for a wrong value or shape,
+``TypeError`` for a wrong type) so that callers can catch either.
+
+Messages follow one rule: the argument in backticks, what was expected, what was received and,
+where it helps, how to fix it.
+"""
+
+__all__ = [
+    "RigidmechError",
+    "ArgumentError",
+    "ArgumentTypeError",
+    "FrameError",
+    "ConnectionError_",
+    "SingularMassMatrixError",
+    "NumericalError",
+    "CompilationError",
+    "SceneError",
+]
+
+
+class RigidmechError(Exception):
+    """Root of every error that rigidmech raises on purpose.
+
+    Examples
+    --------
+    >>> issubclass(FrameError, RigidmechError)
+    True
+    """
+
+
+class ArgumentError(RigidmechError, ValueError):
+    """An argument has the right type but a wrong value or shape.
+
+    Examples
+    --------
+    >>> isinstance(ArgumentError("`mass` must be >= 0; got -1."), ValueError)
+    True
+    """
+
+
+class ArgumentTypeError(RigidmechError, TypeError):
+    """An argument has the wrong type (a vector where a point is expected, ...).
+
+    Examples
+    --------
+    >>> isinstance(ArgumentTypeError("`at` must be a Point; got Vector."), TypeError)
+    True
+    """
+
+
+class FrameError(RigidmechError, ValueError):
+    """Frames that do not belong together: no common root, a chain that does not compose.
+
+    Examples
+    --------
+    >>> isinstance(FrameError("no common root"), ValueError)
+    True
+    """
+
+
+class ConnectionError_(RigidmechError, ValueError):
+    """A connection between bodies that cannot be set up or solved.
+
+    (The trailing underscore avoids shadowing the builtin ``ConnectionError``.)
+
+    Examples
+    --------
+    >>> isinstance(ConnectionError_("body connected twice"), ValueError)
+    True
+    """
+
+
+class SingularMassMatrixError(RigidmechError, ArithmeticError):
+    """The mass matrix cannot be inverted at the given state.
+
+    Examples
+    --------
+    >>> issubclass(SingularMassMatrixError, ArithmeticError)
+    True
+    """
+
+
+class NumericalError(RigidmechError, ArithmeticError):
+    """A numerical computation produced non-finite values or could not proceed.
+
+    Examples
+    --------
+    >>> issubclass(NumericalError, RigidmechError)
+    True
+    """
+
+
+class CompilationError(RigidmechError, ValueError):
+    """A symbolic expression cannot be compiled with the given arguments.
+
+    Examples
+    --------
+    >>> issubclass(CompilationError, ValueError)
+    True
+    """
+
+
+class SceneError(RigidmechError, ValueError):
+    """An unknown scene name or scene option.
+
+    Examples
+    --------
+    >>> issubclass(SceneError, ValueError)
+    True
+    """
