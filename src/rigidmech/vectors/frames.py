@@ -1,0 +1,295 @@
+"""Reference systems: an origin and a direct orthonormal basis (book, ch. 2.1.5, 2.5, 9.1.2).
+
+Frames form a tree. A child frame is made from its parent by an elementary basis change
+(rotation about one axis of the parent by one angle, ch. 2.5.2), by a rotation about any fixed
+axis, by Euler angles (precession, nutation, spin: z-x-z, ch. 9.1.2) or by moving the origin.
+A frame is an immutable value: the relation to its parent is part of the value; there is no
+mutable global graph. Direction cosines and rotation vectors between frames are derived on
+demand (see :mod:`rigidmech.vectors._rotations`).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .._core.errors import ArgumentTypeError, FrameError
+from ._rotations import ONE, ZERO, FrameBase, direction_cosines
+from .points import Point
+from .vector import Vector, rotation_vector
+
+__all__ = ["Frame"]
+
+_AXES = "ijk"
+
+
+class Frame(FrameBase):
+    """A reference system (O; i, j, k): an origin and a direct orthonormal basis.
+
+    Parameters
+    ----------
+    name : str
+        Name used in printing. ``Frame(name)`` creates a root frame (for example the
+        Galilean reference); children come from :meth:`rotated`, :meth:`euler` and
+        :meth:`translated`.
+
+    Notes
+    -----
+    For a rotation by :math:`\\psi` about :math:`\\mathbf{k}_0` the book writes (ch. 2.5.2)
+
+    .. math:: \\mathbf{i}_1 = \\cos\\psi\\,\\mathbf{i}_0 + \\sin\\psi\\,\\mathbf{j}_0,\\quad
+              \\mathbf{j}_1 = -\\sin\\psi\\,\\mathbf{i}_0 + \\cos\\psi\\,\\mathbf{j}_0,\\quad
+              \\mathbf{k}_1 = \\mathbf{k}_0 .
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame, coordinates
+    >>> psi = coordinates("psi")
+    >>> R0 = Frame("R0")
+    >>> R1 = R0.rotated("R1", about=R0.k, angle=psi)
+    >>> R1.i.components(R0).T
+    Matrix([[cos(psi(t)), sin(psi(t)), 0]])
+    >>> R1.rotation_vector(R0)
+    Derivative(psi(t), t)*R1.k
+    """
+
+    __slots__ = ()
+
+    def __init__(self, name: str):
+        self._set(name, None, None, ZERO, None, None)
+        self._origin = Point._root_origin(self)
+
+    @classmethod
+    def _child(cls, name, parent, *, axis=None, angle=ZERO, matrix=None, origin):
+        obj = cls.__new__(cls)
+        obj._set(name, parent, axis, angle, matrix, origin)
+        return obj
+
+    def rotated(self, name: str, *, about, angle, origin=None) -> Frame:
+        """Frame obtained by rotating this basis by ``angle`` about ``about``.
+
+        Parameters
+        ----------
+        name : str
+            Name of the new frame.
+        about : Vector
+            Axis of rotation. A basis vector of this frame (``R0.k``, or its opposite) gives
+            the book's elementary basis change (ch. 2.5.2); any other constant vector gives
+            a rotation about that fixed axis (Rodrigues' formula).
+        angle : sympy expression
+            Angle of rotation, usually a parameter of situation ``q(t)``.
+        origin : Point, optional
+            Origin of the new frame; defaults to this frame's origin.
+
+        Returns
+        -------
+        Frame
+
+        Raises
+        ------
+        FrameError
+            If ``about`` is the zero vector or moves relative to this frame.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0")
+        >>> R1 = R0.rotated("R1", about=R0.i, angle=q)
+        >>> R1.k.components(R0).T
+        Matrix([[0, -sin(q(t)), cos(q(t))]])
+        """
+        if not isinstance(about, Vector):
+            raise ArgumentTypeError(
+                f"`about` must be a Vector (for example {self._name}.k); "
+                f"got {type(about).__name__}."
+            )
+        angle = _sympify(angle, "angle")
+        origin = self._check_origin(origin)
+        c = about._comps(self)
+        nonzero = [n for n in range(3) if c[n] != 0]
+        if not nonzero:
+            raise FrameError("`about` must be a non-zero vector; got the zero vector.")
+        if any(x.atoms(sp.core.function.AppliedUndef) or x.has(sp.Symbol("t", real=True))
+               for x in c):
+            raise FrameError(
+                f"`about` must be a fixed axis of {self._name}; got {about!r}, which moves "
+                f"relative to {self._name}. Chain two rotations instead."
+            )
+        if len(nonzero) == 1:
+            n = nonzero[0]
+            sign = sp.sign(c[n])
+            if sign in (1, -1):
+                return Frame._child(name, self, axis=n, angle=sign * angle, origin=origin)
+        norm = sp.sqrt(sum(x**2 for x in c))
+        ux, uy, uz = (sp.simplify(x / norm) for x in c)
+        cs, sn = sp.cos(angle), sp.sin(angle)
+        v = 1 - cs
+        m = (
+            (cs + ux * ux * v, ux * uy * v - uz * sn, ux * uz * v + uy * sn),
+            (uy * ux * v + uz * sn, cs + uy * uy * v, uy * uz * v - ux * sn),
+            (uz * ux * v - uy * sn, uz * uy * v + ux * sn, cs + uz * uz * v),
+        )
+        return Frame._child(name, self, matrix=m, origin=origin)
+
+    def euler(self, name: str, precession, nutation, spin, *, origin=None) -> Frame:
+        """Frame given by Euler angles relative to this one (book, ch. 9.1.2): z-x-z.
+
+        Precession ``psi`` about k0 gives (u, w, k0), nutation ``theta`` about the line of
+        nodes u gives (u, v, k), spin ``phi`` about k gives the body basis (i, j, k). The two
+        intermediate frames are named ``name + "_psi"`` and ``name + "_theta"``; they are the
+        returned frame's parent and grandparent.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> psi, theta, phi = coordinates("psi theta phi")
+        >>> R0 = Frame("R0")
+        >>> R = R0.euler("R", psi, theta, phi)
+        >>> R.parent.name, R.parent.parent.name
+        ('R_theta', 'R_psi')
+        >>> R.rotation_vector(R0)
+        Derivative(phi(t), t)*R.k + Derivative(theta(t), t)*R_psi.i + Derivative(psi(t), t)*R_psi.k
+        >>> R.rotation_vector(R0).components(R.parent).T
+        Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(psi(t), t), cos(theta(t))*Derivative(psi(t), t) + Derivative(phi(t), t)]])
+        """
+        f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
+        f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
+        return f2.rotated(name, about=f2.k, angle=spin)
+
+    def translated(self, name: str, origin: Point) -> Frame:
+        """Frame with the same basis as this one and the origin ``origin``.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> R1 = R0.translated("R1", R0.point("A", 1, 0, 0))
+        >>> R1.origin - R0.origin
+        R0.i
+        """
+        return Frame._child(name, self, axis=2, angle=ZERO, origin=self._check_origin(origin))
+
+    def _check_origin(self, origin):
+        if origin is None:
+            return self._origin
+        if not isinstance(origin, Point):
+            raise ArgumentTypeError(
+                f"`origin` must be a Point; got {type(origin).__name__}. "
+                f"For a position vector v use {self._name}.origin.moved(name, v)."
+            )
+        if origin.root != self.root:
+            raise FrameError(
+                f"`origin` belongs to the tree of {origin.root.name}, not {self.root.name}."
+            )
+        return origin
+
+    @property
+    def origin(self) -> Point:
+        """The origin O of the reference system."""
+        return self._origin
+
+    @property
+    def angle(self):
+        """Angle of the elementary rotation from the parent (0 for a root or a general
+        rotation)."""
+        return self._angle
+
+    def _unit(self, n):
+        if self._basis is None:
+            self._basis = tuple(
+                Vector._from_parts(((self, tuple(ONE if m == k else ZERO for m in range(3))),))
+                for k in range(3)
+            )
+        return self._basis[n]
+
+    @property
+    def i(self) -> Vector:
+        """First basis vector."""
+        return self._unit(0)
+
+    @property
+    def j(self) -> Vector:
+        """Second basis vector."""
+        return self._unit(1)
+
+    @property
+    def k(self) -> Vector:
+        """Third basis vector."""
+        return self._unit(2)
+
+    @property
+    def basis(self):
+        """The basis (i, j, k) as a tuple of vectors."""
+        return (self.i, self.j, self.k)
+
+    def vector(self, x, y, z) -> Vector:
+        """The vector x i + y j + z k of this basis.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> Frame("R0").vector(1, 2, 3)
+        R0.i + 2*R0.j + 3*R0.k
+        """
+        return Vector.from_components(self, (x, y, z))
+
+    def point(self, name: str, x, y, z) -> Point:
+        """The point of coordinates (x, y, z) in this reference system (ch. 2.3.3).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> R0.point("A", 1, 2, 0).coordinates(R0).T
+        Matrix([[1, 2, 0]])
+        """
+        return self._origin.moved(name, self.vector(x, y, z))
+
+    def dcm(self, other: Frame) -> sp.ImmutableMatrix:
+        """Direction cosines C: components in ``self`` = C @ components in ``other``; the
+        columns are ``other``'s basis vectors expressed in ``self`` (book, ch. 1.5.2).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q1, q2 = coordinates("q1 q2")
+        >>> R0 = Frame("R0")
+        >>> R1 = R0.rotated("R1", about=R0.k, angle=q1)
+        >>> R2 = R1.rotated("R2", about=R1.k, angle=q2)
+        >>> R0.dcm(R2)[0, 0]
+        cos(q1(t) + q2(t))
+        """
+        if not isinstance(other, FrameBase):
+            raise ArgumentTypeError(f"`other` must be a Frame; got {type(other).__name__}.")
+        return sp.ImmutableMatrix(direction_cosines(self, other))
+
+    def rotation_vector(self, relative_to: Frame) -> Vector:
+        """The rotation vector omega(self/relative_to) (book, ch. 9.2.3).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q1, q2 = coordinates("q1 q2")
+        >>> R0 = Frame("R0")
+        >>> R2 = R0.rotated("R1", about=R0.k, angle=q1).rotated("R2", about=R0.k, angle=q2)
+        >>> R2.rotation_vector(R0)
+        (Derivative(q1(t), t) + Derivative(q2(t), t))*R2.k
+        """
+        return rotation_vector(self, relative_to)
+
+    def __repr__(self):
+        if self._parent is None:
+            return f"Frame({self._name!r})"
+        if self._axis is not None:
+            return (f"{self._parent._name}.rotated({self._name!r}, "
+                    f"about={self._parent._name}.{_AXES[self._axis]}, angle={self._angle})")
+        return f"<Frame {self._name!r}: general rotation from {self._parent._name!r}>"
+
+
+def _sympify(x, argument):
+    try:
+        return sp.sympify(x)
+    except (sp.SympifyError, TypeError) as exc:
+        raise ArgumentTypeError(
+            f"`{argument}` must be a number or a sympy expression; got {type(x).__name__}."
+        ) from exc

@@ -1,0 +1,694 @@
+"""Vectors of the Euclidean vector space, possibly mixing bases (book, ch. 1 and 3).
+
+A :class:`Vector` is a sum of parts, each a triple of components in the basis of one frame.
+Vectors are expressed in a single basis only when asked (:meth:`Vector.express`,
+:meth:`Vector.components`); operations keep each part in the basis where it is shortest.
+The derivative relative to a frame uses the derivation formula (ch. 3.1, 9.2.3):
+
+.. math:: \\left.\\frac{d\\mathbf{u}}{dt}\\right|_{R_a} =
+          \\left.\\frac{d\\mathbf{u}}{dt}\\right|_{R_b} + \\boldsymbol{\\omega}(R_b/R_a)
+          \\wedge \\mathbf{u}
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
+from ._rotations import (
+    ZERO,
+    FrameBase,
+    common_ancestor,
+    direction_cosines,
+    dot3,
+    matmul,
+    matvec,
+    path_to_ancestor,
+    transpose,
+)
+from .symbols import t
+
+__all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector"]
+
+_ZERO3 = (ZERO, ZERO, ZERO)
+
+
+def _cross3(u, v):
+    def term(a, b, c, d):
+        p = a * b if a != 0 and b != 0 else ZERO
+        q = c * d if c != 0 and d != 0 else ZERO
+        return p - q
+
+    return (term(u[1], v[2], u[2], v[1]), term(u[2], v[0], u[0], v[2]),
+            term(u[0], v[1], u[1], v[0]))
+
+
+def _nonzero(c):
+    return sum(1 for x in c if x != 0)
+
+
+def _check_frame(frame, argument):
+    if not isinstance(frame, FrameBase):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a Frame; got {type(frame).__name__}."
+        )
+
+
+class Vector:
+    """A vector, as a sum of component triples in the bases of one or more frames.
+
+    Build vectors from basis vectors (``2 * R0.i + 3 * R1.j``) or with
+    :meth:`from_components`. Vectors are immutable; ``==`` is exact and structural (the same
+    parts in the same bases); use :meth:`equals` for a symbolic comparison and
+    :meth:`is_close` for a numeric one.
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame, coordinates
+    >>> psi = coordinates("psi")
+    >>> R0 = Frame("R0")
+    >>> R1 = R0.rotated("R1", about=R0.k, angle=psi)
+    >>> u = 2 * R0.i + 3 * R1.j
+    >>> u.components(R0).T
+    Matrix([[2 - 3*sin(psi(t)), 3*cos(psi(t)), 0]])
+    >>> u.dt(R0)
+    -3*Derivative(psi(t), t)*R1.i
+    """
+
+    __slots__ = ("_parts", "_hash")
+
+    def __init__(self, *args, **kwargs):
+        raise TypeError(
+            "build a Vector from basis vectors (2*R0.i + R0.j), with Frame.vector(x, y, z) "
+            "or with Vector.from_components(frame, components)."
+        )
+
+    # -- construction -------------------------------------------------------------------
+    @classmethod
+    def _from_parts(cls, parts):
+        obj = object.__new__(cls)
+        obj._parts = tuple(parts)
+        obj._hash = None
+        return obj
+
+    @classmethod
+    def zero(cls) -> Vector:
+        """The zero vector.
+
+        Examples
+        --------
+        >>> Vector.zero()
+        0
+        """
+        return cls._from_parts(())
+
+    @classmethod
+    def from_components(cls, frame, components) -> Vector:
+        """The vector with the given components in the basis of ``frame``.
+
+        Parameters
+        ----------
+        frame : Frame
+        components : sequence of 3 scalars (numbers or sympy expressions)
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> Vector.from_components(R0, [1, 0, -2])
+        R0.i - 2*R0.k
+        """
+        _check_frame(frame, "frame")
+        try:
+            comps = tuple(sp.sympify(c) for c in components)
+        except (sp.SympifyError, TypeError) as exc:
+            raise ArgumentTypeError(
+                f"`components` must be 3 numbers or sympy expressions; got {components!r}."
+            ) from exc
+        if len(comps) != 3:
+            raise ArgumentError(
+                f"`components` must have 3 entries; got {len(comps)}: {components!r}."
+            )
+        if any(isinstance(c, sp.MatrixBase) for c in comps):
+            raise ArgumentTypeError("`components` must be scalars; got a matrix entry.")
+        if all(c == 0 for c in comps):
+            return cls.zero()
+        return cls._from_parts(((frame, comps),))
+
+    # -- access -------------------------------------------------------------------------
+    @property
+    def parts(self):
+        """Tuple of ``(frame, (x, y, z))``: the components in each basis used."""
+        return self._parts
+
+    @property
+    def frames(self):
+        """The frames whose bases this vector uses."""
+        return tuple(f for f, _ in self._parts)
+
+    @property
+    def is_zero(self) -> bool:
+        """True if the vector is structurally zero (no non-zero component)."""
+        return not self._parts
+
+    def _comps(self, frame):
+        acc = [ZERO, ZERO, ZERO]
+        for f, c in self._parts:
+            if f is frame or f == frame:
+                v = c
+            else:
+                v = matvec(direction_cosines(frame, f), c)
+            for n in range(3):
+                if v[n] != 0:
+                    acc[n] = acc[n] + v[n]
+        return tuple(acc)
+
+    def components(self, frame) -> sp.ImmutableMatrix:
+        """Column of the components in the basis of ``frame``.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> (R0.i + R0.k).components(R0).T
+        Matrix([[1, 0, 1]])
+        """
+        _check_frame(frame, "frame")
+        return sp.ImmutableMatrix(3, 1, self._comps(frame))
+
+    def express(self, frame) -> Vector:
+        """The same vector with all its parts in the basis of ``frame``.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R1.i.express(R0)
+        cos(q(t))*R0.i + sin(q(t))*R0.j
+        """
+        _check_frame(frame, "frame")
+        if len(self._parts) == 1 and self._parts[0][0] == frame:
+            return self
+        comps = self._comps(frame)
+        if all(c == 0 for c in comps):
+            return Vector.zero()
+        return Vector._from_parts(((frame, comps),))
+
+    # -- algebra ------------------------------------------------------------------------
+    def __add__(self, other):
+        if not isinstance(other, Vector):
+            if other == 0:
+                return self
+            return NotImplemented
+        if not other._parts:
+            return self
+        if not self._parts:
+            return other
+        merged = dict(self._parts)
+        for f, c in other._parts:
+            if f in merged:
+                old = merged[f]
+                merged[f] = tuple(a + b for a, b in zip(old, c, strict=True))
+            else:
+                merged[f] = c
+        return Vector._from_parts(
+            (f, c) for f, c in merged.items() if any(x != 0 for x in c)
+        )
+
+    def __radd__(self, other):
+        if isinstance(other, int | float | sp.Expr) and other == 0:
+            return self
+        return NotImplemented
+
+    def __neg__(self):
+        return Vector._from_parts((f, tuple(-x for x in c)) for f, c in self._parts)
+
+    def __sub__(self, other):
+        if not isinstance(other, Vector):
+            if other == 0:
+                return self
+            return NotImplemented
+        return self + (-other)
+
+    def __mul__(self, scalar):
+        if isinstance(scalar, Vector):
+            raise ArgumentTypeError(
+                "the product of two vectors is ambiguous: use u.dot(v) for the scalar product "
+                "and u.cross(v) for the vector product."
+            )
+        try:
+            s = sp.sympify(scalar)
+        except (sp.SympifyError, TypeError):
+            return NotImplemented
+        if not isinstance(s, sp.Expr):
+            return NotImplemented
+        if s == 0:
+            return Vector.zero()
+        if s == 1:
+            return self
+        return Vector._from_parts((f, tuple(s * x for x in c)) for f, c in self._parts)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, scalar):
+        s = sp.sympify(scalar)
+        if s == 0:
+            raise ArgumentError("`scalar` must be non-zero to divide a vector; got 0.")
+        return self * (1 / s)
+
+    def dot(self, other) -> sp.Expr:
+        """Scalar product (book, ch. 1.3).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R0.i.dot(R1.i)
+        cos(q(t))
+        """
+        _check_vector(other, "other")
+        terms = []
+        for fa, ca in self._parts:
+            for fb, cb in other._parts:
+                if fa is fb or fa == fb:
+                    terms.append(dot3(ca, cb))
+                else:
+                    terms.append(dot3(ca, matvec(direction_cosines(fa, fb), cb)))
+        return sp.Add(*terms) if terms else ZERO
+
+    def cross(self, other) -> Vector:
+        """Vector product (book, ch. 1.4), computed part by part in the basis that keeps the
+        converted operand shortest.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> R0.i.cross(R0.j)
+        R0.k
+        """
+        _check_vector(other, "other")
+        acc = {}
+        for fa, ca in self._parts:
+            for fb, cb in other._parts:
+                if fa is fb or fa == fb:
+                    frame, w = fa, _cross3(ca, cb)
+                else:
+                    cb_in_a = matvec(direction_cosines(fa, fb), cb)
+                    if _nonzero(cb_in_a) <= _nonzero(cb):
+                        frame, w = fa, _cross3(ca, cb_in_a)
+                    else:
+                        ca_in_b = matvec(direction_cosines(fb, fa), ca)
+                        if _nonzero(ca_in_b) <= _nonzero(ca):
+                            frame, w = fb, _cross3(ca_in_b, cb)
+                        else:
+                            frame, w = fa, _cross3(ca, cb_in_a)
+                old = acc.get(frame)
+                acc[frame] = w if old is None else tuple(
+                    a + b for a, b in zip(old, w, strict=True))
+        return Vector._from_parts((f, c) for f, c in acc.items() if any(x != 0 for x in c))
+
+    def magnitude(self) -> sp.Expr:
+        """Norm of the vector (book, ch. 1.3.2).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> (3 * R0.i + 4 * R0.j).magnitude()
+        5
+        """
+        return sp.sqrt(self.dot(self))
+
+    def normalized(self) -> Vector:
+        """The unit vector of the same direction.
+
+        Raises
+        ------
+        ArgumentError
+            For the zero vector.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> (2 * R0.k).normalized()
+        R0.k
+        """
+        if self.is_zero:
+            raise ArgumentError("cannot normalise the zero vector: it has no direction.")
+        return self / self.magnitude()
+
+    # -- calculus -----------------------------------------------------------------------
+    def dt(self, frame) -> Vector:
+        """Derivative with respect to time relative to ``frame`` (book, ch. 3.1, 9.2.3).
+
+        Each part is differentiated in its own basis and the derivation formula adds
+        omega(basis/frame) ^ part.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R1.i.dt(R0)
+        Derivative(q(t), t)*R1.j
+        >>> R1.i.dt(R1)
+        0
+        """
+        _check_frame(frame, "frame")
+        out = Vector.zero()
+        for f, c in self._parts:
+            d = tuple(sp.diff(x, t) for x in c)
+            if any(x != 0 for x in d):
+                out = out + Vector._from_parts(((f, d),))
+            if f != frame:
+                w = rotation_vector(f, frame)
+                if w._parts:
+                    out = out + w.cross(Vector._from_parts(((f, c),)))
+        return out
+
+    def diff(self, variable, frame=None) -> Vector:
+        """Partial derivative with respect to ``variable`` (book, ch. 3.2-3.3).
+
+        Parameters
+        ----------
+        variable : sympy expression
+            A symbol, a parameter ``q(t)`` or a derivative ``q'(t)``.
+        frame : Frame, optional
+            Frame relative to which the derivative is taken. May be omitted only when no
+            basis used by the vector depends on ``variable``.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates, t
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> (q.diff(t) * R1.j).diff(q.diff(t))
+        R1.j
+        >>> R1.i.diff(q, R0)
+        -sin(q(t))*R0.i + cos(q(t))*R0.j
+        """
+        variable = sp.sympify(variable)
+        parts = []
+        for f, c in self._parts:
+            if frame is not None and f != frame and _frame_depends_on(f, frame, variable):
+                c = matvec(direction_cosines(frame, f), c)
+                f = frame
+            elif frame is None and _frame_depends_on(f, f.root, variable):
+                raise FrameError(
+                    f"the basis of {f.name} depends on {variable}: pass `frame`, the frame "
+                    "relative to which the partial derivative is taken."
+                )
+            d = tuple(sp.diff(x, variable) for x in c)
+            if any(x != 0 for x in d):
+                parts.append((f, d))
+        out = Vector.zero()
+        for p in parts:
+            out = out + Vector._from_parts((p,))
+        return out
+
+    # -- element-wise transforms --------------------------------------------------------
+    def applyfunc(self, func) -> Vector:
+        """Apply ``func`` to every component (of every part).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.vectors import Frame
+        >>> x = sp.Symbol("x")
+        >>> R0 = Frame("R0")
+        >>> ((x + x) * R0.i).applyfunc(lambda c: c / 2)
+        x*R0.i
+        """
+        return Vector._from_parts(
+            (f, cc) for f, cc in ((f, tuple(sp.sympify(func(x)) for x in c))
+                                  for f, c in self._parts) if any(x != 0 for x in cc)
+        )
+
+    def subs(self, *args, **kwargs) -> Vector:
+        """Substitute in every component (sympy's ``subs``).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.vectors import Frame
+        >>> a = sp.Symbol("a"); R0 = Frame("R0")
+        >>> (a * R0.i).subs(a, 2)
+        2*R0.i
+        """
+        return self.applyfunc(lambda x: x.subs(*args, **kwargs))
+
+    def xreplace(self, rule) -> Vector:
+        """Exact structural replacement in every component (sympy's ``xreplace``)."""
+        return self.applyfunc(lambda x: x.xreplace(rule))
+
+    def simplify(self, frame=None) -> Vector:
+        """Simplified components, optionally after expressing in ``frame``.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.vectors import Frame
+        >>> x = sp.Symbol("x"); R0 = Frame("R0")
+        >>> ((sp.sin(x)**2 + sp.cos(x)**2) * R0.i).simplify()
+        R0.i
+        """
+        v = self if frame is None else self.express(frame)
+        return v.applyfunc(sp.simplify)
+
+    # -- comparison ---------------------------------------------------------------------
+    def equals(self, other, frame=None) -> bool:
+        """Symbolic equality: the difference simplifies to zero in one basis.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R1.i.equals(R1.i.express(R0))
+        True
+        """
+        _check_vector(other, "other")
+        diff = self - other
+        if diff.is_zero:
+            return True
+        frame = frame if frame is not None else diff._parts[0][0]
+        return all(sp.simplify(c) == 0 for c in diff._comps(frame))
+
+    def is_close(self, other, *, rtol=1e-9, atol=0.0, frame=None) -> bool:
+        """Numeric closeness component-wise in one basis (components must be numbers).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame
+        >>> R0 = Frame("R0")
+        >>> (R0.i * 1.0).is_close(R0.i * (1 + 1e-12))
+        True
+        """
+        _check_vector(other, "other")
+        frames = self.frames + other.frames
+        if not frames:
+            return True
+        frame = frame if frame is not None else frames[0]
+        try:
+            a = np.array([complex(x) for x in self._comps(frame)])
+            b = np.array([complex(x) for x in other._comps(frame)])
+        except TypeError as exc:
+            raise ArgumentError(
+                "`is_close` needs numeric components; substitute values first or use "
+                "`equals` for symbolic comparison."
+            ) from exc
+        return bool(np.allclose(a, b, rtol=rtol, atol=atol))
+
+    def __eq__(self, other):
+        if isinstance(other, Vector):
+            return set(self._parts) == set(other._parts)
+        if isinstance(other, int | float) and other == 0:
+            return self.is_zero
+        return NotImplemented
+
+    def __hash__(self):
+        if self._hash is None:
+            self._hash = hash(frozenset(self._parts))
+        return self._hash
+
+    # -- printing -----------------------------------------------------------------------
+    def _terms(self, fmt_coeff, fmt_unit):
+        out = []
+        for f, c in self._parts:
+            for n, x in enumerate(c):
+                if x == 0:
+                    continue
+                unit = fmt_unit(f, n)
+                if x == 1:
+                    out.append(unit)
+                elif x == -1:
+                    out.append("-" + unit)
+                else:
+                    out.append(fmt_coeff(x) + unit)
+        return out
+
+    @staticmethod
+    def _join(terms):
+        if not terms:
+            return "0"
+        s = terms[0]
+        for term in terms[1:]:
+            s += " - " + term[1:] if term.startswith("-") else " + " + term
+        return s
+
+    def __repr__(self):
+        def coeff(x):
+            s = sp.sstr(x)
+            if isinstance(x, sp.Add):
+                s = f"({s})"
+            return s + "*"
+
+        return self._join(self._terms(coeff, lambda f, n: f"{f.name}.{'ijk'[n]}"))
+
+    def __str__(self):
+        def coeff(x):
+            s = sp.sstr(x)
+            return (f"({s})" if isinstance(x, sp.Add) else s) + " "
+
+        return self._join(self._terms(coeff, lambda f, n: f"{'ijk'[n]}_{f.name}"))
+
+    def _latex(self, printer=None):
+        printer = printer or sp.printing.latex.LatexPrinter()
+
+        def coeff(x):
+            s = printer._print(x)
+            return (rf"\left({s}\right)" if isinstance(x, sp.Add) else s) + " "
+
+        def unit(f, n):
+            return rf"\vec{{{'ijk'[n]}}}_{{{sp.latex(sp.Symbol(f.name))}}}"
+
+        return self._join(self._terms(coeff, unit))
+
+    def _repr_latex_(self):
+        return f"$\\displaystyle {self._latex()}$"
+
+
+def _check_vector(v, argument):
+    if not isinstance(v, Vector):
+        raise ArgumentTypeError(f"`{argument}` must be a Vector; got {type(v).__name__}.")
+
+
+def _frame_depends_on(f, relative_to, variable):
+    """Whether the basis of ``f`` moves relative to ``relative_to`` with ``variable``."""
+    if f == relative_to:
+        return False
+    anc = common_ancestor(f, relative_to)
+    for g in path_to_ancestor(f, anc) + path_to_ancestor(relative_to, anc):
+        value = g._angle if g._axis is not None else g._matrix
+        if sp.sympify(value).has(variable) if g._axis is not None else any(
+                x.has(variable) for row in value for x in row):
+            return True
+    return False
+
+
+def dot(u: Vector, v: Vector):
+    """Scalar product u . v (book, ch. 1.3).
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame
+    >>> R0 = Frame("R0")
+    >>> dot(R0.i + R0.j, R0.j)
+    1
+    """
+    _check_vector(u, "u")
+    return u.dot(v)
+
+
+def cross(u: Vector, v: Vector) -> Vector:
+    """Vector product u ^ v (book, ch. 1.4).
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame
+    >>> R0 = Frame("R0")
+    >>> cross(R0.j, R0.k)
+    R0.i
+    """
+    _check_vector(u, "u")
+    return u.cross(v)
+
+
+def mixed(u: Vector, v: Vector, w: Vector):
+    """Mixed product (u, v, w) = u . (v ^ w) (book, ch. 1.4.5).
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame
+    >>> R0 = Frame("R0")
+    >>> mixed(R0.i, R0.j, R0.k)
+    1
+    """
+    _check_vector(u, "u")
+    _check_vector(v, "v")
+    return u.dot(v.cross(w))
+
+
+def _own_rotation(f):
+    """omega(f / f.parent) as a 3-tuple in the basis of f."""
+    if f._axis is not None:
+        rate = sp.diff(f._angle, t)
+        return tuple(rate if n == f._axis else ZERO for n in range(3))
+    c = f._matrix
+    cdot = tuple(tuple(sp.diff(x, t) for x in row) for row in c)
+    w = matmul(transpose(c), cdot)  # skew: [[0,-wz,wy],[wz,0,-wx],[-wy,wx,0]]
+    return tuple(sp.simplify(x) for x in (w[2][1], w[0][2], w[1][0]))
+
+
+@lru_cache(maxsize=16384)
+def rotation_vector(frame, relative_to) -> Vector:
+    """The rotation vector omega(frame/relative_to) (book, ch. 9.2.3).
+
+    For an elementary rotation by q about an axis the contribution is q' times that axis;
+    for a general rotation C(t) it is the axial vector of C^T C'. Contributions are summed
+    along the path through the common ancestor (composition of rotations, ch. 9.3.1), each
+    in the basis of ``frame`` when that keeps it as short, otherwise in its own basis.
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame, coordinates
+    >>> q = coordinates("q")
+    >>> R0 = Frame("R0")
+    >>> R1 = R0.rotated("R1", about=R0.j, angle=q)
+    >>> rotation_vector(R0, R1)
+    -Derivative(q(t), t)*R0.j
+    """
+    _check_frame(frame, "frame")
+    _check_frame(relative_to, "relative_to")
+    if frame == relative_to:
+        return Vector.zero()
+    anc = common_ancestor(frame, relative_to)
+    acc = {frame: (ZERO, ZERO, ZERO)}
+
+    def add(f, sign):
+        w = _own_rotation(f)
+        if all(x == 0 for x in w):
+            return
+        w = tuple(sign * x for x in w)
+        # Keep each contribution in a basis where it stays as short as in its own: the
+        # moving frame first, then a basis already used; else its own (book's form, e.g.
+        # psi' k0 + theta' u + phi' k for Euler angles).
+        for g in acc:
+            wg = w if g == f else matvec(direction_cosines(g, f), w)
+            if _nonzero(wg) <= _nonzero(w):
+                acc[g] = tuple(a + b for a, b in zip(acc[g], wg, strict=True))
+                return
+        acc[f] = w
+
+    for f in path_to_ancestor(frame, anc):
+        add(f, 1)
+    for f in path_to_ancestor(relative_to, anc):
+        add(f, -1)
+    return Vector._from_parts((g, c) for g, c in acc.items() if any(x != 0 for x in c))
