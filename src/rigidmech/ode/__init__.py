@@ -1,0 +1,49 @@
+"""Numerical integration of ordinary differential equations (book, Part VI, ch. 26-27).
+
+Purely numeric: this layer knows nothing of sympy or of mechanics, and imports no other
+rigidmech layer but ``rigidmech._core``. Everything goes through one function,
+:func:`solve`, which validates its arguments and dispatches to a registered method:
+
+* fixed step: ``"euler"``, ``"heun"``, ``"midpoint"``, ``"rk4"``, ``"rk38"``, or any
+  :class:`~rigidmech.ode.tableaux.ButcherTableau` (ch. 26.2);
+* adaptive, with dense output, events and stiffness detection: ``"dopri5"`` (alias
+  ``"rk45"``) and ``"dop853"``;
+* extrapolation (Gragg-Bulirsch-Stoer, the book's Romberg idea, ch. 26.2.3): ``"gbs"``;
+* stiff: ``"radau"`` (Radau IIA, order 5).
+
+Examples
+--------
+>>> import numpy as np
+>>> from rigidmech import ode
+>>> r = ode.solve(lambda t, y: -y, (0.0, 1.0), [1.0], method="dop853", rtol=1e-12, atol=0)
+>>> float(r.y[0, -1])
+0.36787944117...
+"""
+
+from . import tableaux
+from ._result import OdeResult
+from ._warnings import StiffnessWarning
+from .api import methods, solve
+from .events import EventTracker, event
+
+__all__ = [
+    "solve",
+    "methods",
+    "OdeResult",
+    "StiffnessWarning",
+    "tableaux",
+    "event",
+    "EventTracker",
+    "METHODS",
+]
+
+
+def __getattr__(name):
+    if name == "METHODS":  # computed on access so that late registrations show up
+        return tuple(methods())
+    raise AttributeError(f"module 'rigidmech.ode' has no attribute {name!r}")
+
+
+# --- methods: importing a module registers its methods with rigidmech.ode._registry ---------
+from . import adaptive, runge_kutta  # noqa: E402, F401, I001
+# --- part B (multistep, geometric) adds its import line here ----------------------------------

@@ -1,0 +1,197 @@
+"""Shared machinery of the step-by-step integrators: error norm, initial step, recording.
+
+Internally every integrator works on a *flat* state of length ``N = n * batch`` so that one
+code path serves a single trajectory and a batch; :class:`Problem` reshapes to the user's shape
+``(n,)`` or ``(n, batch)`` only when calling ``fun`` and when returning results.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._dense import DenseSolution
+from ._result import OdeResult
+
+__all__ = ["Problem", "Recorder", "initial_step", "fail_message"]
+
+
+class Problem:
+    """The right-hand side seen through the flat state, plus the norm used for error control.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(t, y)`` with ``y`` of shape `shape`.
+    shape : tuple
+        ``(n,)`` or ``(n, batch)``.
+
+    Notes
+    -----
+    The error norm is Hairer's weighted root-mean-square norm
+    ``sqrt(mean((e / (atol + rtol max(|y0|, |y1|)))**2))``; for a batch it is taken per
+    trajectory and the maximum over the batch drives the shared step.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> p = Problem(lambda t, y: -y, (2, 3))
+    >>> p.norm(np.ones(6)), p.nfev
+    (1.0, 0)
+    """
+
+    __slots__ = ("fun", "shape", "batch", "nfev", "flat")
+
+    def __init__(self, fun, shape):
+        self.fun = fun
+        self.shape = tuple(shape)
+        self.batch = len(self.shape) == 2
+        self.flat = not self.batch
+        self.nfev = 0
+
+    def __call__(self, t, y, out):
+        """Evaluate ``fun(t, y)`` and COPY the result into `out` (never keep fun's array)."""
+        self.nfev += 1
+        if self.batch:
+            f = self.fun(t, y.reshape(self.shape))
+            out.reshape(self.shape)[...] = f
+        else:
+            out[...] = self.fun(t, y)
+        return out
+
+    def sumsq(self, x):
+        """Sum of squares of `x`: a float, or one per trajectory of a batch."""
+        if self.batch:
+            x = x.reshape(self.shape)
+            return np.einsum("ij,ij->j", x, x)
+        return float(np.dot(x, x))
+
+    def norm(self, x):
+        """Weighted RMS norm of an already scaled vector `x` (max over a batch)."""
+        if self.batch:
+            x = x.reshape(self.shape)
+            return float(np.sqrt(np.max(np.mean(x * x, axis=0))))
+        return float(np.sqrt(np.dot(x, x) / x.size))
+
+
+def initial_step(problem, t0, y0, f0, direction, order, rtol, atol, t_bound, max_step):
+    """Hairer's starting step size (HNW I, II.4, algorithm of p. 169).
+
+    Returns
+    -------
+    float
+        Absolute value of the first step.
+    """
+    length = abs(t_bound - t0)
+    scale = atol + np.abs(y0) * rtol
+    d0 = problem.norm(y0 / scale)
+    d1 = problem.norm(f0 / scale)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h0 = min(h0, length)
+    f1 = problem(t0 + direction * h0, y0 + direction * h0 * f0, np.empty_like(y0))
+    d2 = problem.norm((f1 - f0) / scale) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1))
+    return min(100 * h0, h1, length, max_step)
+
+
+def fail_message(reason, t, y, shape):
+    """One sentence naming the reason, the time and the state of a numerical failure."""
+    state = np.array2string(np.asarray(y).reshape(shape), precision=6, threshold=12)
+    return f"{reason} at t = {t!r}; state y = {state}."
+
+
+class Recorder:
+    """Collects accepted steps, dense coefficients and events, then builds the result.
+
+    Parameters
+    ----------
+    t0 : float
+    y0 : ndarray, shape (N,)
+    shape : tuple
+        User shape of a state.
+    dense : bool
+        Whether per-step coefficients are collected (dense output, ``t_eval`` or events).
+    events : EventTracker or None
+    form : {"power", "nested"}
+        Form of the dense coefficients (see :class:`DenseSolution`).
+    """
+
+    __slots__ = ("ts", "ys", "cs", "shape", "dense", "events", "form", "status", "message",
+                 "_last_full_end")
+
+    def __init__(self, t0, y0, shape, dense, events, form="power"):
+        self.ts = [t0]
+        self.ys = [y0.copy()]
+        self.cs = [] if dense else None
+        self.shape = shape
+        self.dense = dense
+        self.events = events
+        self.form = form
+        self.status = 0
+        self.message = "The integration reached the end of `t_span`."
+
+    def accept(self, t_new, y_new, coeffs=None):
+        """Record one accepted step (copies `y_new`); return True if a terminal event fired.
+
+        `coeffs` holds the dense coefficients of the step, or a zero-argument callable
+        computing them (called only if they are needed: dense output, or a sign change of an
+        event function).
+        """
+        t_old = self.ts[-1]
+        y_old = self.ys[-1]
+        self.ts.append(t_new)
+        self.ys.append(y_new.copy())
+        if self.cs is not None:
+            if callable(coeffs):
+                coeffs = coeffs()
+            self.cs.append(coeffs)
+        if self.events is not None:
+            box = [coeffs]
+
+            def interp(t):
+                if callable(box[0]):
+                    box[0] = box[0]()
+                step = DenseSolution([t_old, t_new], y_old[None], box[0][None], self.form,
+                                     self.shape)
+                return step(t)
+
+            if self.events.check(t_old, t_new, y_new.reshape(self.shape), interp):
+                if callable(box[0]):
+                    box[0] = box[0]()
+                if self.cs is not None:
+                    self.cs[-1] = box[0]
+                self._last_full_end = t_new
+                self.ts[-1] = self.events.t_stop
+                self.ys[-1] = self.events.y_stop.reshape(-1)
+                self.status = 1
+                self.message = "A terminal event occurred."
+                return True
+        return False
+
+    def fail(self, reason, t, y):
+        """Mark the integration as failed (status -1) at time `t`, state `y`."""
+        self.status = -1
+        self.message = fail_message(reason, t, y, self.shape)
+
+    def result(self, method, nfev, nrejected, stats=None):
+        """Build the :class:`OdeResult` (fresh arrays, user shapes)."""
+        t = np.array(self.ts, dtype=float)
+        Y = np.array(self.ys, dtype=float)  # (m, N)
+        y = np.ascontiguousarray(np.moveaxis(Y.reshape((len(t),) + self.shape), 0, 1))
+        sol = None
+        if self.cs is not None and len(self.cs):
+            t_nodes = np.array(self.ts, dtype=float)
+            if self.status == 1:  # the last step's polynomial is normalised on its full length
+                t_nodes[-1] = self._last_full_end
+            sol = DenseSolution(t_nodes, np.array(self.ys[:-1]), np.array(self.cs), self.form,
+                                self.shape)
+        ev = self.events
+        return OdeResult(
+            t=t, y=y, nfev=nfev, nsteps=len(t) - 1, nrejected=nrejected, status=self.status,
+            message=self.message, method=method, sol=sol,
+            t_events=ev.t_events if ev is not None else [],
+            y_events=ev.y_events if ev is not None else [],
+            stats=dict(stats or {}),
+        )

@@ -1,0 +1,413 @@
+"""One entry point for every integration method: :func:`solve` (book, Part VI, ch. 26-27).
+
+:func:`solve` validates its arguments once, at this boundary, then dispatches through the
+method registry (:mod:`rigidmech.ode._registry`). The integrators themselves trust their input.
+
+How a method plugs in
+---------------------
+A method is a function ``fn(fun, t_span, y0, *, step, **options) -> OdeResult`` registered with
+``rigidmech.ode._registry.register(name, fn, kind=...)`` at import time of its module (the module
+is imported by ``rigidmech/ode/__init__.py``). What it receives depends on its kind:
+
+* ``"fixed"`` - ``fun(t, y)``; ``t_span = (t0, t1)`` floats; ``y0`` a fresh float array of shape
+  ``(n,)`` or ``(n, batch)``; ``step`` the *signed* uniform step, already adjusted by
+  :func:`solve` so that ``N = round((t1 - t0) / step)`` steps land exactly on ``t1``;
+  ``max_steps`` (``N <= max_steps`` is guaranteed). It returns all ``N + 1`` grid points.
+* ``"second_order"`` - the same, but ``fun`` is the acceleration ``a(t, q)`` of
+  ``q'' = a(t, q)`` and ``y0 = [q0, v0]`` (``n`` even); the result's ``y`` holds ``[q, v]``.
+* ``"adaptive"`` / ``"stiff"`` - ``step=None`` and the options ``rtol``, ``atol`` (float or
+  array broadcastable to ``y0``), ``first_step`` (None or float > 0), ``max_step``,
+  ``max_steps``, ``dense_output`` (bool: fill ``OdeResult.sol``) and ``events`` (None or an
+  :class:`~rigidmech.ode.events.EventTracker`, whose ``check`` the method calls after each
+  accepted step).
+
+For fixed-step methods, :func:`solve` itself provides ``t_eval``, ``dense_output`` and
+``events`` afterwards, by cubic Hermite interpolation on the grid (the derivative at the grid
+points costs one extra evaluation of ``fun`` per point); a terminal event truncates the result
+at the event, the grid beyond it having been computed for nothing. For adaptive methods
+``t_eval`` is evaluated on the method's own dense output.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import inspect
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from rigidmech._core.errors import ArgumentError, ArgumentTypeError
+
+from . import _registry
+from ._dense import DenseSolution
+from ._result import OdeResult
+from .events import EventTracker
+from .runge_kutta import fixed_step_method
+from .tableaux import ButcherTableau
+
+__all__ = ["solve", "methods"]
+
+
+def methods(kind: str | None = None) -> list[str]:
+    """Names of the available integration methods, optionally of one `kind`.
+
+    Parameters
+    ----------
+    kind : {"fixed", "adaptive", "second_order", "stiff"}, optional
+
+    Examples
+    --------
+    >>> {"euler", "rk4", "dopri5", "dop853"} <= set(methods())
+    True
+    >>> methods("adaptive")[:2]
+    ['dop853', 'dopri5']
+    """
+    if kind is not None and kind not in _registry.KINDS:
+        raise ArgumentError(f"`kind` must be one of {_registry.KINDS} or None; got {kind!r}.")
+    return _registry.names(kind)
+
+
+def _entry(method):
+    if isinstance(method, ButcherTableau):
+        return _registry.MethodEntry(method.name, fixed_step_method(method), "fixed")
+    return _registry.get(method)
+
+
+_COMMON = {"step", "rtol", "atol", "first_step", "max_step", "max_steps", "dense_output",
+           "events"}
+
+
+def _check_options(entry, options):
+    if not options:
+        return
+    params = inspect.signature(entry.function).parameters
+    if any(p.kind is p.VAR_KEYWORD for p in params.values()):
+        return
+    known = sorted(set(params) - _COMMON - {"fun", "t_span", "y0"})
+    for key in options:
+        if key not in params or key in _COMMON:
+            raise ArgumentError(
+                f"`{key}` is not an option of method {entry.name!r}; its own options are "
+                f"{known or 'none'}."
+            )
+
+
+def _float(name, value):
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"`{name}` must be a real number; got {value!r}.") from None
+    return v
+
+
+def _check_t_span(t_span):
+    try:
+        t0, t1 = t_span
+    except (TypeError, ValueError):
+        raise ArgumentError(
+            f"`t_span` must be a pair (t0, t1) of finite numbers; got {t_span!r}."
+        ) from None
+    t0, t1 = _float("t_span[0]", t0), _float("t_span[1]", t1)
+    if not (math.isfinite(t0) and math.isfinite(t1)):
+        raise ArgumentError(f"`t_span` must hold finite times; got ({t0}, {t1}).")
+    if t0 == t1:
+        raise ArgumentError(f"`t_span` must have t0 != t1; got ({t0}, {t1}).")
+    return t0, t1
+
+
+def _check_y0(y0):
+    try:
+        y = np.array(y0, dtype=float, copy=True)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"`y0` must be an array of real numbers of shape (n,) or (n, batch); got {y0!r}."
+        ) from None
+    if np.iscomplexobj(np.asarray(y0)):
+        raise ArgumentTypeError("`y0` must be real; got a complex array.")
+    if y.ndim not in (1, 2) or y.size == 0:
+        raise ArgumentError(
+            f"`y0` must have shape (n,) or (n, batch) with n >= 1; got shape {y.shape}."
+        )
+    if not np.all(np.isfinite(y)):
+        bad = np.argwhere(~np.isfinite(y))[0]
+        raise ArgumentError(
+            f"`y0` must be finite; got {y[tuple(bad)]} at index {tuple(int(i) for i in bad)}."
+        )
+    return y
+
+
+def _check_tolerances(rtol, atol, y0):
+    rtol = _float("rtol", rtol)
+    if not (math.isfinite(rtol) and rtol > 0):
+        raise ArgumentError(f"`rtol` must be a finite number > 0; got {rtol}.")
+    if rtol < 1e-15:
+        raise ArgumentError(
+            f"`rtol` must be >= 1e-15 (about 5 machine epsilons); got {rtol:g}."
+        )
+    a = np.asarray(atol, dtype=float)
+    if a.ndim == 0:
+        if not (math.isfinite(float(a)) and a >= 0):
+            raise ArgumentError(f"`atol` must be a finite number >= 0; got {float(a)}.")
+        return rtol, float(a)
+    try:
+        a = np.array(a.reshape(a.shape + (1,) * (y0.ndim - a.ndim)) if a.ndim < y0.ndim else a)
+        full = np.broadcast_to(a, y0.shape).astype(float).reshape(-1)
+    except ValueError:
+        raise ArgumentError(
+            f"`atol` must be a number or an array of shape (n,) = ({y0.shape[0]},); "
+            f"got shape {np.shape(atol)}."
+        ) from None
+    if not (np.all(np.isfinite(full)) and np.all(full >= 0)):
+        raise ArgumentError(f"`atol` must hold finite numbers >= 0; got {np.asarray(atol)}.")
+    return rtol, full
+
+
+def _check_t_eval(t_eval, t0, t1):
+    te = np.array(t_eval, dtype=float, copy=True)
+    if te.ndim != 1 or not np.all(np.isfinite(te)):
+        raise ArgumentError(
+            f"`t_eval` must be a 1-D array of finite times; got shape {te.shape}."
+        )
+    lo, hi = min(t0, t1), max(t0, t1)
+    if te.size and (te.min() < lo or te.max() > hi):
+        raise ArgumentError(
+            f"`t_eval` must lie within `t_span` [{lo}, {hi}]; got values in "
+            f"[{te.min()}, {te.max()}]."
+        )
+    d = np.diff(te) * (1.0 if t1 > t0 else -1.0)
+    if np.any(d <= 0):
+        raise ArgumentError(
+            "`t_eval` must be strictly monotonic in the direction of `t_span`; "
+            f"got a non-monotonic step at index {int(np.argmax(d <= 0))}."
+        )
+    return te
+
+
+def _hermite_dense(fun, kind, t, y, shape):
+    """Cubic Hermite dense solution on a fixed-step grid (``y`` in user layout (n, m, ...))."""
+    m = len(t)
+    Y = np.moveaxis(y, 1, 0).reshape(m, -1)
+    F = np.empty_like(Y)
+    n = shape[0]
+    for i in range(m):
+        yi = Y[i].reshape(shape)
+        if kind == "second_order":
+            half = n // 2
+            F[i].reshape(shape)[:half] = yi[half:]
+            F[i].reshape(shape)[half:] = fun(t[i], yi[:half])
+        else:
+            F[i].reshape(shape)[...] = fun(t[i], yi)
+    h = np.diff(t)[:, None]
+    dy = Y[1:] - Y[:-1]
+    hf0, hf1 = h * F[:-1], h * F[1:]
+    coeffs = np.stack([hf0, 3.0 * dy - 2.0 * hf0 - hf1, hf0 + hf1 - 2.0 * dy], axis=1)
+    return DenseSolution(t, Y[:-1], coeffs, "power", shape), m
+
+
+def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
+    """Provide events, dense output and t_eval for a fixed-step result."""
+    sol, extra = _hermite_dense(fun, kind, res.t, res.y, shape)
+    changes = {"stats": {**res.stats, "nfev_interpolation": extra}}
+    t, y, status, message = res.t, res.y, res.status, res.message
+    if events is not None:
+        Y = np.moveaxis(y, 1, 0)
+        for i in range(1, len(t)):
+            if not np.all(np.isfinite(Y[i])):
+                break
+            if events.check(t[i - 1], t[i], Y[i], sol):
+                t = np.append(t[:i], events.t_stop)
+                y = np.concatenate([y[:, :i], events.y_stop.reshape(shape)[:, None]], axis=1)
+                status, message = 1, "A terminal event occurred."
+                break
+        changes.update(t_events=events.t_events, y_events=events.y_events)
+    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None)
+    if t_eval is not None:
+        changes["t"], changes["y"] = _restrict(t_eval, t, sol)
+    return dataclasses.replace(res, **changes)
+
+
+def _restrict(t_eval, t, sol):
+    """``t_eval`` cut to the part of `t_span` actually integrated, and the states there."""
+    sign = 1.0 if t[-1] >= t[0] else -1.0
+    keep = t_eval[sign * t_eval <= sign * t[-1]]
+    return keep, sol(keep)
+
+
+def solve(
+    fun: Callable,
+    t_span,
+    y0,
+    method: str = "dop853",
+    *,
+    step: float | None = None,
+    rtol: float = 1e-6,
+    atol=1e-9,
+    t_eval=None,
+    dense_output: bool = False,
+    events=None,
+    first_step: float | None = None,
+    max_step: float = math.inf,
+    max_steps: int = 1_000_000,
+    args: tuple = (),
+    **options,
+) -> OdeResult:
+    """Integrate ``y' = f(t, y)`` (or ``q'' = a(t, q)``) from ``t_span[0]`` to ``t_span[1]``.
+
+    The numerical solution of the equations of motion derived in Parts IV-V (book, ch. 26-27):
+    one-step Runge-Kutta methods with fixed or adaptive step, Gragg-Bulirsch-Stoer
+    extrapolation, an implicit method for stiff systems.
+
+    Parameters
+    ----------
+    fun : callable
+        ``fun(t, y, *args) -> dy/dt`` with ``y`` (and the result) of the shape of `y0`. For a
+        method of kind ``"second_order"``, ``fun(t, q, *args)`` returns the acceleration and
+        `y0` is ``[q0, v0]``. `fun` may return the same buffer at every call: it is copied.
+    t_span : (float, float)
+        Initial and final times; ``t1 < t0`` integrates backwards.
+    y0 : array_like, shape (n,) or (n, batch)
+        Initial state. A 2-D `y0` integrates ``batch`` trajectories at once: ``fun`` receives
+        ``(n, batch)`` arrays; adaptive methods use one step for the whole batch, chosen from
+        the largest error norm over the batch.
+    method : str or ButcherTableau
+        One of :func:`methods` (default ``"dop853"``); ``methods("fixed")`` need `step`. A
+        :class:`~rigidmech.ode.tableaux.ButcherTableau` runs as a fixed-step method.
+    step : float, optional
+        Step size of a fixed-step method (required by those, refused by the others). It is
+        reduced slightly, if needed, so that a whole number of equal steps spans `t_span`.
+    rtol, atol : float, or array of shape (n,) for `atol`
+        Tolerances of the adaptive methods: local error kept below ``atol + rtol |y|`` in
+        Hairer's RMS norm. Ignored by fixed-step methods.
+    t_eval : array_like, optional
+        Times at which to return the solution (within `t_span`, monotonic), from the dense
+        output; by default the result holds the accepted steps.
+    dense_output : bool
+        Fill ``result.sol``, a callable continuous solution.
+    events : callable or list of callable, optional
+        Functions ``g(t, y)`` whose zeros are located (see :mod:`rigidmech.ode.events`);
+        not available with a batch.
+    first_step, max_step : float, optional
+        First step (default: Hairer's estimate) and largest step of the adaptive methods.
+    max_steps : int
+        Largest number of steps; beyond it an adaptive integration stops with status -1, and a
+        fixed step that would need more is refused.
+    args : tuple
+        Extra arguments passed to `fun`.
+    **options
+        Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
+        ``"radau"``), passed on to it; an option the method does not take is refused.
+
+    Returns
+    -------
+    OdeResult
+        ``t``, ``y`` (shape ``(n, len(t))`` or ``(n, len(t), batch)``), counters, ``status``
+        (0 end reached, 1 terminal event, -1 numerical failure, with the time and the state in
+        ``message``), ``sol``, ``t_events``, ``y_events``.
+
+    Raises
+    ------
+    ArgumentError, ArgumentTypeError
+        On any misuse, with the argument, what was expected and what was received.
+
+    Notes
+    -----
+    The book (ch. 26) presents Euler's method, Runge-Kutta methods and Romberg-like
+    extrapolation for the integration of the equations of motion; the adaptive methods here
+    follow Hairer, Norsett and Wanner, *Solving Ordinary Differential Equations* I and II.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rigidmech import ode
+    >>> osc = lambda t, y: np.array([y[1], -y[0]])          # harmonic oscillator
+    >>> r = ode.solve(osc, (0.0, np.pi), [1.0, 0.0], method="rk4", step=0.01)
+    >>> np.round(r.y[:, -1], 6)
+    array([-1., -0.])
+    >>> r = ode.solve(osc, (0.0, np.pi), [1.0, 0.0], rtol=1e-10)
+    >>> bool(abs(r.y[0, -1] + 1) < 1e-9), r.method
+    (True, 'dop853')
+    """
+    if not callable(fun):
+        raise ArgumentTypeError(f"`fun` must be callable f(t, y); got {type(fun).__name__}.")
+    entry = _entry(method)
+    _check_options(entry, options)
+    t0, t1 = _check_t_span(t_span)
+    y = _check_y0(y0)
+    shape = y.shape
+    if not isinstance(args, tuple):
+        raise ArgumentTypeError(f"`args` must be a tuple; got {type(args).__name__}.")
+    if args:
+        user_fun = fun
+
+        def fun(t, y, _f=user_fun, _a=args):
+            return _f(t, y, *_a)
+
+    if isinstance(max_steps, bool) or not isinstance(max_steps, int | np.integer) or (
+        max_steps < 1
+    ):
+        raise ArgumentError(f"`max_steps` must be an int >= 1; got {max_steps!r}.")
+    max_steps = int(max_steps)
+    te = None if t_eval is None else _check_t_eval(t_eval, t0, t1)
+    tracker = None
+    if events is not None:
+        if y.ndim == 2:
+            raise ArgumentError(
+                "`events` are not available with a batch `y0` of shape (n, batch); got shape "
+                f"{shape}: integrate the trajectories one by one to locate events."
+            )
+        tracker = EventTracker(events, t0, y.copy())
+    kind = entry.kind
+    if kind == "second_order" and shape[0] % 2:
+        raise ArgumentError(
+            f"`y0` must be [q0, v0] of even length n for method {entry.name!r}; got n = "
+            f"{shape[0]}."
+        )
+    if kind in ("fixed", "second_order"):
+        if step is None:
+            raise ArgumentError(
+                f"`step` is required by the fixed-step method {entry.name!r}; got None."
+            )
+        h = _float("step", step)
+        if not (math.isfinite(h) and h > 0):
+            raise ArgumentError(f"`step` must be a finite number > 0; got {h}.")
+        nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
+        if nsteps > max_steps:
+            raise ArgumentError(
+                f"`step` = {h:g} needs {nsteps} steps over `t_span`, more than `max_steps` = "
+                f"{max_steps}; use a larger step or raise max_steps."
+            )
+        res = entry.function(fun, (t0, t1), y, step=(t1 - t0) / nsteps, max_steps=max_steps,
+                             **options)
+        if tracker is not None or dense_output or te is not None:
+            res = _fixed_post(res, fun, kind, shape, tracker, dense_output, te)
+        return res
+
+    if step is not None:
+        raise ArgumentError(
+            f"`step` is only for fixed-step methods; method {entry.name!r} chooses its own "
+            f"steps (got step={step!r}): use `first_step` or `max_step` instead."
+        )
+    rtol, atol = _check_tolerances(rtol, atol, y)
+    max_step = _float("max_step", max_step)
+    if not max_step > 0:
+        raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")
+    if first_step is not None:
+        first_step = _float("first_step", first_step)
+        if not (math.isfinite(first_step) and 0 < first_step <= abs(t1 - t0)):
+            raise ArgumentError(
+                f"`first_step` must be in (0, |t1 - t0|] = (0, {abs(t1 - t0)}]; "
+                f"got {first_step}."
+            )
+    res = entry.function(
+        fun, (t0, t1), y, step=None, rtol=rtol, atol=atol, first_step=first_step,
+        max_step=max_step, max_steps=max_steps,
+        dense_output=bool(dense_output) or te is not None, events=tracker, **options,
+    )
+    if te is not None:
+        if res.sol is not None:
+            t_new, y_new = _restrict(te, res.t, res.sol)
+        else:  # failed before the first step
+            t_new, y_new = te[:0], np.empty((shape[0], 0) + shape[1:])
+        res = dataclasses.replace(res, t=t_new, y=y_new, sol=res.sol if dense_output else None)
+    return res
