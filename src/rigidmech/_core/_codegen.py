@@ -1,0 +1,428 @@
+"""Private code generation for :mod:`rigidmech._core.compile`.
+
+Two printers turn the same common-subexpression-eliminated (cse) expression list into Python
+source: :class:`_MathPrinter` for the single-state path (plain Python floats and the ``math``
+module, about ten times faster than numpy scalars) and :class:`_ArrayPrinter` for the vectorised
+path (numpy / scipy.special ufuncs over arrays of states).  The generated source is compiled
+once with :func:`compile` and kept for inspection and pickling.
+"""
+
+import builtins
+import functools
+import keyword
+import math
+import re
+
+import numpy as np
+import sympy
+from sympy.core.function import AppliedUndef
+from sympy.printing.codeprinter import PrintMethodNotImplementedError
+from sympy.printing.numpy import SciPyPrinter
+from sympy.printing.pycode import PythonCodePrinter
+from sympy.tensor.array import NDimArray
+
+from .errors import ArgumentError, ArgumentTypeError, CompilationError
+
+__all__: list[str] = []
+
+#: Names the generated code needs for itself: module names and builtins used by the printers.
+_RESERVED = frozenset(dir(builtins)) | {"math", "numpy", "scipy", "functools", "self"}
+
+#: sympy.cse settings.  ``optimizations="basic"`` was measured on the n-link pendulum's Kane
+#: equations (benchmarks/compile_rhs.py): at n = 5 it cut no operation and made cse slower, so it
+#: is off; ``order="none"`` keeps the (already canonical) order and saves sorting time.
+_CSE_OPTIMIZATIONS = None
+_CSE_ORDER = "none"
+
+
+class _MathPrinter(PythonCodePrinter):
+    """Python printer for the single-state path: floats and the ``math`` module.
+
+    Departures from :class:`~sympy.printing.pycode.PythonCodePrinter`:
+
+    * a non-integer power prints as ``math.pow(b, e)``, which raises ``ValueError`` for a
+      negative base instead of silently returning a complex number as ``b ** e`` does; the
+      caller then re-evaluates with numpy (giving ``nan`` like the vectorised path);
+    * a function the ``math`` module lacks (``re``, ``besselj``, ...) prints with the
+      scipy/numpy printer: it still works on floats, only slower.
+    """
+
+    def __init__(self):
+        super().__init__({"fully_qualified_modules": True, "strict": True})
+        self._fallback = _ArrayPrinter()
+
+    def _print_Pow(self, expr, rational=False):
+        exponent = expr.exp
+        if exponent.is_Integer or exponent in (sympy.S.Half, -sympy.S.Half):
+            return super()._print_Pow(expr, rational=rational)
+        if exponent.is_number:
+            exponent = sympy.Float(exponent, 17)
+        return f"math.pow({self._print(expr.base)}, {self._print(exponent)})"
+
+    def _print_not_supported(self, expr):
+        return self._fallback._print(expr)
+
+
+class _ArrayPrinter(SciPyPrinter):
+    """numpy / scipy.special printer for the vectorised path."""
+
+    def __init__(self):
+        super().__init__({"fully_qualified_modules": True, "strict": True})
+
+
+def print_expr(printer, expr):
+    """Print one expression, turning a printer failure into a :class:`CompilationError`."""
+    try:
+        return printer.doprint(expr)
+    except PrintMethodNotImplementedError as exc:
+        raise CompilationError(
+            f"`exprs` contain {sympy.sstr(expr)} which has no numeric translation "
+            f"({exc.args[0].splitlines()[0]}); replace that function or substitute it first."
+        ) from None
+
+
+_IDENTIFIER = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+
+
+def variable_names(symbols):
+    """Python identifiers for `symbols`: their own names when usable, else ``a0``, ``a1``, ...
+
+    A name is usable when it is a valid identifier that is neither a keyword, a builtin, a name
+    the generated code reserves for itself (anything starting with ``_``) nor already taken.
+    """
+    names = []
+    taken = set()
+    for k, symbol in enumerate(symbols):
+        name = symbol.name
+        if (
+            not _IDENTIFIER.match(name)
+            or keyword.iskeyword(name)
+            or name in _RESERVED
+            or name in taken
+        ):
+            name = f"a{k}"
+            while name in taken or name in {s.name for s in symbols}:
+                name = "a" + name
+        taken.add(name)
+        names.append(name)
+    return names
+
+
+def common_subexpressions(flat, use_cse):
+    """Return ``(replacements, reduced)`` for the flat expression list, named ``_x0, _x1, ...``."""
+    if not use_cse:
+        return [], list(flat)
+    replacements, reduced = sympy.cse(
+        list(flat),
+        symbols=sympy.numbered_symbols("_x"),
+        optimizations=_CSE_OPTIMIZATIONS,
+        order=_CSE_ORDER,
+    )
+    return replacements, reduced
+
+
+def count_operations(replacements, reduced):
+    """sympy.count_ops over the cse replacements and the reduced expressions."""
+    return int(sum(sympy.count_ops(rhs) for _, rhs in replacements)) + int(
+        sum(sympy.count_ops(e) for e in reduced)
+    )
+
+
+def body_lines(printer, replacements, indent="    "):
+    """Assignment lines ``_x3 = ...`` for the cse replacements."""
+    return [f"{indent}{lhs} = {print_expr(printer, rhs)}" for lhs, rhs in replacements]
+
+
+def nested_literal(items, shape):
+    """A nested list literal of the printed `items` (row-major) for an array of `shape`."""
+    if len(shape) == 0:
+        return items[0]
+    if len(shape) == 1:
+        return "[" + ", ".join(items) + "]"
+    step = len(items) // shape[0] if shape[0] else 0
+    return (
+        "["
+        + ", ".join(
+            nested_literal(items[i * step : (i + 1) * step], shape[1:]) for i in range(shape[0])
+        )
+        + "]"
+    )
+
+
+class _VectorisedMath:
+    """Stand-in for ``math`` in the vectorised namespace: ``math.f`` becomes a numpy.vectorize.
+
+    sympy's scipy printer still prints a few functions as ``math.<name>``; on arrays they need
+    element-wise evaluation.  Slow, but correct and rare.
+    """
+
+    def __getattr__(self, name):
+        attribute = getattr(math, name)
+        if callable(attribute):
+            return np.vectorize(attribute, otypes=[float])
+        return attribute
+
+
+def namespace(source, vectorised):
+    """Globals for executing generated `source`: only the modules it mentions."""
+    ns = {"numpy": np, "functools": functools, "math": _VectorisedMath() if vectorised else math}
+    if "scipy." in source:
+        import scipy.special  # heavy: imported only when an expression needs it
+
+        ns["scipy"] = scipy
+    return ns
+
+
+def exec_function(source, function_name, filename, vectorised):
+    """Compile `source` once and return the function it defines."""
+    ns = namespace(source, vectorised)
+    exec(compile(source, filename, "exec"), ns)  # noqa: S102 - our own generated code
+    return ns[function_name]
+
+
+# Compile-time handling of arguments and expressions, shared by compile.py's entry points.
+
+
+def _normalise_args(args):
+    """Return ``(groups, sizes)``: a tuple of symbol tuples and 0 (scalar) or k (vector) each."""
+    if isinstance(args, (sympy.Basic, str)) or not hasattr(args, "__iter__"):
+        raise ArgumentTypeError(
+            f"`args` must be a sequence of Symbols or of sequences of Symbols; got "
+            f"{type(args).__name__} {args!r}. Wrap a single symbol in a list: [x]."
+        )
+    groups, sizes = [], []
+    for k, item in enumerate(args):
+        if isinstance(item, sympy.Symbol):
+            groups.append((item,))
+            sizes.append(0)
+            continue
+        if isinstance(item, (str, sympy.Basic)) and not isinstance(item, sympy.MatrixBase):
+            raise ArgumentTypeError(
+                f"`args[{k}]` must be a sympy Symbol or a sequence of Symbols; got "
+                f"{type(item).__name__} {item!r}. Substitute a Symbol for it first."
+            )
+        try:
+            members = tuple(item)
+        except TypeError:
+            raise ArgumentTypeError(
+                f"`args[{k}]` must be a sympy Symbol or a sequence of Symbols; got "
+                f"{type(item).__name__} {item!r}."
+            ) from None
+        if not members:
+            raise ArgumentError(
+                f"`args[{k}]` is an empty sequence; a vector argument needs >= 1 Symbol."
+            )
+        for member in members:
+            if not isinstance(member, sympy.Symbol):
+                raise ArgumentTypeError(
+                    f"`args[{k}]` must contain only sympy Symbols; got {type(member).__name__} "
+                    f"{member!r}. Substitute a Symbol for it first."
+                )
+        groups.append(members)
+        sizes.append(len(members))
+    flat = [s for group in groups for s in group]
+    seen = set()
+    for s in flat:
+        if s in seen:
+            raise ArgumentError(f"`args` list the symbol {s} twice; each symbol must appear once.")
+        seen.add(s)
+    return tuple(groups), tuple(sizes)
+
+
+def _flatten_exprs(exprs, flat):
+    """Append the scalar expressions of `exprs` to `flat`; return the template of its structure.
+
+    Templates: ``("scalar", i)``, ``("array", shape, start)``, ``("tuple", children)``,
+    ``("list", children)``.
+    """
+    if isinstance(exprs, (sympy.MatrixBase, NDimArray)):
+        shape = tuple(int(n) for n in exprs.shape)
+        start = len(flat)
+        items = list(exprs) if isinstance(exprs, sympy.MatrixBase) else list(exprs._array)
+        flat.extend(sympy.sympify(e) for e in items)
+        return ("array", shape, start)
+    if isinstance(exprs, np.ndarray):
+        start = len(flat)
+        flat.extend(sympy.sympify(e) for e in exprs.ravel())
+        return ("array", exprs.shape, start)
+    if isinstance(exprs, (tuple, list)):
+        kind = "tuple" if isinstance(exprs, tuple) else "list"
+        return (kind, tuple(_flatten_exprs(e, flat) for e in exprs))
+    if isinstance(exprs, (sympy.Basic, int, float)):
+        flat.append(sympy.sympify(exprs))
+        return ("scalar", len(flat) - 1)
+    raise ArgumentTypeError(
+        "`exprs` must be a sympy expression, a sympy Matrix or Array, or a (nested) tuple or "
+        f"list of those; got {type(exprs).__name__}."
+    )
+
+
+def _check_exprs(flat, symbols):
+    """Raise CompilationError unless `flat` are real expressions of `symbols` only."""
+    for e in flat:
+        if isinstance(e, sympy.logic.boolalg.Boolean) and not isinstance(e, sympy.Expr):
+            raise CompilationError(
+                f"`exprs` must be numeric; got the condition {e}. Use Piecewise((1, cond), "
+                "(0, True)) for an indicator."
+            )
+        if not isinstance(e, sympy.Expr):
+            raise CompilationError(
+                f"`exprs` must be numeric expressions; got {type(e).__name__} {e}."
+            )
+    everything = sympy.Tuple(*flat)
+    functions = everything.atoms(AppliedUndef, sympy.Derivative)
+    if functions:
+        listed = ", ".join(sorted(map(str, functions)))
+        raise CompilationError(
+            f"`exprs` contain {listed} which are not plain Symbols; substitute Symbols for the "
+            "functions of time and their derivatives first (e.g. with "
+            "sympy.physics.mechanics.msubs or xreplace)."
+        )
+    if everything.has(sympy.I):
+        raise CompilationError(
+            "`exprs` contain the imaginary unit I; only real expressions compile."
+        )
+    missing = everything.free_symbols - set(symbols)
+    if missing:
+        names = sorted(s.name for s in missing)
+        verb = "are" if len(names) > 1 else "is"
+        raise CompilationError(
+            f"`exprs` depend on {', '.join(names)} which {verb} not in `args`; pass them as "
+            "arguments or substitute values first."
+        )
+
+
+def _check_name(name):
+    if not isinstance(name, str) or not name.isidentifier() or name.startswith("_"):
+        raise ArgumentError(
+            f"`name` must be a Python identifier not starting with '_'; got {name!r}."
+        )
+
+
+class _Prepared:
+    """The compile-time pieces shared by both generated paths."""
+
+    __slots__ = ("labels", "names", "n_ops", "reduced", "replacements", "sizes", "symbols")
+
+    def __init__(self, flat, args, use_cse):
+        groups, sizes = _normalise_args(args)
+        symbols = [s for group in groups for s in group]
+        _check_exprs(flat, symbols)
+        names = variable_names(symbols)
+        renaming = {
+            s: sympy.Symbol(n)
+            for s, n in zip(symbols, names, strict=True)
+            if n != s.name or isinstance(s, sympy.Dummy) or s.assumptions0
+        }
+        if renaming:
+            flat = [e.xreplace(renaming) for e in flat]
+        self.replacements, self.reduced = common_subexpressions(flat, use_cse)
+        self.n_ops = count_operations(self.replacements, self.reduced)
+        self.sizes = sizes
+        self.symbols = tuple(groups)
+        self.names = names
+        self.labels = tuple(
+            g[0].name if size == 0 else "[" + ", ".join(s.name for s in g) + "]"
+            for g, size in zip(groups, sizes, strict=True)
+        )
+
+    def signatures(self):
+        """Parameter lists of the single-state and vectorised functions, and the unpack lines."""
+        single, batched, unpack = [], [], []
+        position = 0
+        for k, size in enumerate(self.sizes):
+            if size == 0:
+                single.append(self.names[position])
+                batched.append(self.names[position])
+                position += 1
+            else:
+                members = self.names[position : position + size]
+                position += size
+                single.extend(members)
+                batched.append(f"_v{k}")
+                unpack.append(f"    {', '.join(members)}{',' if size == 1 else ''} = _v{k}")
+        return single, batched + ["_batch"], unpack
+
+
+def _describe(template):
+    kind = template[0]
+    if kind == "scalar":
+        return "()"
+    if kind == "array":
+        return str(template[1])
+    inner = ", ".join(_describe(c) for c in template[1])
+    if kind == "tuple":
+        return f"({inner}{',' if len(template[1]) == 1 else ''})"
+    return f"[{inner}]"
+
+
+def _output_code(template, reduced, printer_math, printer_array):
+    """Return ``(single_return, batched_lines, batched_return)`` for the output `template`."""
+    counter = [0]
+    batched_lines = []
+
+    def single(t):
+        kind = t[0]
+        if kind == "scalar":
+            return f"float({print_expr(printer_math, reduced[t[1]])})"
+        if kind == "array":
+            shape, start = t[1], t[2]
+            size = int(np.prod(shape, dtype=int))
+            if size == 0:
+                return f"numpy.zeros({shape})"
+            items = [print_expr(printer_math, e) for e in reduced[start : start + size]]
+            return f"numpy.array({nested_literal(items, shape)}, dtype=float)"
+        parts = [single(c) for c in t[1]]
+        if kind == "tuple":
+            return "(" + ", ".join(parts) + ("," if len(parts) == 1 else "") + ")"
+        return "[" + ", ".join(parts) + "]"
+
+    def batched(t):
+        kind = t[0]
+        if kind in ("scalar", "array"):
+            out = f"_o{counter[0]}"
+            counter[0] += 1
+            if kind == "scalar":
+                batched_lines.append(f"    {out} = numpy.empty(_batch)")
+                printed = print_expr(printer_array, reduced[t[1]])
+                batched_lines.append(f"    {out}[...] = {printed}")
+                return out
+            shape, start = t[1], t[2]
+            batched_lines.append(f"    {out} = numpy.empty({shape} + _batch)")
+            for flat_index, index in enumerate(np.ndindex(*shape)):
+                printed = print_expr(printer_array, reduced[start + flat_index])
+                batched_lines.append(f"    {out}[{', '.join(map(str, index))}] = {printed}")
+            return out
+        parts = [batched(c) for c in t[1]]
+        if kind == "tuple":
+            return "(" + ", ".join(parts) + ("," if len(parts) == 1 else "") + ")"
+        return "[" + ", ".join(parts) + "]"
+
+    return single(template), batched_lines, batched(template)
+
+
+def _cholesky_lines(n):
+    """Unrolled Cholesky solve of the symmetric system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``.
+
+    A pivot that is not > 0 (not positive definite, or nan) raises ArithmeticError, caught by
+    the generated code, which then hands A and b to numpy.linalg.solve.
+    """
+    lines = ["    try:"]
+    for j in range(n):
+        pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
+        lines.append(f"        _p = {pivot}")
+        lines.append("        if not _p > 0.0: raise ArithmeticError")
+        lines.append(f"        _r{j} = 1.0/math.sqrt(_p)")
+        for i in range(j + 1, n):
+            rest = "".join(f" - _l{i}_{k}*_l{j}_{k}" for k in range(j))
+            lines.append(f"        _l{i}_{j} = (_a{j}_{i}{rest})*_r{j}")
+    for i in range(n):
+        rest = "".join(f" - _l{i}_{k}*_y{k}" for k in range(i))
+        lines.append(f"        _y{i} = (_b{i}{rest})*_r{i}")
+    for i in reversed(range(n)):
+        rest = "".join(f" - _l{k}_{i}*_z{k}" for k in range(i + 1, n))
+        lines.append(f"        _z{i} = (_y{i}{rest})*_r{i}")
+    lines.append("        return numpy.array([" + ", ".join(f"_z{i}" for i in range(n)) + "])")
+    lines.append("    except ArithmeticError:")
+    lines.append("        pass")
+    return lines

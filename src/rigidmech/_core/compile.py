@@ -1,0 +1,679 @@
+"""Symbolic → numeric compilation: sympy expressions become fast, vectorised Python functions.
+
+Everything symbolic in rigidmech (equations of motion M(q) q'' = f(q, q', t), connection
+actions, energies, positions of points) goes through this module once.  It knows no mechanics:
+it takes sympy expressions and the symbols to use as arguments.
+
+Each compiled function carries two code paths generated from one common-subexpression
+elimination (``sympy.cse``) of its expressions:
+
+* a **single-state** path, used when every scalar argument is a number and every vector
+  argument is 1-D of its declared length: the arguments are unpacked into Python floats and
+  evaluated with the ``math`` module (Python float arithmetic costs about a tenth of numpy
+  scalar arithmetic);
+* a **vectorised** path for batches: a vector argument of shape ``(k,) + batch`` and scalar
+  arguments broadcastable to ``batch`` give outputs of shape ``out_shape + batch`` (trailing
+  batch axes, the convention of :mod:`rigidmech.ode`).
+
+Both paths return fresh arrays on every call: never a buffer that a later call overwrites (the
+pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integrations).
+"""
+
+import numpy as np
+import sympy
+
+from . import _codegen
+from ._codegen import (
+    _check_name,
+    _cholesky_lines,
+    _describe,
+    _flatten_exprs,
+    _output_code,
+    _Prepared,
+)
+from .errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    SingularMassMatrixError,
+)
+
+__all__ = [
+    "CompiledFunction",
+    "CompiledLinearSolve",
+    "compile_expressions",
+    "compile_linear_solve",
+]
+
+#: Largest n for which a symmetric system is solved, on the single-state path, by an unrolled
+#: Cholesky factorisation generated in pure Python instead of numpy.linalg.solve.  Measured per
+#: call on a random SPD matrix, numpy 2.4 / scipy 1.17 / Python 3.11 on the project's 2-core
+#: machine (microseconds; "from lists" includes building the arrays from Python floats, which
+#: the generated code must do anyway):
+#:
+#: ====  ====================  ===========================  ==================  ================
+#:  n    np.linalg.solve        scipy.linalg.solve            pure-Python loop     unrolled
+#:       (from lists)           (pos, check_finite=False)     Cholesky             Cholesky
+#: ====  ====================  ===========================  ==================  ================
+#:  2     6.9                   29.3                          5.8                  1.4
+#:  5     8.4                   31.8                          18.2                 6.4
+#:  8    10.3                   34.6                          39.9                 18.2
+#: 12    16.1                   38.8                          81.0                 47.8
+#: ====  ====================  ===========================  ==================  ================
+#:
+#: scipy.linalg.solve's Python-side checks make it the slowest at these sizes; the crossover
+#: between the unrolled Cholesky and numpy is near n = 6.
+UNROLLED_CHOLESKY_MAX_N = 6
+
+_FALLBACK_ERRORS = (ArithmeticError, ValueError)
+
+
+# --------------------------------------------------------------------------------------------
+# Arguments at call time
+# --------------------------------------------------------------------------------------------
+
+_NUMBER_TYPES = (float, int, np.number)
+
+
+def _single_state_values(args, sizes):
+    """Flatten `args` into Python numbers if they describe one state; else return None."""
+    flat = []
+    for a, size in zip(args, sizes, strict=True):
+        if size == 0:
+            if type(a) is float:
+                flat.append(a)
+            elif isinstance(a, _NUMBER_TYPES) and not isinstance(a, complex):
+                flat.append(float(a))
+            elif isinstance(a, np.ndarray) and a.ndim == 0 and a.dtype.kind in "fiub":
+                flat.append(float(a))
+            else:
+                return None
+        elif type(a) is np.ndarray:
+            if a.shape != (size,) or a.dtype.kind not in "fiub":
+                return None
+            flat.extend(a.tolist())
+        elif isinstance(a, (list, tuple)) and len(a) == size:
+            for v in a:
+                if not isinstance(v, _NUMBER_TYPES) or isinstance(v, (complex, np.complexfloating)):
+                    return None
+            flat.extend(a)
+        else:
+            return None
+    return flat
+
+
+def _batch_arrays(args, sizes, labels, function_name):
+    """Convert `args` to float arrays and return them with their broadcast batch shape."""
+    if len(args) != len(sizes):
+        raise ArgumentTypeError(
+            f"`{function_name}` takes {len(sizes)} arguments ({', '.join(labels)}); "
+            f"got {len(args)}."
+        )
+    arrays, batch_shapes = [], []
+    for a, size, label in zip(args, sizes, labels, strict=True):
+        try:
+            array = np.asarray(a, dtype=float)
+        except (TypeError, ValueError):
+            raise ArgumentTypeError(
+                f"argument `{label}` must be a real number or an array of real numbers; got "
+                f"{type(a).__name__}."
+            ) from None
+        if size:
+            if array.ndim == 0 or array.shape[0] != size:
+                raise ArgumentError(
+                    f"argument `{label}` must have shape ({size},) or ({size}, *batch); got "
+                    f"shape {array.shape}."
+                )
+            batch_shapes.append(array.shape[1:])
+        else:
+            batch_shapes.append(array.shape)
+        arrays.append(array)
+    try:
+        batch = np.broadcast_shapes(*batch_shapes)
+    except ValueError:
+        described = ", ".join(
+            f"{label}: {shape}" for label, shape in zip(labels, batch_shapes, strict=True)
+        )
+        raise ArgumentError(
+            f"the batch shapes of the arguments do not broadcast together ({described}); the "
+            "batch axes trail the vector axis: a vector argument has shape (k, *batch)."
+        ) from None
+    return arrays, batch
+
+
+def _values_at(arrays, sizes, labels, batch, index):
+    """``{label: value}`` of the arguments at flat batch `index` (for error messages)."""
+    position = np.unravel_index(index, batch) if batch else ()
+    values = {}
+    for array, size, label in zip(arrays, sizes, labels, strict=True):
+        full = np.broadcast_to(array, ((size,) if size else ()) + batch)
+        value = full[(slice(None),) + position] if size else full[position]
+        values[label] = value.tolist() if size else float(value)
+    return values
+
+
+def _to_python_scalars(out):
+    """Turn the 0-d arrays of a batch-less vectorised result into floats."""
+    if isinstance(out, np.ndarray) and out.ndim == 0:
+        return float(out)
+    if isinstance(out, tuple):
+        return tuple(_to_python_scalars(o) for o in out)
+    if isinstance(out, list):
+        return [_to_python_scalars(o) for o in out]
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# Common machinery of compiled objects
+# --------------------------------------------------------------------------------------------
+
+
+class _Compiled:
+    """Base of the compiled callables: immutable, picklable through their generated source."""
+
+    __slots__ = (
+        "_batched",
+        "_labels",
+        "_name",
+        "_single",
+        "_sizes",
+        "args",
+        "batched_source",
+        "n_ops",
+        "single_source",
+    )
+
+    def _init(self, **state):
+        for key, value in state.items():
+            object.__setattr__(self, key, value)
+        object.__setattr__(
+            self,
+            "_single",
+            _codegen.exec_function(
+                self.single_source, f"{self._name}_single", f"<rigidmech {self._name}>", False
+            ),
+        )
+        object.__setattr__(
+            self,
+            "_batched",
+            _codegen.exec_function(
+                self.batched_source, f"{self._name}_batched", f"<rigidmech {self._name}>", True
+            ),
+        )
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"{type(self).__name__} is immutable; cannot set `{key}`.")
+
+    def __delattr__(self, key):
+        raise AttributeError(f"{type(self).__name__} is immutable; cannot delete `{key}`.")
+
+    def _state(self):
+        names = [s for s in _Compiled.__slots__ if s not in ("_single", "_batched")]
+        names += [s for s in type(self).__slots__]
+        return {key: getattr(self, key) for key in names}
+
+    def __reduce__(self):
+        return (_restore, (type(self), self._state()))
+
+    @property
+    def name(self):
+        """The name given at compile time (used in the generated source)."""
+        return self._name
+
+    @property
+    def source(self):
+        """The generated Python source of both code paths (single-state, then vectorised)."""
+        return self.single_source + "\n\n" + self.batched_source
+
+    def _args_repr(self):
+        return "(" + ", ".join(self._labels) + ")"
+
+
+def _restore(cls, state):
+    """Rebuild a compiled object from its state (pickle support): re-executes the sources."""
+    obj = cls.__new__(cls)
+    obj._init(**state)
+    return obj
+
+
+# --------------------------------------------------------------------------------------------
+# compile_expressions
+# --------------------------------------------------------------------------------------------
+
+
+class CompiledFunction(_Compiled):
+    """A numeric function compiled from sympy expressions by :func:`compile_expressions`.
+
+    Call it with one value per entry of ``args`` given at compile time: a number (or array of
+    numbers, for a batch) for a scalar argument, a 1-D array of the declared length k (or an
+    array of shape ``(k, *batch)``) for a vector argument.  The output has the structure of the
+    compiled ``exprs``: a float for a scalar expression (an array of shape ``batch`` for a
+    batch), an array of shape ``matrix.shape`` (``matrix.shape + batch``) for a matrix, tuples
+    and lists as given.  Every call returns fresh arrays.
+
+    Attributes
+    ----------
+    args : tuple of tuple of sympy.Symbol
+        The argument symbols, one tuple per argument (of length 1 for a scalar argument).
+    n_ops : int
+        Operation count of the generated code: ``sympy.count_ops`` over the cse replacements
+        and the reduced expressions.
+    source : str
+        The generated Python source, for inspection.
+
+    Notes
+    -----
+    Instances are immutable and picklable: pickling stores the generated source, unpickling
+    re-executes it (no sympy work), so compiled functions can be sent to worker processes.
+
+    Arithmetic failures on the single-state path (``math.sqrt(-1)``, ``1/0``, overflow) make
+    that call fall back to the vectorised path, so both paths give the same IEEE result
+    (``nan`` or ``inf``) without a warning; non-finite results are for the caller (the ODE
+    solvers report them) to handle.
+
+    Examples
+    --------
+    >>> import sympy
+    >>> x, y = sympy.symbols("x y")
+    >>> f = compile_expressions(sympy.Matrix([x * y, x + y]), [[x, y]], name="f")
+    >>> f
+    CompiledFunction(f([x, y]) -> (2, 1), n_ops=2)
+    >>> f([2.0, 3.0]).ravel()
+    array([6., 5.])
+    """
+
+    __slots__ = ("template",)
+
+    def __call__(self, *args):
+        if len(args) == len(self._sizes):
+            flat = _single_state_values(args, self._sizes)
+            if flat is not None:
+                try:
+                    return self._single(*flat)
+                except _FALLBACK_ERRORS:
+                    pass
+        arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
+        with np.errstate(all="ignore"):
+            out = self._batched(*arrays, batch)
+        return _to_python_scalars(out) if batch == () else out
+
+    def __repr__(self):
+        return (
+            f"CompiledFunction({self._name}{self._args_repr()} -> {_describe(self.template)}, "
+            f"n_ops={self.n_ops})"
+        )
+
+
+def compile_expressions(exprs, args, *, name="f", cse=True):
+    """Compile sympy expressions into a fast numeric function of `args`.
+
+    Parameters
+    ----------
+    exprs : sympy.Expr, sympy.Matrix, sympy.Array, or (nested) tuple / list of those
+        What to compute.  The output of the compiled function has the same structure.
+    args : sequence
+        The arguments of the compiled function, in order.  Each item is a sympy Symbol (a
+        scalar argument) or a sequence of Symbols (a vector argument, passed at call time as
+        a 1-D array of that length, possibly with trailing batch axes).  Every free symbol of
+        `exprs` must appear here.
+    name : str, optional
+        Name of the function, used in the generated source and the repr.
+    cse : bool, optional
+        Whether to share common subexpressions with ``sympy.cse`` (default True).  Turn it off
+        only for tiny expressions where cse costs more time than it saves.
+
+    Returns
+    -------
+    CompiledFunction
+        Callable as ``f(*values)``; see :class:`CompiledFunction` for the shapes.
+
+    Raises
+    ------
+    CompilationError
+        If `exprs` depend on symbols that are not in `args`, contain undefined functions of
+        time or their derivatives, conditions, the imaginary unit, or functions without a
+        numeric translation.
+    ArgumentTypeError, ArgumentError
+        If `args` is not a sequence of Symbols / sequences of Symbols, repeats a symbol, or
+        `exprs` has an unsupported type.
+
+    Notes
+    -----
+    The expressions go through ``sympy.cse`` once; the replacement list and the reduced
+    expressions are printed twice, with the ``math`` module for the single-state path and with
+    numpy / scipy.special for the vectorised path, and compiled with :func:`compile`.  For a
+    batch, a vector argument has shape ``(k, *batch)`` and a scalar argument any shape that
+    broadcasts with the others; each output gets shape ``out_shape + batch``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import sympy
+    >>> q1, q2, g, L = sympy.symbols("q1 q2 g L")
+    >>> energy = -g * L * (sympy.cos(q1) + sympy.cos(q2))
+    >>> position = sympy.Matrix([L * sympy.sin(q1), -L * sympy.cos(q1)])
+    >>> f = compile_expressions((energy, position), [[q1, q2], g, L], name="scene")
+    >>> e, p = f([0.0, 0.0], 9.81, 2.0)
+    >>> e, p.shape
+    (-39.24, (2, 1))
+
+    A batch of 5 states along a trailing axis, with one value of ``L`` per state:
+
+    >>> e, p = f(np.zeros((2, 5)), 9.81, np.linspace(1.0, 2.0, 5))
+    >>> e.shape, p.shape
+    ((5,), (2, 1, 5))
+
+    Symbols missing from `args` are named:
+
+    >>> compile_expressions(g * L, [g])
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.CompilationError: `exprs` depend on L which is not in `args`; ...
+    """
+    _check_name(name)
+    flat = []
+    template = _flatten_exprs(exprs, flat)
+    prepared = _Prepared(flat, args, cse)
+    printer_math, printer_array = _codegen._MathPrinter(), _codegen._ArrayPrinter()
+    single_params, batched_params, unpack = prepared.signatures()
+    single_return, batched_out_lines, batched_return = _output_code(
+        template, prepared.reduced, printer_math, printer_array
+    )
+    single_source = "\n".join(
+        [f"def {name}_single({', '.join(single_params)}):"]
+        + _codegen.body_lines(printer_math, prepared.replacements)
+        + [f"    return {single_return}"]
+    )
+    batched_source = "\n".join(
+        [f"def {name}_batched({', '.join(batched_params)}):"]
+        + unpack
+        + _codegen.body_lines(printer_array, prepared.replacements)
+        + batched_out_lines
+        + [f"    return {batched_return}"]
+    )
+    obj = CompiledFunction.__new__(CompiledFunction)
+    obj._init(
+        _name=name,
+        _labels=prepared.labels,
+        _sizes=prepared.sizes,
+        args=prepared.symbols,
+        n_ops=prepared.n_ops,
+        single_source=single_source,
+        batched_source=batched_source,
+        template=template,
+    )
+    return obj
+
+
+# --------------------------------------------------------------------------------------------
+# compile_linear_solve
+# --------------------------------------------------------------------------------------------
+
+
+def _singular_error(reason, where):
+    error = SingularMassMatrixError(
+        f"the matrix `A` of the linear system {reason} at {where}; the mass matrix cannot be "
+        "inverted there (check the state and the parameters)."
+    )
+    return error
+
+
+def _where(values, index=None):
+    described = ", ".join(f"{label}={value}" for label, value in values.items())
+    return described if index is None else f"batch index {index}, where {described}"
+
+
+class CompiledLinearSolve(_Compiled):
+    """The solution x of A(args) x = b(args), compiled by :func:`compile_linear_solve`.
+
+    Called like a :class:`CompiledFunction`; returns x as a fresh array of shape ``(n,)`` for
+    one state, ``(n, *batch)`` for a batch.
+
+    Attributes
+    ----------
+    args : tuple of tuple of sympy.Symbol
+        The argument symbols, one tuple per argument.
+    n : int
+        Size of the system.
+    symmetric : bool
+        Whether only the upper triangle of A was compiled (A symmetric positive definite, as a
+        mass matrix is).
+    n_ops : int
+        Operation count of the generated evaluation of A and b (cse shared between them).
+    source : str
+        The generated Python source.
+
+    Notes
+    -----
+    Immutable and picklable like :class:`CompiledFunction`.
+
+    Examples
+    --------
+    >>> import sympy
+    >>> m, k = sympy.symbols("m k", positive=True)
+    >>> solve = compile_linear_solve(sympy.diag(m, 2 * m), sympy.Matrix([k, k]), [m, k],
+    ...                              symmetric=True)
+    >>> solve
+    CompiledLinearSolve(solve(m, k) -> (2,), symmetric=True, n_ops=...)
+    >>> solve(2.0, 4.0)
+    array([2., 1.])
+    """
+
+    __slots__ = ("n", "symmetric", "unrolled")
+
+    def __call__(self, *args):
+        if len(args) == len(self._sizes):
+            flat = _single_state_values(args, self._sizes)
+            if flat is not None:
+                try:
+                    result = self._single(*flat)
+                except _FALLBACK_ERRORS:
+                    pass
+                else:
+                    if type(result) is not tuple:
+                        return result
+                    return self._solve_one(result[0], result[1], args)
+        arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
+        with np.errstate(all="ignore"):
+            A, b = self._batched(*arrays, batch)
+        return self._solve_batch(A, b, arrays, batch)
+
+    def _solve_one(self, A, b, args):
+        try:
+            x = np.linalg.solve(A, b)
+        except np.linalg.LinAlgError:
+            x = None
+        if x is None or not np.isfinite(x).all():
+            arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
+            values = _values_at(arrays, self._sizes, self._labels, batch, 0)
+            if not np.isfinite(A).all():
+                raise _singular_error("is not finite", _where(values))
+            if x is None or np.isfinite(b).all():
+                raise _singular_error("is singular", _where(values))
+        return x
+
+    def _solve_batch(self, A, b, arrays, batch):
+        n = self.n
+        count = int(np.prod(batch, dtype=int))
+        stack_A = A.reshape(n, n, count).transpose(2, 0, 1)
+        stack_b = b.reshape(n, count).T[:, :, None]
+        with np.errstate(all="ignore"):
+            try:
+                x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
+                failed = None
+            except np.linalg.LinAlgError:
+                x, failed = None, True
+        if failed or not np.isfinite(x).all():
+            finite_A = np.isfinite(stack_A).all(axis=(1, 2))
+            finite_b = np.isfinite(stack_b).all(axis=(1, 2))
+            for i in range(count):
+                if not finite_A[i]:
+                    reason = "is not finite"
+                elif x is None or (finite_b[i] and not np.isfinite(x[i]).all()):
+                    if x is None and _solvable(stack_A[i]):
+                        continue
+                    reason = "is singular"
+                else:
+                    continue
+                values = _values_at(arrays, self._sizes, self._labels, batch, i)
+                index = i if batch == () or len(batch) > 1 else i
+                raise _singular_error(
+                    reason, _where(values) if batch == () else _where(values, index)
+                )
+        return x.T.reshape((n,) + batch)
+
+    def __repr__(self):
+        return (
+            f"CompiledLinearSolve({self._name}{self._args_repr()} -> ({self.n},), "
+            f"symmetric={self.symmetric}, n_ops={self.n_ops})"
+        )
+
+
+def _solvable(matrix):
+    try:
+        np.linalg.solve(matrix, np.zeros(matrix.shape[0]))
+    except np.linalg.LinAlgError:
+        return False
+    return True
+
+
+def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True):
+    """Compile the solution x of the linear system A x = b, with A and b functions of `args`.
+
+    Made for equations of motion M(q) q'' = f(q, q', t): A and b are evaluated in one
+    generated function (common subexpressions shared between them), then solved numerically.
+
+    Parameters
+    ----------
+    A : sympy.Matrix, shape (n, n)
+        The matrix of the system (the mass matrix).
+    b : sympy.Matrix of shape (n, 1) or (1, n), or sequence of n expressions
+        The right-hand side (the forcing).
+    args : sequence
+        As for :func:`compile_expressions`: Symbols (scalar arguments) and sequences of
+        Symbols (vector arguments).
+    symmetric : bool, optional
+        Declare A symmetric positive definite (a mass matrix is): only its upper triangle is
+        compiled and read, and small systems (n <= ``UNROLLED_CHOLESKY_MAX_N``) are solved on
+        the single-state path by an unrolled Cholesky factorisation.  Not checked.
+    name : str, optional
+        Name used in the generated source and the repr.
+    cse : bool, optional
+        Whether to share common subexpressions with ``sympy.cse`` (default True).
+
+    Returns
+    -------
+    CompiledLinearSolve
+        Callable as ``solve(*values)``, returning x of shape ``(n,)`` or ``(n, *batch)``.
+
+    Raises
+    ------
+    CompilationError, ArgumentError, ArgumentTypeError
+        As for :func:`compile_expressions`, and if A is not square or b does not match it.
+
+    Notes
+    -----
+    At call time a non-finite A, or a singular one (numpy.linalg.solve fails, or the solution
+    is not finite while b is), raises :class:`~rigidmech._core.errors.SingularMassMatrixError`
+    naming the argument values (and the first offending batch index, for a batch).  A batch is
+    solved by one call of numpy.linalg.solve on the stack of systems (batch axes moved to the
+    front and back).  The choice between numpy and the unrolled Cholesky on the single-state
+    path is measured; see ``UNROLLED_CHOLESKY_MAX_N``.
+
+    Examples
+    --------
+    A pendulum (mass m, length L) hinged on a cart of mass M, coordinates x and theta:
+
+    >>> import sympy
+    >>> x, th, w, g, L, m, M = sympy.symbols("x theta omega g L m M")
+    >>> mass = sympy.Matrix([[M + m, m * L * sympy.cos(th)],
+    ...                      [m * L * sympy.cos(th), m * L**2]])
+    >>> forcing = sympy.Matrix([m * L * w**2 * sympy.sin(th), -m * g * L * sympy.sin(th)])
+    >>> accel = compile_linear_solve(mass, forcing, [[x, th], w, g, L, m, M], symmetric=True)
+    >>> accel([0.0, 0.5], 0.0, 9.81, 1.0, 1.0, 2.0).round(6)
+    array([ 1.850984, -6.327556])
+
+    With no mass on the cart and the pendulum vertical, the mass matrix is singular:
+
+    >>> accel([0.0, 0.0], 0.0, 9.81, 1.0, 1.0, 0.0)
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.SingularMassMatrixError: the matrix `A` ... is singular at ...
+    """
+    _check_name(name)
+    if not isinstance(A, sympy.MatrixBase) or A.rows != A.cols or A.rows == 0:
+        shape = getattr(A, "shape", None)
+        raise ArgumentError(
+            f"`A` must be a square, non-empty sympy Matrix; got {type(A).__name__} of shape "
+            f"{shape}."
+        )
+    n = A.rows
+    if isinstance(b, sympy.MatrixBase):
+        if b.shape not in ((n, 1), (1, n)):
+            raise ArgumentError(
+                f"`b` must have shape ({n}, 1) or (1, {n}) to match `A` of shape ({n}, {n}); "
+                f"got {b.shape}."
+            )
+        b_items = list(b)
+    else:
+        try:
+            b_items = list(b)
+        except TypeError:
+            raise ArgumentTypeError(
+                f"`b` must be a sympy Matrix or a sequence of {n} expressions; got "
+                f"{type(b).__name__}."
+            ) from None
+        if len(b_items) != n:
+            raise ArgumentError(f"`b` must have {n} entries to match `A`; got {len(b_items)}.")
+    symmetric = bool(symmetric)
+    if symmetric:
+        a_index = [(j, i) for j in range(n) for i in range(j, n)]
+    else:
+        a_index = [(i, j) for i in range(n) for j in range(n)]
+    flat = [sympy.sympify(A[i, j]) for i, j in a_index] + [sympy.sympify(e) for e in b_items]
+    prepared = _Prepared(flat, args, cse)
+    printer_math, printer_array = _codegen._MathPrinter(), _codegen._ArrayPrinter()
+    single_params, batched_params, unpack = prepared.signatures()
+    reduced = prepared.reduced
+    a_locals = [f"_a{i}_{j}" for i, j in a_index]
+    b_locals = [f"_b{i}" for i in range(n)]
+    entry = dict(zip(a_index, a_locals, strict=True))
+    if symmetric:
+        entry.update({(i, j): name_ for (j, i), name_ in zip(a_index, a_locals, strict=True)})
+    a_literal = _codegen.nested_literal([entry[i, j] for i in range(n) for j in range(n)], (n, n))
+    unrolled = symmetric and n <= UNROLLED_CHOLESKY_MAX_N
+    single_lines = (
+        [f"def {name}_single({', '.join(single_params)}):"]
+        + _codegen.body_lines(printer_math, prepared.replacements)
+        + [
+            f"    {local} = {_codegen.print_expr(printer_math, e)}"
+            for local, e in zip(a_locals + b_locals, reduced, strict=True)
+        ]
+        + (_cholesky_lines(n) if unrolled else [])
+        + [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]
+    )
+    batched_lines = (
+        [f"def {name}_batched({', '.join(batched_params)}):"]
+        + unpack
+        + _codegen.body_lines(printer_array, prepared.replacements)
+        + [f"    _A = numpy.empty(({n}, {n}) + _batch)", f"    _B = numpy.empty(({n},) + _batch)"]
+    )
+    for (i, j), e in zip(a_index, reduced, strict=False):
+        target = f"_A[{i}, {j}]" + (f" = _A[{j}, {i}]" if symmetric and i != j else "")
+        batched_lines.append(f"    {target} = {_codegen.print_expr(printer_array, e)}")
+    for i, e in enumerate(reduced[len(a_index) :]):
+        batched_lines.append(f"    _B[{i}] = {_codegen.print_expr(printer_array, e)}")
+    batched_lines.append("    return _A, _B")
+    obj = CompiledLinearSolve.__new__(CompiledLinearSolve)
+    obj._init(
+        _name=name,
+        _labels=prepared.labels,
+        _sizes=prepared.sizes,
+        args=prepared.symbols,
+        n_ops=prepared.n_ops,
+        single_source="\n".join(single_lines),
+        batched_source="\n".join(batched_lines),
+        n=n,
+        symmetric=symmetric,
+        unrolled=unrolled,
+    )
+    return obj
