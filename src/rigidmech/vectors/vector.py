@@ -16,6 +16,7 @@ from functools import lru_cache
 
 import numpy as np
 import sympy as sp
+from sympy.printing.latex import LatexPrinter
 
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from ._rotations import (
@@ -255,7 +256,17 @@ class Vector:
     __rmul__ = __mul__
 
     def __truediv__(self, scalar):
-        s = sp.sympify(scalar)
+        if isinstance(scalar, Vector):
+            raise ArgumentTypeError(
+                "`scalar` must be a number or a sympy expression; got a Vector (a vector "
+                "cannot be divided by a vector)."
+            )
+        try:
+            s = sp.sympify(scalar)
+        except (sp.SympifyError, TypeError):
+            return NotImplemented
+        if not isinstance(s, sp.Expr):
+            return NotImplemented
         if s == 0:
             raise ArgumentError("`scalar` must be non-zero to divide a vector; got 0.")
         return self * (1 / s)
@@ -560,7 +571,7 @@ class Vector:
         return self._join(self._terms(coeff, lambda f, n: f"{'ijk'[n]}_{f.name}"))
 
     def _latex(self, printer=None):
-        printer = printer or sp.printing.latex.LatexPrinter()
+        printer = printer or LatexPrinter()
 
         def coeff(x):
             s = printer._print(x)
