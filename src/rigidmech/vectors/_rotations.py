@@ -161,13 +161,21 @@ def rotation_steps(a, b):
                      else (None, transpose(f._matrix)))
     for f in path_to_ancestor(b, anc):
         steps.append((f._axis, f._angle) if f._axis is not None else (None, f._matrix))
+    # Zero rotations (translated frames, angles that cancel) are dropped as they appear, so
+    # that the rotations on either side of them are merged too.
     merged = []
     for axis, value in steps:
+        if axis is not None and value == 0:
+            continue
         if axis is not None and merged and merged[-1][0] == axis:
-            merged[-1] = (axis, merged[-1][1] + value)
+            total = merged[-1][1] + value
+            if total == 0:
+                merged.pop()
+            else:
+                merged[-1] = (axis, total)
         else:
             merged.append((axis, value))
-    return [(ax, v) for ax, v in merged if not (ax is not None and v == 0)]
+    return merged
 
 
 @lru_cache(maxsize=16384)
