@@ -288,8 +288,13 @@ class Frame(FrameBase):
 
 def _sympify(x, argument):
     try:
-        return sp.sympify(x)
+        value = sp.sympify(x)
     except (sp.SympifyError, TypeError) as exc:
         raise ArgumentTypeError(
             f"`{argument}` must be a number or a sympy expression; got {type(x).__name__}."
         ) from exc
+    if not isinstance(value, sp.Expr):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a number or a sympy expression; got {type(x).__name__}."
+        )
+    return value
