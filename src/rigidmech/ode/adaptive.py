@@ -190,8 +190,7 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
         K[0] = K[s]
         if stop:
             break
-    stats = {"nfev_dense": 0}
-    return rec.result(pair.name, prob.nfev, nrej, stats)
+    return rec.result(pair.name, prob.nfev, nrej)
 
 
 def _dense_dop853(pair, prob, t, y, y_new, h, K):

@@ -58,10 +58,10 @@ def methods(kind: str | None = None) -> list[str]:
 
     Examples
     --------
-    >>> {"euler", "rk4", "dopri5", "dop853"} <= set(methods())
+    >>> {"euler", "rk4", "dopri5", "dop853", "gbs", "radau"} <= set(methods())
     True
-    >>> methods("adaptive")[:2]
-    ['dop853', 'dopri5']
+    >>> methods("stiff")
+    ['radau']
     """
     if kind is not None and kind not in _registry.KINDS:
         raise ArgumentError(f"`kind` must be one of {_registry.KINDS} or None; got {kind!r}.")
