@@ -124,22 +124,25 @@ def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_eve
     nfev = 1
     rec = FixedRecorder(t0, y, np.concatenate([v, a]), save_every, dense_output)
     t = t0
-    for i in range(1, nsteps + 1):
-        v = v + kick_in * a
-        tau = t0 + (i - 1) * h
-        for w_h, k in zip(hw, kicks, strict=True):
-            q = q + w_h * v
-            tau += w_h
-            a = acceleration(tau, q)
-            v = v + k * a
-        nfev += len(hw)
-        t = t0 + i * h
-        if rec.wants(i, nsteps):
-            rec.add(t, np.concatenate([q, v]), np.concatenate([v, a]) if rec.dense else None)
-        if rec.check_finite(i, t, q):
-            if rec.ts[-1] != t:
+    # overflow to inf/nan is reported in the result (status -1), not raised as a warning
+    with np.errstate(over="ignore", invalid="ignore"):
+        for i in range(1, nsteps + 1):
+            v = v + kick_in * a
+            tau = t0 + (i - 1) * h
+            for w_h, k in zip(hw, kicks, strict=True):
+                q = q + w_h * v
+                tau += w_h
+                a = acceleration(tau, q)
+                v = v + k * a
+            nfev += len(hw)
+            t = t0 + i * h
+            if rec.wants(i, nsteps):
                 rec.add(t, np.concatenate([q, v]), np.concatenate([v, a]) if rec.dense else None)
-            break
+            if rec.check_finite(i, t, q):
+                if rec.ts[-1] != t:
+                    fa = np.concatenate([v, a]) if rec.dense else None
+                    rec.add(t, np.concatenate([q, v]), fa)
+                break
     return rec.result(method, nfev, i, stats={"step": abs(h), "stages": len(hw)})
 
 

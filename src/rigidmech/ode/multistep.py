@@ -194,33 +194,35 @@ def _run(fun, t_span, y0, step, order, corrector, max_steps, save_every, dense_o
     rec = FixedRecorder(t0, y, f, save_every, dense_output)
     history = [f]  # newest first
     i = 0
-    for i in range(1, nsteps + 1):
-        t = t0 + (i - 1) * h
-        t_new = t0 + i * h
-        if i < order:  # starting steps (26.3.1): Runge-Kutta 4
-            if i == 1:
-                starts, n_start = _rk4_start(fun, t, y, h, min(order, nsteps + 1))
-                nfev += n_start
-            y = starts[i - 1]
-        else:
-            y_pred = y + _combine(beta, history, h)
-            if corrector:
-                f_pred = np.array(fun(t_new, y_pred), dtype=float)
-                nfev += 1
-                y = y + h * beta_c[0] * f_pred + _combine(beta_c[1:], history, h)
+    # overflow to inf/nan is reported in the result (status -1), not raised as a warning
+    with np.errstate(over="ignore", invalid="ignore"):
+        for i in range(1, nsteps + 1):
+            t = t0 + (i - 1) * h
+            t_new = t0 + i * h
+            if i < order:  # starting steps (26.3.1): Runge-Kutta 4
+                if i == 1:
+                    starts, n_start = _rk4_start(fun, t, y, h, min(order, nsteps + 1))
+                    nfev += n_start
+                y = starts[i - 1]
             else:
-                y = y_pred
-        f = np.array(fun(t_new, y), dtype=float)
-        nfev += 1
-        history.insert(0, f)
-        if len(history) > order:
-            history.pop()
-        if rec.wants(i, nsteps):
-            rec.add(t_new, y, f)
-        if rec.check_finite(i, t_new, y):
-            if rec.ts[-1] != t_new:
+                y_pred = y + _combine(beta, history, h)
+                if corrector:
+                    f_pred = np.array(fun(t_new, y_pred), dtype=float)
+                    nfev += 1
+                    y = y + h * beta_c[0] * f_pred + _combine(beta_c[1:], history, h)
+                else:
+                    y = y_pred
+            f = np.array(fun(t_new, y), dtype=float)
+            nfev += 1
+            history.insert(0, f)
+            if len(history) > order:
+                history.pop()
+            if rec.wants(i, nsteps):
                 rec.add(t_new, y, f)
-            break
+            if rec.check_finite(i, t_new, y):
+                if rec.ts[-1] != t_new:
+                    rec.add(t_new, y, f)
+                break
     return rec.result(name, nfev, i, stats={"step": abs(h), "order": order})
 
 
