@@ -1,0 +1,214 @@
+"""Work-precision of rigidmech.ode against scipy.integrate.solve_ivp, side by side in one run.
+
+Problems (rigidmech.ode.problems, book ch. 27): simple pendulum theta0 = 170 deg over 10
+periods, Kepler e = 0.6 and e = 0.9 over 10 orbits, damped forced oscillator (omega0 = 10,
+zeta = 0.05). Adaptive methods sweep rtol = 1e-3 ... 1e-13 with atol = 1e-3 rtol (TARGETS.md);
+fixed-step methods sweep the number of steps. For every run: final error (max norm against the
+exact solution), wall time (best of --repeats) and nfev. Then, per problem and error level, the
+cheapest of ours against the cheapest solve_ivp run and the ratio of wall times.
+
+Usage::
+
+    python benchmarks/work_precision.py [--out DIR] [--repeats 3] [--quick] [--long]
+
+``--long`` adds the long-time energy figure: Kepler e = 0.6 over 10,000 orbits, Yoshida's
+order-6 composition against DOP853 (rtol 1e-10), with the growth exponent of the energy error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import time
+import warnings
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from rigidmech import ode
+from rigidmech.ode import problems as P
+
+LEVELS = (1e-6, 1e-8, 1e-10, 1e-11)
+OURS_ADAPTIVE = ("dopri5", "dop853", "gbs", "radau")
+SCIPY = ("RK45", "DOP853", "LSODA", "Radau")
+RADAU_MIN_RTOL = 1e-9  # implicit methods are far too slow below this on non-stiff problems
+
+
+def _problems():
+    return [
+        P.pendulum(170.0, periods=10),
+        P.kepler(0.6, orbits=10),
+        P.kepler(0.9, orbits=10),
+        P.damped_oscillator(10.0, 0.05),
+    ]
+
+
+def _timed(run, repeats):
+    best, out = math.inf, None
+    for k in range(repeats):
+        t0 = time.perf_counter()
+        out = run()
+        best = min(best, time.perf_counter() - t0)
+        if best > 1.0 and k == 0:
+            break
+    return best, out
+
+
+def _sweep(p, repeats, quick):
+    rtols = [10.0**-k for k in range(3, 14)]
+    if quick:
+        rtols = rtols[::2]
+    rows = []
+    for name in OURS_ADAPTIVE + tuple("scipy:" + s for s in SCIPY):
+        for rtol in rtols:
+            if name.lower().endswith("radau") and rtol < RADAU_MIN_RTOL:
+                continue
+            atol = 1e-3 * rtol
+            if name.startswith("scipy:"):
+                m = name[6:]
+
+                def run(m=m, rtol=rtol, atol=atol):
+                    s = solve_ivp(p.fun, p.t_span, p.y0, method=m, rtol=rtol, atol=atol)
+                    return s.y[:, -1], s.nfev, s.success
+            else:
+
+                def run(name=name, rtol=rtol, atol=atol):
+                    r = ode.solve(p.fun, p.t_span, p.y0, method=name, rtol=rtol, atol=atol,
+                                  max_steps=10**7)
+                    return r.y[:, -1], r.nfev, r.success
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                t, (y, nfev, ok) = _timed(run, repeats)
+            rows.append((name, f"rtol={rtol:.0e}", p.final_error(y) if ok else math.nan, t, nfev))
+    # fixed-step methods: geometric (separable problems) and Adams PECE
+    fixed = [("abm5", p.fun)]
+    if p.acceleration is not None:
+        fixed.insert(0, ("yoshida6", p.acceleration))
+        fixed.insert(1, ("yoshida4", p.acceleration))
+    counts = [250 * 2**j for j in range(0, 9, 2 if quick else 1)]
+    length = p.t_span[1] - p.t_span[0]
+    for name, f in fixed:
+        for n in counts:
+            if name == "yoshida6" and n > 32000:
+                continue
+
+            def run(name=name, f=f, n=n):
+                r = ode.solve(f, p.t_span, p.y0, method=name, step=length / n,
+                              max_steps=10**7)
+                return r.y[:, -1], r.nfev, r.success
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                t, (y, nfev, ok) = _timed(run, repeats)
+            err = p.final_error(y) if ok and np.all(np.isfinite(y)) else math.nan
+            rows.append((name, f"N={n}", err, t, nfev))
+    return rows
+
+
+def _cheapest(rows, level, scipy):
+    ok = [r for r in rows if (r[0].startswith("scipy:") == scipy) and r[2] <= level]
+    return min(ok, key=lambda r: r[3]) if ok else None
+
+
+def _fmt(r):
+    return "not reached" if r is None else f"{r[0]} {r[1]} {r[3] * 1e3:.1f} ms (err {r[2]:.1e})"
+
+
+def _plot(p, rows, out):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 5))
+    for name in dict.fromkeys(r[0] for r in rows):
+        pts = [(r[2], r[3]) for r in rows if r[0] == name and np.isfinite(r[2]) and r[2] > 0]
+        if pts:
+            e, t = zip(*pts, strict=True)
+            ax.loglog(e, t, "o--" if name.startswith("scipy:") else "s-", label=name, ms=4)
+    ax.set_xlabel("final error (max norm)")
+    ax.set_ylabel("wall time [s]")
+    ax.set_title(f"work-precision: {p.name}")
+    ax.invert_xaxis()
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    path = os.path.join(out, f"wp_{p.name}.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def long_run(out, orbits=10_000, per_orbit=400):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    p = P.kepler(0.6, orbits=orbits)
+    E0 = p.energy(p.y0)
+    t0 = time.perf_counter()
+    from rigidmech.ode.geometric import yoshida6
+
+    r = yoshida6(p.acceleration, p.t_span, p.y0, step=p.period / per_orbit, save_every=7)
+    t_sym = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    s = ode.solve(p.fun, p.t_span, p.y0, method="dop853", rtol=1e-10, atol=1e-13,
+                  max_steps=10**8)
+    t_dop = time.perf_counter() - t0
+    res = {}
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for label, t, y, el in [(f"yoshida6, T/{per_orbit}", r.t, r.y, t_sym),
+                            ("dop853, rtol 1e-10", s.t, s.y, t_dop)]:
+        rel = np.abs((p.energy(y) - E0) / E0)
+        edges = np.linspace(0, t[-1], 101)
+        idx = np.searchsorted(t, edges)
+        peaks = np.array([rel[idx[i]: idx[i + 1] + 1].max() for i in range(100)])
+        g = np.polyfit(np.log(edges[1:]), np.log(peaks), 1)[0]
+        res[label] = (peaks.max(), g, el)
+        ax.loglog(edges[1:] / p.period, peaks, label=f"{label}: max {peaks.max():.1e}, g={g:.2f}")
+        print(f"{label:24s} max |dE/E| = {peaks.max():.2e}  after 1% {peaks[0]:.2e}  "
+              f"growth exponent {g:.3f}  wall {el:.1f} s")
+    ax.set_xlabel("orbits")
+    ax.set_ylabel("max |dE/E| per window")
+    ax.set_title("Kepler e = 0.6, 10,000 orbits")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "long_time_energy.png"), dpi=110)
+    plt.close(fig)
+    return res
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default="./out/work_precision")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--quick", action="store_true", help="every other tolerance / step count")
+    ap.add_argument("--long", action="store_true", help="also the 10,000-orbit energy figure")
+    args = ap.parse_args(argv)
+    os.makedirs(args.out, exist_ok=True)
+    summary = []
+    for p in _problems():
+        rows = _sweep(p, args.repeats, args.quick)
+        print(f"\n== {p.name}: {p.description}, t_end = {p.t_span[1]:.4g}")
+        print(f"{'method':14s} {'setting':11s} {'final err':>10s} {'time ms':>9s} {'nfev':>8s}")
+        for r in rows:
+            print(f"{r[0]:14s} {r[1]:11s} {r[2]:10.2e} {r[3] * 1e3:9.2f} {r[4]:8d}")
+        print(f"plot: {_plot(p, rows, args.out)}")
+        for level in LEVELS:
+            ours, ref = _cheapest(rows, level, False), _cheapest(rows, level, True)
+            ratio = (f"{ours[3] / ref[3]:.2f}" if ours and ref
+                     else ("ours only" if ours else "-"))
+            summary.append((p.name, level, _fmt(ours), _fmt(ref), ratio))
+    print("\n== cheapest run reaching the error level (ratio = our time / solve_ivp time)")
+    print(f"{'problem':22s} {'err <=':7s} | {'ours':52s} | {'solve_ivp':52s} | ratio")
+    for name, level, ours, ref, ratio in summary:
+        print(f"{name:22s} {level:7.0e} | {ours:52s} | {ref:52s} | {ratio}")
+    if args.long:
+        print("\n== long-time energy, Kepler e = 0.6, 10,000 orbits")
+        long_run(args.out)
+
+
+if __name__ == "__main__":
+    main()
