@@ -69,6 +69,12 @@ class _ArrayPrinter(SciPyPrinter):
     def __init__(self):
         super().__init__({"fully_qualified_modules": True, "strict": True})
 
+    def _print_not_supported(self, expr):
+        raise CompilationError(
+            f"`exprs` contain {sympy.sstr(expr)} which has no numeric translation in numpy or "
+            "scipy.special; replace that function or substitute it first."
+        )
+
 
 def print_expr(printer, expr):
     """Print one expression, turning a printer failure into a :class:`CompilationError`."""
@@ -404,10 +410,16 @@ def _output_code(template, reduced, printer_math, printer_array):
 def _cholesky_lines(n):
     """Unrolled Cholesky solve of the symmetric system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``.
 
-    A pivot that is not > 0 (not positive definite, or nan) raises ArithmeticError, caught by
-    the generated code, which then hands A and b to numpy.linalg.solve.
+    A non-finite entry (the sum of the entries is then inf or nan, so ``s - s != 0``) or a pivot
+    that is not > 0 (not positive definite) raises ArithmeticError, caught by the generated
+    code, which then hands A and b to numpy.linalg.solve and its checks.
     """
-    lines = ["    try:"]
+    entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
+    lines = [
+        "    try:",
+        f"        _s = {entries}",
+        "        if not _s - _s == 0.0: raise ArithmeticError",
+    ]
     for j in range(n):
         pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
         lines.append(f"        _p = {pivot}")

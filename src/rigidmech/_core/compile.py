@@ -478,47 +478,41 @@ class CompiledLinearSolve(_Compiled):
         return self._solve_batch(A, b, arrays, batch)
 
     def _solve_one(self, A, b, args):
-        try:
-            x = np.linalg.solve(A, b)
-        except np.linalg.LinAlgError:
-            x = None
-        if x is None or not np.isfinite(x).all():
-            arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
-            values = _values_at(arrays, self._sizes, self._labels, batch, 0)
-            if not np.isfinite(A).all():
-                raise _singular_error("is not finite", _where(values))
-            if x is None or np.isfinite(b).all():
-                raise _singular_error("is singular", _where(values))
-        return x
+        x = None
+        if np.isfinite(A).all():
+            try:
+                x = np.linalg.solve(A, b)
+            except np.linalg.LinAlgError:
+                pass
+            if x is not None and (np.isfinite(x).all() or not np.isfinite(b).all()):
+                return x
+        arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
+        where = _where(_values_at(arrays, self._sizes, self._labels, batch, 0))
+        raise _singular_error("is singular" if x is None else "is not finite", where)
 
     def _solve_batch(self, A, b, arrays, batch):
         n = self.n
         count = int(np.prod(batch, dtype=int))
         stack_A = A.reshape(n, n, count).transpose(2, 0, 1)
         stack_b = b.reshape(n, count).T[:, :, None]
-        with np.errstate(all="ignore"):
-            try:
-                x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
-                failed = None
-            except np.linalg.LinAlgError:
-                x, failed = None, True
-        if failed or not np.isfinite(x).all():
-            finite_A = np.isfinite(stack_A).all(axis=(1, 2))
-            finite_b = np.isfinite(stack_b).all(axis=(1, 2))
-            for i in range(count):
-                if not finite_A[i]:
-                    reason = "is not finite"
-                elif x is None or (finite_b[i] and not np.isfinite(x[i]).all()):
-                    if x is None and _solvable(stack_A[i]):
-                        continue
-                    reason = "is singular"
-                else:
-                    continue
-                values = _values_at(arrays, self._sizes, self._labels, batch, i)
-                index = i if batch == () or len(batch) > 1 else i
-                raise _singular_error(
-                    reason, _where(values) if batch == () else _where(values, index)
-                )
+        finite_A = np.isfinite(stack_A).all(axis=(1, 2))
+        bad, reason = None, "is singular"
+        if not finite_A.all():
+            bad, reason = int(np.argmin(finite_A)), "is not finite"
+        else:
+            with np.errstate(all="ignore"):
+                try:
+                    x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
+                except np.linalg.LinAlgError:
+                    bad = next(i for i in range(count) if not _solvable(stack_A[i]))
+            if bad is None:
+                singular = ~np.isfinite(x).all(axis=1) & np.isfinite(stack_b).all(axis=(1, 2))
+                if singular.any():
+                    bad = int(np.argmax(singular))
+        if bad is not None:
+            values = _values_at(arrays, self._sizes, self._labels, batch, bad)
+            where = _where(values) if batch == () else _where(values, bad)
+            raise _singular_error(reason, where)
         return x.T.reshape((n,) + batch)
 
     def __repr__(self):
