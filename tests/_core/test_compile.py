@@ -323,26 +323,30 @@ def test_cse_reduces_ops_and_awkward_names():
 
 
 def _spd_problem(n, seed):
-    """A = B(x, y)^T B(x, y) + n I (symmetric positive definite), b(x, y)."""
+    """A = B(x, y)^T B(x, y) + n I (symmetric positive definite), b(x, y), and a numeric twin.
+
+    B[i, j] = c0 + c1 cos(x) + c2 y with small random integers; the twin evaluates the same
+    formulas with numpy (an independent evaluation of A and b).
+    """
     rng = np.random.default_rng(seed)
     coeffs = rng.integers(-3, 4, (n, n, 3))
     B = sympy.Matrix(n, n, lambda i, j: coeffs[i, j, 0] + coeffs[i, j, 1] * sympy.cos(x)
                      + coeffs[i, j, 2] * y)
     A = B.T * B + n * sympy.eye(n)
     rhs = sympy.Matrix([sympy.sin(k * x) + y**k for k in range(n)])
-    return A, rhs
 
+    def numeric(xv, yv):
+        B_num = coeffs[:, :, 0] + coeffs[:, :, 1] * np.cos(xv) + coeffs[:, :, 2] * yv
+        b_num = np.array([np.sin(k * xv) + yv**k for k in range(n)])
+        return B_num.T @ B_num + n * np.eye(n), b_num
 
-def _numeric(A, rhs, xv, yv):
-    values = {x: xv, y: yv}
-    return (np.array(A.subs(values).evalf(), dtype=float),
-            np.array(rhs.subs(values).evalf(), dtype=float).ravel())
+    return A, rhs, numeric
 
 
 @pytest.mark.parametrize("n", [1, 3, 8])
 @pytest.mark.parametrize("symmetric", [True, False])
 def test_linear_solve_matches_numpy(n, symmetric):
-    A, rhs = _spd_problem(n, seed=n)
+    A, rhs, numeric = _spd_problem(n, seed=n)
     solve = compile_linear_solve(A, rhs, [[x, y]], symmetric=symmetric)
     assert isinstance(solve, CompiledLinearSolve)
     assert solve.unrolled == (symmetric and n <= 6)
@@ -350,15 +354,14 @@ def test_linear_solve_matches_numpy(n, symmetric):
     batched = solve(states)
     assert batched.shape == (n, 3)
     for k in range(3):
-        A_num, b_num = _numeric(A, rhs, *states[:, k])
-        expected = np.linalg.solve(A_num, b_num)
+        expected = np.linalg.solve(*numeric(*states[:, k]))
         # A is well conditioned (+ n I): Cholesky vs LU differ by a few ulps * cond(A)
         assert_allclose(solve(states[:, k]), expected, rtol=1e-12, atol=1e-14)
         assert_allclose(batched[:, k], expected, rtol=1e-12, atol=1e-14)
 
 
 def test_linear_solve_multi_axis_batch_and_fresh():
-    A, rhs = _spd_problem(2, seed=5)
+    A, rhs, _ = _spd_problem(2, seed=5)
     solve = compile_linear_solve(A, rhs, [x, y], symmetric=True)
     xs = np.linspace(0.0, 1.0, 12).reshape(3, 4)
     out = solve(xs, 0.5)
@@ -427,7 +430,7 @@ def test_linear_solve_shape_errors(A, b, match):
 
 
 def test_linear_solve_pickle():
-    A, rhs = _spd_problem(3, seed=7)
+    A, rhs, _ = _spd_problem(3, seed=7)
     solve = compile_linear_solve(A, rhs, [x, y], symmetric=True)
     clone = pickle.loads(pickle.dumps(solve))
     assert_allclose(clone(0.2, 0.3), solve(0.2, 0.3), rtol=0)
