@@ -458,11 +458,14 @@ class Basis:
 
 def _column(c, argument):
     try:
-        col = sp.Matrix([sp.sympify(x) for x in c])
+        entries = [sp.sympify(x) for x in c]
     except (sp.SympifyError, TypeError) as exc:
         raise ArgumentTypeError(
             f"`{argument}` must be 3 numbers or sympy expressions; got {c!r}."
         ) from exc
+    if not all(isinstance(x, sp.Expr) for x in entries):
+        raise ArgumentTypeError(f"`{argument}` must be 3 numbers or sympy expressions; got {c!r}.")
+    col = sp.Matrix(entries)
     if col.shape != (3, 1):
         raise ArgumentError(f"`{argument}` must have 3 components; got {len(col)}: {c!r}.")
     return col
