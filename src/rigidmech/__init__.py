@@ -1,9 +1,29 @@
-"""rigidmech: mechanics of rigid bodies, the way J.-M. Berthelot's textbook teaches it."""
+"""rigidmech: mechanics of rigid bodies, the way J.-M. Berthelot's textbook teaches it.
 
+The public surface mirrors the book's parts: frames and vectors (Part I), torsors (ch. 5),
+kinematics (Part II), actions and connections (Part III), inertia and kinetics (Part IV),
+dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
+"""
+
+from . import actions, inertia, ode
+from . import actions as joints
+from .actions import Couple, Force, Spring, gravity, power
+from .dynamics import EquationsOfMotion, Simulation, System
+from .inertia import InertiaOperator
+from .kinematics import KinematicTorsor, Solid, kinematic_torsor
+from .kinetics import Body
 from .torsors import Torsor, couple, slider
 from .vectors import Frame, Point, Vector, constants, coordinates, cross, dot, mixed, t
 
 __version__ = "0.1.0"
 
-__all__ = ["Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
-           "Torsor", "couple", "slider"]
+__all__ = [
+    "Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
+    "Torsor", "couple", "slider",
+    "Solid", "KinematicTorsor", "kinematic_torsor",
+    "Force", "Couple", "Spring", "gravity", "power", "joints", "actions",
+    "InertiaOperator", "inertia",
+    "Body",
+    "System", "EquationsOfMotion", "Simulation",
+    "ode",
+]

@@ -18,7 +18,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, FrameError
 
-__all__ = ["FrameBase", "direction_cosines", "rotation_steps", "path_to_ancestor",
+__all__ = ["FrameBase", "direction_cosines", "bilinear", "rotation_steps", "path_to_ancestor",
            "common_ancestor", "IDENTITY"]
 
 ZERO = sp.S.Zero
@@ -102,6 +102,20 @@ def elementary(axis, angle):
 def dot3(u, v):
     """Scalar product of two 3-tuples of sympy expressions, skipping zero factors."""
     terms = [x * y for x, y in zip(u, v, strict=True) if x != 0 and y != 0]
+    return sp.Add(*terms) if terms else ZERO
+
+
+def bilinear(u, m, v):
+    """u . (m v) for 3-tuples u, v and a 3x3 tuple matrix m, visiting only the non-zero
+    entries of u and v (parts of mechanical vectors are mostly sparse)."""
+    iu = [r for r in range(3) if u[r] != 0]
+    iv = [c for c in range(3) if v[c] != 0]
+    terms = []
+    for r in iu:
+        row = m[r]
+        inner = [row[c] * v[c] for c in iv if row[c] != 0]
+        if inner:
+            terms.append(u[r] * (inner[0] if len(inner) == 1 else sp.Add(*inner)))
     return sp.Add(*terms) if terms else ZERO
 
 

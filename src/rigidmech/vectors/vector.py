@@ -22,6 +22,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from ._rotations import (
     ZERO,
     FrameBase,
+    bilinear,
     common_ancestor,
     direction_cosines,
     dot3,
@@ -32,7 +33,7 @@ from ._rotations import (
 )
 from .symbols import t
 
-__all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector"]
+__all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector"]
 
 _ZERO3 = (ZERO, ZERO, ZERO)
 
@@ -289,7 +290,7 @@ class Vector:
                 if fa is fb or fa == fb:
                     terms.append(dot3(ca, cb))
                 else:
-                    terms.append(dot3(ca, matvec(direction_cosines(fa, fb), cb)))
+                    terms.append(bilinear(ca, direction_cosines(fa, fb), cb))
         return sp.Add(*terms) if terms else ZERO
 
     def cross(self, other) -> Vector:
@@ -387,6 +388,11 @@ class Vector:
     def diff(self, variable, frame=None) -> Vector:
         """Partial derivative with respect to ``variable`` (book, ch. 3.2-3.3).
 
+        Relative to ``frame`` each part is differentiated in its own basis and the
+        derivation formula adds the partial rotation vector of that basis:
+        du/dx|R = du/dx|F + Omega_x(F/R) ^ u, with Omega_x(F/R) = d omega(F/R) / dx'
+        (see :func:`partial_rotation_vector`). Parts stay in their own bases.
+
         Parameters
         ----------
         variable : sympy expression
@@ -403,25 +409,24 @@ class Vector:
         >>> (q.diff(t) * R1.j).diff(q.diff(t))
         R1.j
         >>> R1.i.diff(q, R0)
-        -sin(q(t))*R0.i + cos(q(t))*R0.j
+        R1.j
         """
         variable = sp.sympify(variable)
-        parts = []
-        for f, c in self._parts:
-            if frame is not None and f != frame and _frame_depends_on(f, frame, variable):
-                c = matvec(direction_cosines(frame, f), c)
-                f = frame
-            elif frame is None and _frame_depends_on(f, f.root, variable):
-                raise FrameError(
-                    f"the basis of {f.name} depends on {variable}: pass `frame`, the frame "
-                    "relative to which the partial derivative is taken."
-                )
-            d = tuple(sp.diff(x, variable) for x in c)
-            if any(x != 0 for x in d):
-                parts.append((f, d))
         out = Vector.zero()
-        for p in parts:
-            out = out + Vector._from_parts((p,))
+        for f, c in self._parts:
+            d = tuple(sp.diff(x, variable) if x.has(variable) else ZERO for x in c)
+            if any(x != 0 for x in d):
+                out = out + Vector._from_parts(((f, d),))
+            if frame is None:
+                if _frame_depends_on(f, f.root, variable):
+                    raise FrameError(
+                        f"the basis of {f.name} depends on {variable}: pass `frame`, the "
+                        "frame relative to which the partial derivative is taken."
+                    )
+            elif f != frame:
+                w = partial_rotation_vector(f, frame, variable)
+                if w._parts:
+                    out = out + w.cross(Vector._from_parts(((f, c),)))
         return out
 
     # -- element-wise transforms --------------------------------------------------------
@@ -647,13 +652,19 @@ def mixed(u: Vector, v: Vector, w: Vector):
     return u.dot(v.cross(w))
 
 
-def _own_rotation(f):
-    """omega(f / f.parent) as a 3-tuple in the basis of f."""
+def _own_rotation(f, variable=None):
+    """omega(f / f.parent) as a 3-tuple in the basis of f; with ``variable``, its partial
+    derivative with respect to the rate of ``variable`` (the partial rotation vector)."""
+
+    def rate(x):
+        return sp.diff(x, t) if variable is None else (
+            sp.diff(x, variable) if x.has(variable) else ZERO)
+
     if f._axis is not None:
-        rate = sp.diff(f._angle, t)
-        return tuple(rate if n == f._axis else ZERO for n in range(3))
+        r = rate(f._angle)
+        return tuple(r if n == f._axis else ZERO for n in range(3))
     c = f._matrix
-    cdot = tuple(tuple(sp.diff(x, t) for x in row) for row in c)
+    cdot = tuple(tuple(rate(x) for x in row) for row in c)
     w = matmul(transpose(c), cdot)  # skew: [[0,-wz,wy],[wz,0,-wx],[-wy,wx,0]]
     return tuple(sp.simplify(x) for x in (w[2][1], w[0][2], w[1][0]))
 
@@ -678,13 +689,39 @@ def rotation_vector(frame, relative_to) -> Vector:
     """
     _check_frame(frame, "frame")
     _check_frame(relative_to, "relative_to")
+    return _rotation(frame, relative_to, None)
+
+
+@lru_cache(maxsize=16384)
+def partial_rotation_vector(frame, relative_to, variable) -> Vector:
+    """The partial rotation vector Omega_q(frame/relative_to) = d omega / d q' (ch. 25.1.2).
+
+    omega(frame/relative_to) is linear in the rates of the parameters of situation; this is
+    the coefficient of the rate of ``variable``: d/dq|R of a vector fixed in ``frame`` is
+    Omega_q ^ u. For a variable on which no rotation depends it is zero.
+
+    Examples
+    --------
+    >>> from rigidmech.vectors import Frame, coordinates
+    >>> q1, q2 = coordinates("q1 q2")
+    >>> R0 = Frame("R0")
+    >>> R2 = R0.rotated("R1", about=R0.k, angle=q1).rotated("R2", about=R0.k, angle=q2)
+    >>> partial_rotation_vector(R2, R0, q1)
+    R2.k
+    """
+    _check_frame(frame, "frame")
+    _check_frame(relative_to, "relative_to")
+    return _rotation(frame, relative_to, sp.sympify(variable))
+
+
+def _rotation(frame, relative_to, variable):
     if frame == relative_to:
         return Vector.zero()
     anc = common_ancestor(frame, relative_to)
     acc = {frame: (ZERO, ZERO, ZERO)}
 
     def add(f, sign):
-        w = _own_rotation(f)
+        w = _own_rotation(f, variable)
         if all(x == 0 for x in w):
             return
         w = tuple(sign * x for x in w)

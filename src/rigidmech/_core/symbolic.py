@@ -1,0 +1,64 @@
+"""Symbolic helpers that keep shared subexpressions shared.
+
+sympy's ``xreplace`` walks an expression as a tree: a subexpression reached along many paths
+is rebuilt once per path. Derived equations of motion are DAGs in which the same velocity
+components appear in many entries, so a tree walk costs as much as the swollen expression.
+:func:`xreplace_shared` walks each distinct node once (memoised), which keeps the cost
+proportional to the size of the DAG (ARCHITECTURE.md, principle 5). sympy has no memoised
+replacement, hence this small function.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+__all__ = ["xreplace_shared"]
+
+
+def xreplace_shared(exprs, rule, memo=None):
+    """Apply ``rule`` (an exact, structural replacement like ``xreplace``) to each expression
+    of ``exprs``, rebuilding every distinct subexpression only once.
+
+    Parameters
+    ----------
+    exprs : iterable of sympy expressions
+    rule : dict
+        Mapping of subexpressions to replacements; a matched node is not entered.
+    memo : dict, optional
+        Cache shared between calls (pass the same dict to share work across calls).
+
+    Returns
+    -------
+    list of sympy expressions
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> f = sp.Function("f")(x)
+    >>> xreplace_shared([sp.sin(f) + f**2, f], {f: y})
+    [y**2 + sin(y), y]
+    """
+    memo = {} if memo is None else memo
+
+    def walk(e):
+        hit = memo.get(e)
+        if hit is not None:
+            return hit
+        if e in rule:
+            out = rule[e]
+        elif not e.args or isinstance(e, sp.Symbol):
+            out = e
+        else:
+            args = tuple(walk(a) for a in e.args)
+            if all(a is b for a, b in zip(args, e.args, strict=True)):
+                out = e
+            elif isinstance(e, sp.Add | sp.Mul):
+                # Replacing leaves by leaves keeps sums and products as they are: skip the
+                # canonical re-sorting that dominates the cost of rebuilding them.
+                out = e.func(*args, evaluate=False)
+            else:
+                out = e.func(*args)
+        memo[e] = out
+        return out
+
+    return [walk(sp.sympify(e)) for e in exprs]

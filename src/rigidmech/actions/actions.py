@@ -1,0 +1,243 @@
+"""Mechanical actions exerted on solids (book, ch. 11-12): forces, couples, gravity, springs.
+
+Every mechanical action is represented by an action torsor {R ; M(A)} (ch. 11.1.2). An action
+object of this module describes *which* torsors act on *which* solids; the dynamics layer
+asks it for its contributions when it writes the fundamental principle. The power of an action
+on a solid S relative to R is the comoment of its torsor with the kinematic torsor {V(S/R)}
+(ch. 11.3.1), see :func:`power`.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError
+from ..kinematics import Solid
+from ..torsors import Torsor, couple, slider
+from ..vectors import Point, Vector
+from ..vectors.points import check_point
+
+__all__ = ["Action", "Force", "Couple", "Gravity", "gravity", "Spring", "power"]
+
+
+def _check_solid(s, argument):
+    if not isinstance(s, Solid):
+        raise ArgumentTypeError(f"`{argument}` must be a Body; got {type(s).__name__}.")
+
+
+def _check_vector(v, argument):
+    if isinstance(v, Point):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a Vector; got the Point {v.name}. Use a bipoint B - A.")
+    if not isinstance(v, Vector):
+        raise ArgumentTypeError(f"`{argument}` must be a Vector; got {type(v).__name__}.")
+
+
+class Action:
+    """Base of the mechanical actions known to a system (ch. 11.1).
+
+    Subclasses implement :meth:`contributions`, the list of ``(solid, torsor)`` pairs the
+    action exerts, and may implement :meth:`potential_energy` (ch. 11.3.3).
+    """
+
+    __slots__ = ()
+
+    def contributions(self, solids):
+        """Pairs (solid, action torsor on that solid) for the given solids."""
+        raise NotImplementedError
+
+    def potential_energy(self, solids, frame):
+        """Potential energy relative to ``frame`` (ch. 11.3.3), or None if there is none."""
+        return None
+
+
+class Force(Action):
+    """A force (slider) ``vector`` applied at ``at`` on ``on`` (ch. 11.1.3).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> from rigidmech.kinematics import Solid
+    >>> R0 = Frame("R0"); S = Solid("S", frame=R0)
+    >>> F = Force(on=S, vector=2 * R0.i, at=R0.point("A", 0, 1, 0))
+    >>> F.contributions([S])[0][1].moment_at(R0.origin)
+    -2*R0.k
+    """
+
+    __slots__ = ("_on", "_vector", "_at")
+
+    def __init__(self, *, on, vector: Vector, at: Point):
+        _check_solid(on, "on")
+        _check_vector(vector, "vector")
+        check_point(at, "at")
+        self._on, self._vector, self._at = on, vector, at
+
+    def contributions(self, solids):
+        return [(self._on, slider(self._vector, self._at))]
+
+    def __repr__(self):
+        return f"Force(on={self._on.name}, vector={self._vector!r}, at={self._at.name})"
+
+
+class Couple(Action):
+    """A couple of moment ``moment`` exerted on ``on`` and, if ``reaction_on`` is given, the
+    opposite couple on that solid (a motor between two solids, ch. 11.1.4).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> from rigidmech.kinematics import Solid
+    >>> R0 = Frame("R0"); S = Solid("S", frame=R0)
+    >>> Couple(on=S, moment=3 * R0.k).contributions([S])[0][1].resultant
+    0
+    """
+
+    __slots__ = ("_on", "_moment", "_reaction_on")
+
+    def __init__(self, *, on, moment: Vector, reaction_on=None):
+        _check_solid(on, "on")
+        _check_vector(moment, "moment")
+        if reaction_on is not None:
+            _check_solid(reaction_on, "reaction_on")
+        self._on, self._moment, self._reaction_on = on, moment, reaction_on
+
+    def contributions(self, solids):
+        at = self._on.frame.origin
+        c = couple(self._moment, at)
+        out = [(self._on, c)]
+        if self._reaction_on is not None:
+            out.append((self._reaction_on, -c))
+        return out
+
+    def __repr__(self):
+        return f"Couple(on={self._on.name}, moment={self._moment!r})"
+
+
+class Gravity(Action):
+    """Uniform gravity field ``g`` acting on every solid that has a mass (ch. 12.2).
+
+    The action on a solid of mass m and mass centre G is the slider {m g ; 0}_G (ch. 12.2.2);
+    its potential energy relative to R is -m g . OG (ch. 12.2.3).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from rigidmech import Frame
+    >>> g = sp.Symbol("g")
+    >>> R0 = Frame("R0")
+    >>> gravity(-g * R0.k)
+    Gravity(-g*R0.k)
+    """
+
+    __slots__ = ("_g",)
+
+    def __init__(self, g: Vector):
+        _check_vector(g, "g")
+        self._g = g
+
+    @property
+    def field(self) -> Vector:
+        """The gravity field g."""
+        return self._g
+
+    @staticmethod
+    def _massive(solids):
+        return [s for s in solids if getattr(s, "mass", None) is not None
+                and s.mass != 0]
+
+    def contributions(self, solids):
+        return [(s, slider(s.mass * self._g, s.centre)) for s in self._massive(solids)]
+
+    def potential_energy(self, solids, frame):
+        return sp.Add(*[-s.mass * self._g.dot(s.centre - frame.origin)
+                        for s in self._massive(solids)])
+
+    def __repr__(self):
+        return f"Gravity({self._g!r})"
+
+
+def gravity(g: Vector) -> Gravity:
+    """The action of uniform gravity ``g`` on every massive solid (ch. 12.2).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> R0 = Frame("R0")
+    >>> gravity(9.81 * R0.i).field
+    9.81*R0.i
+    """
+    return Gravity(g)
+
+
+class Spring(Action):
+    """A linear spring of stiffness ``stiffness`` and free length ``free_length`` between
+    point ``a`` of solid ``on_a`` and point ``b`` of solid ``on_b`` (ch. 11.2).
+
+    ``on_a`` or ``on_b`` may be None for a point fixed in the reference. Potential energy
+    k (l - l0)^2 / 2.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from rigidmech import Frame, coordinates
+    >>> from rigidmech.kinematics import Solid
+    >>> x = coordinates("x"); k = sp.Symbol("k")
+    >>> R0 = Frame("R0"); R1 = R0.translated("R1", R0.point("P", x, 0, 0))
+    >>> S = Solid("S", frame=R1)
+    >>> sp.simplify(Spring(k, 0, a=R0.origin, b=R1.origin, on_b=S).potential_energy([S], R0))
+    k*x(t)**2/2
+    """
+
+    __slots__ = ("_k", "_l0", "_a", "_b", "_on_a", "_on_b")
+
+    def __init__(self, stiffness, free_length, *, a: Point, b: Point, on_a=None, on_b=None):
+        check_point(a, "a")
+        check_point(b, "b")
+        if on_a is None and on_b is None:
+            raise ArgumentError("`on_a` and `on_b` cannot both be None: the spring would act "
+                                "on nothing.")
+        for s, name in ((on_a, "on_a"), (on_b, "on_b")):
+            if s is not None:
+                _check_solid(s, name)
+        self._k, self._l0 = sp.sympify(stiffness), sp.sympify(free_length)
+        if self._k.is_negative:
+            raise ArgumentError(f"`stiffness` must be >= 0; got {stiffness}.")
+        self._a, self._b, self._on_a, self._on_b = a, b, on_a, on_b
+
+    def _length(self):
+        return (self._b - self._a).magnitude()
+
+    def contributions(self, solids):
+        ab = self._b - self._a
+        length = ab.magnitude()
+        tension = self._k * (length - self._l0) / length  # force on b is -tension * AB
+        out = []
+        if self._on_b is not None:
+            out.append((self._on_b, slider(-tension * ab, self._b)))
+        if self._on_a is not None:
+            out.append((self._on_a, slider(tension * ab, self._a)))
+        return out
+
+    def potential_energy(self, solids, frame):
+        return self._k * (self._length() - self._l0) ** 2 / 2
+
+
+def power(action: Torsor, motion: Torsor) -> sp.Expr:
+    """Power of an action on a solid: the comoment of the action torsor and the kinematic
+    torsor of the solid (ch. 11.3.1).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame, coordinates
+    >>> from rigidmech.kinematics import kinematic_torsor
+    >>> q = coordinates("q")
+    >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+    >>> V = kinematic_torsor(R1, relative_to=R0, at=R0.origin)
+    >>> power(couple(5 * R0.k, R0.origin), V)
+    5*Derivative(q(t), t)
+    """
+    if not isinstance(action, Torsor):
+        raise ArgumentTypeError(f"`action` must be a Torsor; got {type(action).__name__}.")
+    if not isinstance(motion, Torsor):
+        raise ArgumentTypeError(f"`motion` must be a Torsor; got {type(motion).__name__}.")
+    return action.comoment(motion)

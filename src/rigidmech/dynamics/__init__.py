@@ -1,0 +1,7 @@
+"""Part V of the book, dynamics (ch. 18-24): the fundamental principle for a set of bodies,
+equations of motion, connection actions, simulation."""
+
+from .equations import EquationsOfMotion, Simulation
+from .system import System
+
+__all__ = ["EquationsOfMotion", "Simulation", "System"]

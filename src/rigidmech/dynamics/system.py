@@ -1,0 +1,406 @@
+"""A set of bodies, their connections and actions; the fundamental principle of dynamics
+(book, ch. 18, 20).
+
+:class:`System` collects bodies joined in a tree by connections (ch. 13.2) and the actions
+exerted on them. It derives, on demand and each only once:
+
+* the equations of motion M(q) q'' = f(q, q', t), free of connection unknowns (ch. 20.2,
+  25.1.4): the fundamental principle written for each body, {D(S/R)} = {A(ext -> S)}, is
+  combined with weights given by the partial kinematic torsors {V_i(S/R)} = d{V(S/R)}/dq_i'.
+  The actions of perfect connections have zero power coefficients and drop out, leaving
+  for each parameter of situation q_i
+
+  .. math:: \\sum_S \\{\\mathcal{D}(S/R)\\}\\cdot\\{\\mathcal{V}_i(S/R)\\}
+            = \\sum_S \\{\\mathcal{A}(\\bar S \\to S)\\}\\cdot\\{\\mathcal{V}_i(S/R)\\},
+
+  where the dot is the comoment. The mass matrix is assembled directly from the partial
+  velocities (M_ij = sum m V_i.V_j + Omega_i.J_G(Omega_j)), never extracted from an
+  expanded expression, and every vector of a body is kept in the body's own basis: the cost
+  grows polynomially with the number of bodies (ARCHITECTURE.md, principle 5);
+* the action in one connection (ch. 18.2), only when asked: the fundamental principle for the
+  set of bodies carried by that connection.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.symbolic import xreplace_shared
+from ..actions import Action, Joint
+from ..kinematics import Solid
+from ..kinetics import Body
+from ..torsors import Torsor
+from ..vectors import Frame, Vector, partial_rotation_vector, t
+from ..vectors.symbols import is_coordinate
+from .equations import EquationsOfMotion
+
+__all__ = ["System"]
+
+
+def _coordinates_in(expr_iterable):
+    found = []
+    for e in expr_iterable:
+        for a in sorted(sp.sympify(e).atoms(sp.core.function.AppliedUndef), key=str):
+            if is_coordinate(a) and a not in found:
+                found.append(a)
+    return found
+
+
+def _frame_exprs(frame):
+    chain = []
+    f = frame
+    while f is not None:
+        chain.append(f)
+        f = f.parent
+    out = []
+    for g in reversed(chain):
+        out.append(g.angle)
+        if g._matrix is not None:
+            out.extend(x for row in g._matrix for x in row)
+        out.extend(x for _, c in g.origin.position.parts for x in c)
+    return out
+
+
+class System:
+    """A set of rigid bodies in a Galilean reference, their connections and actions.
+
+    Parameters
+    ----------
+    galilean : Frame
+        The Galilean reference R (ch. 18.1.2); bodies may be connected to it.
+    coordinates : sequence of q(t), optional
+        The parameters of situation, in the order of the equations. Default: those found in
+        the bodies' frames and mass centres, in the order the bodies were connected.
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> q = rm.coordinates("q"); m, L, g = rm.constants("m L g", positive=True)
+    >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+    >>> G = R0.origin.moved("G", L / 2 * R1.i)
+    >>> bar = rm.Body("bar", frame=R1, mass=m, centre=G,
+    ...               inertia=rm.inertia.rod(m, L, axis=R1.i, centre=G))
+    >>> system = System(galilean=R0)
+    >>> system.connect(R0, bar, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    >>> system.act(rm.gravity(g * R0.i))
+    >>> eqs = system.equations_of_motion()
+    >>> eqs.mass_matrix, eqs.forcing
+    (Matrix([[L**2*m/3]]), Matrix([[-L*g*m*sin(q)/2]]))
+    """
+
+    def __init__(self, galilean: Frame, coordinates=None):
+        if not isinstance(galilean, Frame):
+            raise ArgumentTypeError(
+                f"`galilean` must be a Frame; got {type(galilean).__name__}.")
+        self._galilean = galilean
+        self._ground = Solid(galilean.name, frame=galilean)
+        self._bodies: list[Body] = []
+        self._joints: dict = {}  # child body -> (parent solid, joint)
+        self._actions: list[Action] = []
+        self._given_coordinates = None
+        if coordinates is not None:
+            coords = tuple(coordinates)
+            bad = [c for c in coords if not is_coordinate(c)]
+            if bad:
+                raise ArgumentError(
+                    f"`coordinates` must be parameters of situation q(t) made with "
+                    f"rm.coordinates; got {bad}.")
+            self._given_coordinates = coords
+        self._cache: dict = {}
+
+    # -- building -----------------------------------------------------------------------
+    def _solid(self, s, argument):
+        if isinstance(s, Frame):
+            if s != self._galilean:
+                raise ConnectionError_(
+                    f"`{argument}` is the frame {s.name}; only the Galilean reference "
+                    f"{self._galilean.name} may stand for a solid. Pass a Body.")
+            return self._ground
+        if not isinstance(s, Body):
+            raise ArgumentTypeError(
+                f"`{argument}` must be a Body or the Galilean frame; got {type(s).__name__}.")
+        return s
+
+    def add(self, body: Body) -> None:
+        """Add a body that is not connected to anything (a free body, ch. 18.4).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> P = R0.point("P", *rm.coordinates("x y z"))
+        >>> s.add(rm.Body("b", frame=R0.translated("R1", P), mass=1))
+        >>> len(s.bodies)
+        1
+        """
+        body = self._solid(body, "body")
+        if body is self._ground:
+            raise ConnectionError_("the Galilean reference is not a body to add.")
+        if body in self._bodies:
+            raise ConnectionError_(f"body {body.name} is already in the system.")
+        if body.frame.root != self._galilean.root:
+            raise ConnectionError_(
+                f"body {body.name} is attached to frame {body.frame.name} of another tree "
+                f"than {self._galilean.name}.")
+        self._bodies.append(body)
+        self._cache.clear()
+
+    def connect(self, parent, child, joint: Joint) -> None:
+        """Connect ``child`` to ``parent`` (a Body or the Galilean frame) by ``joint``.
+
+        The joint is checked against the frames: the relative motion of the child must be
+        one the joint allows (ch. 13.2.2).
+        """
+        parent = self._solid(parent, "parent")
+        child = self._solid(child, "child")
+        if not isinstance(joint, Joint):
+            raise ArgumentTypeError(
+                f"`joint` must be a connection from rm.joints; got {type(joint).__name__}.")
+        if child is self._ground:
+            raise ConnectionError_(
+                "`child` cannot be the Galilean reference: connect bodies to it as parent.")
+        if child in self._joints:
+            raise ConnectionError_(
+                f"body {child.name} already has a parent connection; the connections of a "
+                "System form a tree (closed loops are not supported yet).")
+        if parent is not self._ground and parent not in self._bodies:
+            raise ConnectionError_(
+                f"connect the parent {parent.name} before its children.")
+        R = self._galilean
+        at = joint.at
+        motion = child.kinematic_torsor(relative_to=R, at=at) + (
+            -parent.kinematic_torsor(relative_to=R, at=at))
+        joint.check(motion)
+        if child not in self._bodies:
+            self.add(child)
+        self._joints[child] = (parent, joint)
+        self._cache.clear()
+
+    def act(self, action: Action) -> None:
+        """Add an external or internal action (gravity, force, couple, spring, ...)."""
+        if not isinstance(action, Action):
+            raise ArgumentTypeError(
+                f"`action` must be an Action (rm.gravity, rm.actions.Force, ...); got "
+                f"{type(action).__name__}.")
+        self._actions.append(action)
+        self._cache.clear()
+
+    # -- read-only views ----------------------------------------------------------------
+    @property
+    def galilean(self) -> Frame:
+        """The Galilean reference."""
+        return self._galilean
+
+    @property
+    def bodies(self) -> tuple:
+        """The bodies, in the order they were added."""
+        return tuple(self._bodies)
+
+    @property
+    def actions(self) -> tuple:
+        """The actions exerted on the bodies."""
+        return tuple(self._actions)
+
+    @property
+    def coordinates(self) -> tuple:
+        """The parameters of situation q(t) in the order of the equations."""
+        if self._given_coordinates is not None:
+            return self._given_coordinates
+        exprs = []
+        for b in self._bodies:
+            exprs.extend(_frame_exprs(b.frame))
+            exprs.extend(x for _, c in b.centre.position.parts for x in c)
+        found = _coordinates_in(exprs)
+        if not found:
+            raise ArgumentError("the system has no parameter of situation: nothing moves.")
+        return tuple(found)
+
+    # -- derivations --------------------------------------------------------------------
+    def _symbols(self):
+        if "symbols" not in self._cache:
+            qs = self.coordinates
+            names = [q.func.__name__ for q in qs]
+            q_sym = tuple(sp.Symbol(n, real=True) for n in names)
+            u_sym = tuple(sp.Symbol(n + "_dot", real=True) for n in names)
+            a_sym = tuple(sp.Symbol(n + "_ddot", real=True) for n in names)
+            rule = {}
+            for q, qs_, us, as_ in zip(qs, q_sym, u_sym, a_sym, strict=True):
+                rule[q.diff(t, 2)] = as_
+                rule[q.diff(t)] = us
+                rule[q] = qs_
+            self._cache["symbols"] = (q_sym, u_sym, a_sym, rule)
+        return self._cache["symbols"]
+
+    def _contributions(self):
+        if "contributions" not in self._cache:
+            solids = [self._ground, *self._bodies]
+            out = []
+            for action in self._actions:
+                for solid, torsor in action.contributions(solids):
+                    if solid is not self._ground:
+                        out.append((solid, torsor, action))
+            self._cache["contributions"] = out
+        return self._cache["contributions"]
+
+    def _partials(self, solid, point):
+        """Partial kinematic torsor elements (Omega_i, V_i(point)) of ``solid`` for each
+        parameter q_i, in function form (ch. 25.1.2).
+
+        V_i(P) = d(O_R P)/dq_i |_R for the anchor of the solid, transported to P with
+        Omega_i = d omega / d q_i': no differentiation of velocity expressions is needed.
+        """
+        key = ("partials", solid.name, point)
+        if key not in self._cache:
+            R = self._galilean
+            anchor_pos = solid.anchor - R.origin
+            out = []
+            for q in self.coordinates:
+                W = partial_rotation_vector(solid.frame, R, q)
+                V = anchor_pos.diff(q, R)
+                if point != solid.anchor and not W.is_zero:
+                    V = V + W.cross(point - solid.anchor)
+                out.append((W, V))
+            self._cache[key] = out
+        return self._cache[key]
+
+    def equations_of_motion(self) -> EquationsOfMotion:
+        """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns.
+
+        Derived once and cached; no connection action is derived (ARCHITECTURE.md,
+        principle 4). Nothing is simplified: ask for it on the result if wanted.
+        """
+        if "eom" in self._cache:
+            return self._cache["eom"]
+        R = self._galilean
+        q_sym, u_sym, a_sym, rule = self._symbols()
+        n = len(q_sym)
+        no_acc = {q.diff(t, 2): 0 for q in self.coordinates}
+        M = [[sp.S.Zero] * n for _ in range(n)]
+        f = [sp.S.Zero] * n
+        for body in self._bodies:
+            if not body.mass:
+                continue
+            parts = self._partials(body, body.centre)
+            m = body.mass
+            # accelerations without the q'' terms (they make up M q'')
+            a0 = body.centre.velocity(R).dt(R).xreplace(no_acc)
+            J = body.inertia
+            if J is not None:
+                w = body.rotation_vector(R)
+                d0 = J.apply(w).dt(R).xreplace(no_acc)
+                JW = [J.apply(Wi) if not Wi.is_zero else Vector.zero() for Wi, _ in parts]
+            for i in range(n):
+                Wi, Vi = parts[i]
+                if Wi.is_zero and Vi.is_zero:
+                    continue
+                f[i] -= m * a0.dot(Vi) + (d0.dot(Wi) if J is not None else 0)
+                for j in range(i, n):
+                    Wj, Vj = parts[j]
+                    term = m * Vi.dot(Vj) + (JW[j].dot(Wi) if J is not None else 0)
+                    if term != 0:
+                        M[i][j] += term
+        for solid, torsor, _ in self._contributions():
+            parts = self._partials(solid, torsor.point)
+            for i in range(n):
+                Wi, Vi = parts[i]
+                f[i] += torsor.resultant.dot(Vi) + torsor.moment.dot(Wi)
+        memo = {}
+        upper = xreplace_shared([M[i][j] for i in range(n) for j in range(i, n)], rule, memo)
+        fx = xreplace_shared(f, rule, memo)
+        k = 0
+        for i in range(n):
+            for j in range(i, n):
+                M[i][j] = M[j][i] = upper[k]
+                k += 1
+        eqs = EquationsOfMotion(
+            coordinates=self.coordinates, q=q_sym, u=u_sym,
+            mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(n, 1, fx),
+            energy=self._energy_expr)
+        self._cache["eom"] = eqs
+        return eqs
+
+    def _energy_expr(self):
+        """Total mechanical energy T + V in symbol form, or None if an action has no
+        potential."""
+        _, _, _, rule = self._symbols()
+        T = sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
+        V = []
+        for action in self._actions:
+            pe = action.potential_energy([self._ground, *self._bodies], self._galilean)
+            if pe is None:
+                return None
+            V.append(pe)
+        return xreplace_shared([T + sp.Add(*V)], rule)[0]
+
+    def kinetic_energy(self):
+        """Kinetic energy of the set of bodies relative to the Galilean reference (ch. 16.3.3),
+        in terms of q(t) and q'(t)."""
+        return sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
+
+    def generalized_forces(self):
+        """Power coefficients Q_i of the given actions (ch. 25.1.3), in symbol form
+        (q_i, q_i_dot): the power of the actions is sum Q_i q_i'."""
+        q_sym, _, _, rule = self._symbols()
+        Q = [sp.S.Zero] * len(q_sym)
+        for solid, torsor, _ in self._contributions():
+            parts = self._partials(solid, torsor.point)
+            for i, (Wi, Vi) in enumerate(parts):
+                Q[i] += torsor.resultant.dot(Vi) + torsor.moment.dot(Wi)
+        return sp.ImmutableMatrix(len(q_sym), 1, xreplace_shared(Q, rule))
+
+    def symbols(self):
+        """The symbols standing for q, q' and q'' in derived expressions, and the rule that
+        replaces q(t) and its derivatives by them."""
+        return self._symbols()
+
+    # -- connection actions -------------------------------------------------------------
+    def _subtree(self, body):
+        out = [body]
+        for child, (parent, _) in self._joints.items():
+            if parent is body:
+                out.extend(self._subtree(child))
+        return out
+
+    def connection_action(self, parent, child) -> Torsor:
+        """The action exerted by ``parent`` on ``child`` through their connection (ch. 18.2),
+        reduced at the joint's point, in symbol form (q, q_dot, q_ddot).
+
+        Derived only now, from the fundamental principle for the bodies carried by the
+        connection: {A(parent -> child)} = sum over the carried bodies of their dynamic
+        torsors minus the other actions exerted on them.
+        """
+        parent = self._solid(parent, "parent")
+        child = self._solid(child, "child")
+        if self._joints.get(child, (None,))[0] is not parent:
+            raise ConnectionError_(
+                f"there is no connection from {parent.name} to {child.name}.")
+        key = ("action", child.name)
+        if key not in self._cache:
+            _, _, _, rule = self._symbols()
+            joint = self._joints[child][1]
+            P = joint.at
+            carried = self._subtree(child)
+            total = Torsor.zero(P)
+            for b in carried:
+                if b.mass:
+                    total = total + b.dynamic_torsor(self._galilean, at=P)
+            for solid, torsor, _ in self._contributions():
+                if solid in carried:
+                    total = total - torsor
+            memo = {}
+            self._cache[key] = Torsor(
+                total.resultant.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]),
+                total.moment.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]), P)
+        return self._cache[key]
+
+    def joint(self, child):
+        """The (parent solid, joint) of a body."""
+        child = self._solid(child, "child")
+        if child not in self._joints:
+            raise ConnectionError_(f"body {child.name} has no parent connection.")
+        return self._joints[child]
+
+    def __repr__(self):
+        return (f"System(galilean={self._galilean.name}, bodies={[b.name for b in self._bodies]}, "
+                f"actions={len(self._actions)})")

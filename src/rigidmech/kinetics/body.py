@@ -1,0 +1,177 @@
+"""Bodies with mass and their kinetic and dynamic torsors, kinetic energy (book, ch. 16).
+
+For a body S of mass m, mass centre G and operator of inertia J_G, moving relative to R
+(ch. 16.1.2, 16.2.2, 16.3.2):
+
+.. math::
+    \\{\\mathcal{C}(S/R)\\} = \\{ m\\,\\mathbf{v}(G/R) \\;;\\; \\boldsymbol{\\sigma}(G) =
+    \\mathcal{J}_G(\\boldsymbol{\\omega}) \\},\\qquad
+    \\{\\mathcal{D}(S/R)\\} = \\{ m\\,\\mathbf{a}(G/R) \\;;\\; \\boldsymbol{\\delta}(G) =
+    \\left.\\tfrac{d\\boldsymbol{\\sigma}(G)}{dt}\\right|_R \\},
+
+    E_k(S/R) = \\tfrac12 m\\,\\mathbf{v}(G/R)^2 + \\tfrac12\\,\\boldsymbol{\\omega}\\cdot
+    \\mathcal{J}_G(\\boldsymbol{\\omega}).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError
+from ..inertia import InertiaOperator
+from ..kinematics import Solid
+from ..torsors import Torsor
+from ..vectors import Frame, Point, Vector
+from ..vectors.points import check_point
+
+__all__ = ["Body"]
+
+
+class Body(Solid):
+    """A rigid body: attached frame, mass, mass centre and operator of inertia (ch. 15-16).
+
+    Parameters
+    ----------
+    name : str
+    frame : Frame
+        The frame attached to the body.
+    mass : scalar, optional
+        The mass m >= 0 (None for a massless solid, which carries no inertia).
+    centre : Point, optional
+        The mass centre G; defaults to the origin of ``frame``.
+    inertia : InertiaOperator, optional
+        The operator of inertia, given at G or at any point of the body (it is moved to G
+        by the relations of Huygens), in a basis fixed in the body. Defaults to zero (a
+        particle).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> import rigidmech as rm
+    >>> q = rm.coordinates("q"); m, L = rm.constants("m L", positive=True)
+    >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+    >>> G = R0.origin.moved("G", L / 2 * R1.i)
+    >>> bar = Body("bar", frame=R1, mass=m, centre=G,
+    ...            inertia=rm.inertia.rod(m, L, axis=R1.i, centre=G))
+    >>> sp.factor(bar.kinetic_energy(R0))
+    L**2*m*Derivative(q(t), t)**2/6
+    """
+
+    __slots__ = ("_mass", "_centre", "_inertia")
+
+    def __init__(self, name: str, frame: Frame, *, mass=None, centre: Point | None = None,
+                 inertia: InertiaOperator | None = None):
+        super().__init__(name, frame)
+        if mass is not None:
+            try:
+                mass = sp.sympify(mass)
+            except (sp.SympifyError, TypeError) as exc:
+                raise ArgumentTypeError(
+                    f"`mass` must be a number or a symbol; got {type(mass).__name__}.") from exc
+            if mass.is_negative or (mass.is_number and mass.is_real and mass < 0):
+                raise ArgumentError(f"`mass` must be >= 0; got {mass}.")
+        if centre is None:
+            centre = frame.origin
+        check_point(centre, "centre")
+        if inertia is not None and not isinstance(inertia, InertiaOperator):
+            raise ArgumentTypeError(
+                f"`inertia` must be an InertiaOperator (see rigidmech.inertia); got "
+                f"{type(inertia).__name__}."
+            )
+        if inertia is not None and mass is None:
+            raise ArgumentError("`inertia` given without `mass`: give the body's mass too.")
+        if inertia is not None:
+            if inertia.at != centre:
+                inertia = inertia.moved(centre, mass=mass, centre=centre)
+            if inertia.frame != frame:
+                inertia = inertia.in_basis(frame)
+        self._mass = mass
+        self._centre = centre
+        self._inertia = inertia
+
+    @property
+    def mass(self):
+        """The mass m (None for a massless solid)."""
+        return self._mass
+
+    @property
+    def centre(self) -> Point:
+        """The mass centre G."""
+        return self._centre
+
+    @property
+    def anchor(self) -> Point:
+        """The mass centre G: the point from which the velocity field is built."""
+        return self._centre
+
+    @property
+    def inertia(self):
+        """The operator of inertia at G in the body's basis (None for a particle)."""
+        return self._inertia
+
+    def _angular_momentum_at_centre(self, w: Vector) -> Vector:
+        if self._inertia is None:
+            return Vector.zero()
+        return self._inertia.apply(w)
+
+    def kinetic_torsor(self, relative_to: Frame, at: Point | None = None) -> Torsor:
+        """{C(S/R)} = {m v(G/R) ; sigma(G) = J_G(omega)}, reduced at ``at`` (ch. 16.1.2).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> R0 = rm.Frame("R0"); R1 = R0.translated("R1", R0.point("P", x, 0, 0))
+        >>> Body("b", frame=R1, mass=2).kinetic_torsor(R0).resultant
+        2*Derivative(x(t), t)*R0.i
+        """
+        self._need_mass("kinetic_torsor")
+        w = self.rotation_vector(relative_to)
+        v = self._centre.velocity(relative_to)
+        T = Torsor(self._mass * v, self._angular_momentum_at_centre(w), self._centre)
+        return T if at is None else T.at(at)
+
+    def dynamic_torsor(self, relative_to: Frame, at: Point | None = None) -> Torsor:
+        """{D(S/R)} = {m a(G/R) ; delta(G) = d/dt|R sigma(G)}, reduced at ``at``
+        (ch. 16.2.2).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> q = rm.coordinates("q")
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> b = Body("b", frame=R1, mass=1, centre=R0.origin.moved("G", R1.i))
+        >>> b.dynamic_torsor(R0).resultant
+        -Derivative(q(t), t)**2*R1.i + Derivative(q(t), (t, 2))*R1.j
+        """
+        self._need_mass("dynamic_torsor")
+        w = self.rotation_vector(relative_to)
+        a = self._centre.acceleration(relative_to)
+        delta = self._angular_momentum_at_centre(w).dt(relative_to)
+        T = Torsor(self._mass * a, delta, self._centre)
+        return T if at is None else T.at(at)
+
+    def kinetic_energy(self, relative_to: Frame) -> sp.Expr:
+        """E_k(S/R) = m v(G)^2 / 2 + omega . J_G(omega) / 2 (ch. 16.3.2).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> R0 = rm.Frame("R0"); R1 = R0.translated("R1", R0.point("P", x, 0, 0))
+        >>> Body("b", frame=R1, mass=2).kinetic_energy(R0)
+        Derivative(x(t), t)**2
+        """
+        self._need_mass("kinetic_energy")
+        w = self.rotation_vector(relative_to)
+        v = self._centre.velocity(relative_to)
+        return (self._mass * v.dot(v) + w.dot(self._angular_momentum_at_centre(w))) / 2
+
+    def _need_mass(self, what):
+        if self._mass is None:
+            raise ArgumentError(
+                f"`{what}` needs the mass of body {self._name}; create it with mass=...")
+
+    def __repr__(self):
+        return (f"Body({self._name!r}, frame={self._frame.name}, mass={self._mass}, "
+                f"centre={self._centre.name})")
