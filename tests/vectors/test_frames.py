@@ -273,6 +273,20 @@ def test_frame_reprs():
         "<Frame 'G': general rotation from 'R0'>")
 
 
+def test_regression_frame_repr_shows_a_moved_origin():
+    # the origin is part of the value: two unequal frames used to print the same, and a
+    # translated frame printed as a rotation by 0
+    R0 = Frame("R0")
+    A = R0.point("A", 1, 0, 0)
+    assert repr(R0.translated("T", A)) == "R0.translated('T', A)"
+    assert repr(R0.rotated("R1", about=R0.k, angle=q1, origin=A)) == (
+        "R0.rotated('R1', about=R0.k, angle=q1(t), origin=A)")
+    assert repr(R0.rotated("G", about=R0.i + R0.j, angle=q1, origin=A)) == (
+        "<Frame 'G': general rotation from 'R0', origin=A>")
+    T = R0.translated("T", A)
+    assert repr(T.rotated("R2", about=T.i, angle=q2)) == "T.rotated('R2', about=T.i, angle=q2(t))"
+
+
 def test_frames_are_immutable():
     R0 = Frame("R0")
     R1 = R0.rotated("R1", about=R0.k, angle=q1)

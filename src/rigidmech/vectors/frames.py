@@ -280,10 +280,15 @@ class Frame(FrameBase):
     def __repr__(self):
         if self._parent is None:
             return f"Frame({self._name!r})"
+        parent = self._parent._name
+        moved = self._origin != self._parent._origin
+        origin = f", origin={self._origin.name}" if moved else ""
         if self._axis is not None:
-            return (f"{self._parent._name}.rotated({self._name!r}, "
-                    f"about={self._parent._name}.{_AXES[self._axis]}, angle={self._angle})")
-        return f"<Frame {self._name!r}: general rotation from {self._parent._name!r}>"
+            if moved and self._angle == 0:
+                return f"{parent}.translated({self._name!r}, {self._origin.name})"
+            return (f"{parent}.rotated({self._name!r}, about={parent}.{_AXES[self._axis]}, "
+                    f"angle={self._angle}{origin})")
+        return f"<Frame {self._name!r}: general rotation from {parent!r}{origin}>"
 
 
 def _sympify(x, argument):
