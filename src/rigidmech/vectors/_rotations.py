@@ -139,7 +139,7 @@ def path_to_ancestor(frame, ancestor):
     """Frames from just below ``ancestor`` down to ``frame``, in that order."""
     path = []
     f = frame
-    while f is not ancestor:
+    while f is not ancestor and f != ancestor:
         path.append(f)
         f = f._parent
     path.reverse()
