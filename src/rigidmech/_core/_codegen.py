@@ -43,6 +43,7 @@ class _MathPrinter(PythonCodePrinter):
     * a non-integer power prints as ``math.pow(b, e)``, which raises ``ValueError`` for a
       negative base instead of silently returning a complex number as ``b ** e`` does; the
       caller then re-evaluates with numpy (giving ``nan`` like the vectorised path);
+    * small integer powers of a symbol print as products (``x*x``), faster for floats;
     * a function the ``math`` module lacks (``re``, ``besselj``, ...) prints with the
       scipy/numpy printer: it still works on floats, only slower.
     """
@@ -53,6 +54,10 @@ class _MathPrinter(PythonCodePrinter):
 
     def _print_Pow(self, expr, rational=False):
         exponent = expr.exp
+        if expr.base.is_Symbol and exponent in (2, 3, -2):
+            # Python float multiplication costs about a third of float ** int
+            product = "*".join([self._print(expr.base)] * abs(int(exponent)))
+            return f"(1/({product}))" if exponent < 0 else f"({product})"
         if exponent.is_Integer or exponent in (sympy.S.Half, -sympy.S.Half):
             return super()._print_Pow(expr, rational=rational)
         if exponent.is_number:
