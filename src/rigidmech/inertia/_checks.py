@@ -42,7 +42,7 @@ def scalar(x, argument):
             f"`{argument}` must be a scalar (number or sympy expression); "
             f"got {type(x).__name__}."
         )
-    if value.is_number and (value.is_finite is False or value.is_real is False):
+    if value.is_number and (value.is_finite is not True or value.is_real is False):
         raise ArgumentError(f"`{argument}` must be a finite real number; got {x}.")
     return value
 
