@@ -12,6 +12,7 @@ from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
 from .kinematics import KinematicTorsor, Solid, kinematic_torsor
 from .kinetics import Body
+from .lagrange import lagrange_equations
 from .torsors import Torsor, couple, slider
 from .vectors import Frame, Point, Vector, constants, coordinates, cross, dot, mixed, t
 
@@ -24,6 +25,6 @@ __all__ = [
     "Force", "Couple", "Spring", "gravity", "power", "joints", "actions",
     "InertiaOperator", "inertia",
     "Body",
-    "System", "EquationsOfMotion", "Simulation",
+    "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode",
 ]

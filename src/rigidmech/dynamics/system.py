@@ -316,11 +316,11 @@ class System:
         eqs = EquationsOfMotion(
             coordinates=self.coordinates, q=q_sym, u=u_sym,
             mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(n, 1, fx),
-            energy=self._energy_expr)
+            energy=self.mechanical_energy)
         self._cache["eom"] = eqs
         return eqs
 
-    def _energy_expr(self):
+    def mechanical_energy(self):
         """Total mechanical energy T + V in symbol form, or None if an action has no
         potential."""
         _, _, _, rule = self._symbols()
@@ -393,6 +393,18 @@ class System:
                 total.resultant.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]),
                 total.moment.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]), P)
         return self._cache[key]
+
+    def connection_components(self, parent, child) -> dict:
+        """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
+        joint's local basis (u, v, w), moment at the joint's point, in symbol form
+        (q, q_dot, q_ddot). For a perfect joint the components it cannot transmit (N for a
+        pivot) vanish once q'' satisfies the equations of motion.
+        """
+        T = self.connection_action(parent, child)
+        joint = self._joints[self._solid(child, "child")][1]
+        _, _, _, rule = self._symbols()
+        comps = joint.components(T)
+        return dict(zip(comps, xreplace_shared(list(comps.values()), rule), strict=True))
 
     def joint(self, child):
         """The (parent solid, joint) of a body."""
