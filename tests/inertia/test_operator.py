@@ -408,3 +408,17 @@ def test_block_operator_from_repr_round_trip():
     J = block(12, 1, 2, 3, frame=R0)
     assert eval(repr(J), {"InertiaOperator": InertiaOperator, "R0": R0,
                           "O_R0": R0.origin}) == J
+
+
+@pytest.mark.parametrize(
+    ("s", "b"),
+    [([0.0, 9.316005037897453e-284, 0.0], [0.0, 0.0, 1.0]),
+     ([0.0, 0.0, 0.0], [0.0, 2.5, 6.77513616983262e-199])],
+)
+def test_moving_back_to_the_centre_tolerates_cancellation(s, b):
+    # regression (found by hypothesis): a nearly-zero operator at G, moved to B and back; the
+    # round-off tolerance must be relative to the operator at B, not to the near-zero result
+    G, B = R0.origin, R0.point("B", *b)
+    JG = random_operator(s, [0.0, 0.0, 0.0], at=G)
+    back = JG.moved(B, mass=3.0, centre=G).moved(G, mass=3.0, centre=G)
+    assert back.is_close(JG, rtol=RTOL, atol=1e-12)

@@ -87,16 +87,22 @@ def _numeric(matrix):
     return None
 
 
-def check_inertia(matrix, argument, *, products=False):
+def check_inertia(matrix, argument, *, products=False, scale=None):
     """Raise ArgumentError unless the symmetric ``matrix`` can be an operator of inertia.
 
     ``products=True`` words the messages for :meth:`InertiaOperator.from_products`
-    (arguments ``A``, ``B``, ``C``); otherwise they name ``argument``.
+    (arguments ``A``, ``B``, ``C``); otherwise they name ``argument``. ``scale``, a matrix,
+    sets the size of the round-off tolerance when ``matrix`` is a difference (a hole, the
+    operator brought back to the mass centre) whose entries may cancel to nearly zero.
     """
     diag = [matrix[n, n] for n in range(3)]
     values = _numeric(matrix)
     if values is not None:
-        tol = REL_TOL * float(np.max(np.abs(values)))
+        size = float(np.max(np.abs(values)))
+        reference = None if scale is None else _numeric(scale)
+        if reference is not None:
+            size = max(size, float(np.max(np.abs(reference))))
+        tol = REL_TOL * size
         negative = [n for n in range(3) if values[n, n] < -tol]
         triangle = [n for n in range(3)
                     if values[n, n] > values[(n + 1) % 3, (n + 1) % 3]
@@ -125,7 +131,6 @@ def check_inertia(matrix, argument, *, products=False):
         )
     if values is not None:
         principal = np.linalg.eigvalsh(values)
-        tol = REL_TOL * max(float(np.max(np.abs(principal))), 0.0)
         if principal[0] < -tol or principal[2] > principal[0] + principal[1] + tol:
             got = ", ".join(f"{x:.6g}" for x in principal)
             if products:

@@ -436,7 +436,7 @@ class InertiaOperator:
         if back is not None:
             J = J - sp.ImmutableMatrix(back)
             try:
-                check_inertia(J, "mass")
+                check_inertia(J, "mass", scale=self._matrix)
             except ArgumentError as exc:
                 raise ArgumentError(
                     f"`mass` and `centre` do not fit this operator at {self._at.name}: "
@@ -507,7 +507,7 @@ class InertiaOperator:
             return NotImplemented
         M = self._check_common_point(other, "subtract")
         matrix = self._matrix - M
-        check_inertia(matrix, "other")
+        check_inertia(matrix, "other", scale=self._matrix)
         return InertiaOperator._make(matrix, self._frame, self._at)
 
     def __mul__(self, scalar_):
