@@ -1,0 +1,25 @@
+"""Ready-made systems from the book, the run pipeline and the command line (book, ch. 27).
+
+* :mod:`~rigidmech.scenes.catalogue`: immutable :class:`Scene` descriptions of systems the book
+  studies (compound pendulum, double pendulum, pendulum on a slide, mass on a spring), each with
+  its parameters, default state and a builder of the :class:`~rigidmech.dynamics.System`;
+* :mod:`~rigidmech.scenes.pipeline`: :func:`run` derives, compiles and integrates a scene,
+  follows its energy and times each stage (:class:`RunReport`);
+* :mod:`~rigidmech.scenes.cli`: ``python -m rigidmech run NAME`` and ``python -m rigidmech
+  scenes``.
+
+Examples
+--------
+>>> from rigidmech import scenes
+>>> scenes.names()
+('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass')
+>>> rep = scenes.run("double-pendulum", t_end=0.5)
+>>> rep.scene.section, rep.energy_drift < 1e-8
+('ch. 25.4.3, 27.5', True)
+"""
+
+from .catalogue import Built, Parameter, Scene, catalogue, get, names
+from .pipeline import RunReport, equations_text, plot_simulation, run
+
+__all__ = ["Scene", "Parameter", "Built", "catalogue", "get", "names", "RunReport", "run",
+           "equations_text", "plot_simulation"]

@@ -1,0 +1,162 @@
+"""The command line: ``python -m rigidmech run NAME`` and ``python -m rigidmech scenes``
+(book, ch. 27).
+
+``run`` prints the scene's title and book section, its equations of motion M(q) q'' = f,
+integrates them, and prints the final state, the energy drift and the timings of each stage
+(derive, compile, integrate, in ms, with the number of evaluations); ``--plot out.png`` writes a
+figure (headless). ``scenes`` lists the catalogue. Without a NAME, ``run`` runs the default
+scene, ``double-pendulum``.
+
+Misuse (unknown scene, parameter or method, malformed value, wrong number of initial values)
+prints one line ``rigidmech: error: ...`` on stderr and exits with status 2; a failed
+integration exits with status 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+
+from .. import ode
+from .._core.errors import NumericalError, RigidmechError, SceneError
+from .catalogue import catalogue, get, names
+from .pipeline import run
+
+__all__ = ["main", "DEFAULT_SCENE"]
+
+#: The scene ``python -m rigidmech run`` runs when no NAME is given.
+DEFAULT_SCENE = "double-pendulum"
+
+
+class _UsageError(Exception):
+    """Raised instead of argparse's print-usage-and-exit, to print one line."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        raise _UsageError(message)
+
+
+def _param(text):
+    name, sep, value = text.partition("=")
+    name = name.strip()
+    if not sep or not name.isidentifier():
+        raise argparse.ArgumentTypeError(
+            f"expected NAME=VALUE (e.g. --param m=2); got {text!r}")
+    try:
+        number = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"the value of {name} must be a number; got {value!r}") from None
+    return name, number
+
+
+def _floats(text):
+    try:
+        return tuple(float(x) for x in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"expected comma-separated numbers such as 2.0,-0.2; got {text!r}") from None
+
+
+def _join_negative_values(argv):
+    """``--q0 -0.5,0.2`` -> ``--q0=-0.5,0.2``: argparse would take ``-0.5,0.2`` for an
+    option."""
+    out, i = [], 0
+    while i < len(argv):
+        a = argv[i]
+        if (a in ("--q0", "--u0") and i + 1 < len(argv)
+                and re.match(r"-[\d.]", argv[i + 1])):
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+        else:
+            out.append(a)
+            i += 1
+    return out
+
+
+def _parser():
+    p = _Parser(prog="rigidmech", description="Mechanics of rigid bodies after J.-M. "
+                "Berthelot's textbook: run the book's systems from the command line.")
+    sub = p.add_subparsers(dest="command", metavar="{run,scenes}")
+    sub.required = True
+    r = sub.add_parser("run", help="derive, integrate and report a scene",
+                       description="Derive the equations of motion of a scene, integrate them "
+                       "and report the energy drift and the timings.")
+    r.add_argument("name", nargs="?", default=DEFAULT_SCENE, metavar="NAME",
+                   help=f"scene name (default {DEFAULT_SCENE}); one of {', '.join(names())}")
+    r.add_argument("--t-end", type=float, metavar="T", help="duration in seconds")
+    r.add_argument("--method", metavar="M",
+                   help=f"integration method, one of {', '.join(ode.methods())}")
+    r.add_argument("--rtol", type=float, metavar="R", help="relative tolerance")
+    r.add_argument("--atol", type=float, metavar="A", help="absolute tolerance")
+    r.add_argument("--step", type=float, metavar="H", help="step of a fixed-step method")
+    r.add_argument("--param", type=_param, action="append", default=[], metavar="NAME=VALUE",
+                   help="override a parameter, e.g. --param m=2 (repeatable)")
+    r.add_argument("--q0", type=_floats, metavar="Q",
+                   help="initial coordinates, comma-separated, e.g. --q0 2.0,-0.2")
+    r.add_argument("--u0", type=_floats, metavar="U",
+                   help="initial velocities q', comma-separated")
+    r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
+    r.add_argument("--pretty", action="store_true",
+                   help="print the equations with sympy's 2-D pretty printer")
+    sub.add_parser("scenes", help="list the catalogue of ready-made systems",
+                   description="List the catalogue of ready-made systems.")
+    return p
+
+
+def _list_scenes(out):
+    rows = [("name", "title", "book", "dof", "parameters")]
+    for s in catalogue():
+        params = " ".join(f"{p.name}={p.default:g}" for p in s.parameters)
+        rows.append((s.name, s.title, s.section, str(s.dof), params))
+    widths = [max(len(r[i]) for r in rows) for i in range(4)]
+    for r in rows:
+        print("  ".join(c.ljust(w) for c, w in zip(r[:4], widths, strict=True)) + "  " + r[4],
+              file=out)
+
+
+def _run(args, out):
+    get(args.name)  # unknown scene: fail before anything else
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    report = run(args.name, t_end=args.t_end, params=params, q0=args.q0, u0=args.u0,
+                 method=args.method, rtol=args.rtol, atol=args.atol, step=args.step,
+                 plot=args.plot)
+    print(report.summary(pretty=args.pretty), file=out)
+
+
+def main(argv=None) -> int:
+    """Run the command line with ``argv`` (default ``sys.argv[1:]``); return the exit status.
+
+    Examples
+    --------
+    >>> main(["scenes"])                                  # doctest: +ELLIPSIS
+    name  ...
+    simple-pendulum  ...
+    0
+    """
+    out, err = sys.stdout, sys.stderr
+    try:
+        argv = sys.argv[1:] if argv is None else list(argv)
+        args = _parser().parse_args(_join_negative_values(argv))
+        if args.command == "scenes":
+            _list_scenes(out)
+        else:
+            _run(args, out)
+    except SystemExit as exc:  # --help
+        return exc.code if isinstance(exc.code, int) else 0
+    except _UsageError as exc:
+        print(f"rigidmech: error: {exc}", file=err)
+        return 2
+    except NumericalError as exc:
+        print(f"rigidmech: integration failed: {exc}", file=err)
+        return 1
+    except RigidmechError as exc:
+        print(f"rigidmech: error: {exc}", file=err)
+        return 2
+    return 0

@@ -1,0 +1,314 @@
+"""The run pipeline of a scene: derive, compile, integrate, check the energy, plot (book,
+ch. 27.2).
+
+:func:`run` takes a :class:`~rigidmech.scenes.Scene` (or its name), overrides of its defaults,
+and goes through the main path of data (ARCHITECTURE.md): the builder assembles the system, the
+fundamental principle gives M(q) q'' = f (``derive``), the right-hand side is compiled once
+(``compile``), a solver of :mod:`rigidmech.ode` integrates it (``integrate``) and the total
+mechanical energy is followed along the motion (``energy``). Each stage is timed and the whole
+is returned as an immutable :class:`RunReport`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+from types import MappingProxyType
+
+import numpy as np
+import sympy as sp
+
+from .. import ode
+from .._core.errors import SceneError
+from ..dynamics import EquationsOfMotion, Simulation
+from .catalogue import Scene, get
+
+__all__ = ["RunReport", "run", "equations_text", "plot_simulation"]
+
+
+def equations_text(eqs: EquationsOfMotion, *, pretty: bool = False) -> str:
+    """The equations of motion M(q) q'' = f as readable text, one line per equation.
+
+    Parameters
+    ----------
+    eqs : EquationsOfMotion
+    pretty : bool
+        Use sympy's 2-D pretty printer (unicode) instead of one-line ``str`` forms.
+
+    Examples
+    --------
+    >>> from rigidmech import scenes
+    >>> eqs = scenes.get("simple-pendulum").build().system.equations_of_motion()
+    >>> print(equations_text(eqs))
+    (L**2*m/3)*theta_ddot = -L*g*m*sin(theta)/2
+    """
+    acc = [sp.Symbol(s.name.removesuffix("_dot") + "_ddot", real=True) for s in eqs.u]
+    M, f = eqs.mass_matrix, eqs.forcing
+    n = len(acc)
+    if pretty:  # dotted letters in 2-D: theta1_dot -> thetadot1, shown with a dot above
+        names = [re.fullmatch(r"(.*?)(\d*)", s.name.removesuffix("_dot")).groups()
+                 for s in eqs.u]
+        rule = {u: sp.Symbol(f"{a}dot{d}", real=True)
+                for u, (a, d) in zip(eqs.u, names, strict=True)}
+        acc = [sp.Symbol(f"{a}ddot{d}", real=True) for a, d in names]
+        M, f = M.xreplace(rule), f.xreplace(rule)
+        lhs = sp.MatMul(M, sp.Matrix(acc), evaluate=False)
+        return sp.pretty(sp.Eq(lhs, f, evaluate=False), use_unicode=True, wrap_line=False)
+    lines = []
+    for i in range(n):
+        terms = [f"({sp.sstr(M[i, j])})*{acc[j]}" for j in range(n) if M[i, j] != 0]
+        lines.append(f"{' + '.join(terms) or '0'} = {sp.sstr(f[i])}")
+    return "\n".join(lines)
+
+
+class RunReport:
+    """The outcome of :func:`run`: what was integrated, how long each stage took, and the
+    result.
+
+    Attributes
+    ----------
+    scene : Scene
+    parameters : mapping str -> float
+        The parameter values used (defaults with the overrides).
+    q0, u0 : tuple of float
+        The initial state used.
+    t_end, method, rtol, atol, step
+        The integration settings used.
+    equations : EquationsOfMotion
+    simulation : Simulation
+    timings : mapping str -> float
+        Wall times in seconds of ``derive`` (build and fundamental principle), ``compile``
+        (right-hand side), ``integrate`` and ``energy`` (energy derived, compiled and evaluated
+        along the motion).
+    nfev, nsteps : int
+        Evaluations of the right-hand side and steps of the solver.
+    energy_drift : float or None
+        max |E(t) - E(0)| / max |E| along the motion (None without a potential energy).
+    final_q, final_u : tuple of float
+        State at ``t_end``.
+    plot_path : str or None
+        Where the plot was written.
+    """
+
+    __slots__ = ("scene", "parameters", "q0", "u0", "t_end", "method", "rtol", "atol", "step",
+                 "equations", "simulation", "timings", "nfev", "nsteps", "energy_drift",
+                 "final_q", "final_u", "plot_path")
+
+    def __init__(self, **fields):
+        for name in self.__slots__:
+            object.__setattr__(self, name, fields[name])
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"RunReport is immutable; cannot set {name!r}.")
+
+    def equations_text(self, *, pretty: bool = False) -> str:
+        """The equations of motion as text (see :func:`equations_text`)."""
+        return equations_text(self.equations, pretty=pretty)
+
+    def summary(self, *, pretty: bool = False) -> str:
+        """Several lines for a terminal: scene, equations, settings, energy drift, timings."""
+        sc = self.scene
+        coords = ", ".join(sc.coordinates)
+        params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
+        tol = (f"step={self.step:g}" if self.step is not None
+               else f"rtol={self.rtol:g}, atol={self.atol:g}")
+        ms = {k: 1e3 * v for k, v in self.timings.items()}
+        drift = "n/a (no potential energy)" if self.energy_drift is None else (
+            f"{self.energy_drift:.3e}")
+        lines = [
+            f"{sc.title} ({sc.name}, book {sc.section})",
+            f"parameters of situation q = ({coords}); {params}",
+            "equations of motion M(q) q'' = f(q, q', t):",
+            *("  " + line for line in self.equations_text(pretty=pretty).splitlines()),
+            f"integrated t in [0, {self.t_end:g}] with {self.method} ({tol}) from "
+            f"q0 = {list(self.q0)}, u0 = {list(self.u0)}",
+            f"final state: q = {[float(f'{x:.10g}') for x in self.final_q]}, "
+            f"q' = {[float(f'{x:.10g}') for x in self.final_u]}",
+            f"energy drift: {drift}",
+            f"timings: derive {ms['derive']:.1f} ms, compile {ms['compile']:.1f} ms, "
+            f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
+            f"steps), energy {ms['energy']:.1f} ms",
+        ]
+        if self.plot_path is not None:
+            lines.append(f"plot written to {self.plot_path}")
+        return "\n".join(lines)
+
+    def __str__(self):
+        return self.summary()
+
+    def __repr__(self):
+        return (f"RunReport(scene={self.scene.name!r}, t_end={self.t_end:g}, "
+                f"method={self.method!r}, nfev={self.nfev}, energy_drift={self.energy_drift!r})")
+
+
+def _finite(value, what):
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise SceneError(f"{what} must be a number; got {value!r}.") from None
+    if not math.isfinite(x):
+        raise SceneError(f"{what} must be finite; got {value!r}.")
+    return x
+
+
+def _state(values, default, n, what, scene):
+    if values is None:
+        return default
+    try:
+        values = tuple(values)
+    except TypeError:
+        raise SceneError(
+            f"`{what}` must be a sequence of {n} numbers; got {values!r}.") from None
+    if len(values) != n:
+        raise SceneError(
+            f"`{what}` must give {n} values for scene {scene.name!r} (one per coordinate "
+            f"{', '.join(scene.coordinates)}); got {len(values)}: {list(values)}.")
+    return tuple(_finite(v, f"`{what}` entry {i}") for i, v in enumerate(values))
+
+
+def _method(method, step):
+    known = ode.methods()
+    if not isinstance(method, str) or method not in known:
+        raise SceneError(f"unknown method {method!r}; known methods: {', '.join(known)}.")
+    if method in ode.methods("second_order"):
+        raise SceneError(
+            f"method {method!r} integrates q'' = a(t, q) only; the equations of a scene depend "
+            "on q' too: choose another method.")
+    fixed = method in ode.methods("fixed")
+    if fixed and step is None:
+        raise SceneError(f"method {method!r} has a fixed step: give `step` (--step).")
+    if not fixed and step is not None:
+        raise SceneError(f"`step` is only for fixed-step methods; {method!r} is adaptive.")
+    if step is not None:
+        step = _finite(step, "`step`")
+        if step <= 0:
+            raise SceneError(f"`step` must be > 0; got {step:g}.")
+    return step
+
+
+def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=None,
+        atol=None, step=None, n_output=1001, plot=None) -> RunReport:
+    """Derive, compile and integrate a scene; follow its energy; optionally plot it.
+
+    Parameters
+    ----------
+    scene : Scene or str
+        A scene of the catalogue or its name.
+    t_end : float, optional
+        Duration (default: the scene's).
+    params : mapping str -> float, optional
+        Overrides of the scene's parameter values (``{"m": 2, "L": 0.5}``).
+    q0, u0 : sequence of float, optional
+        Initial state (default: the scene's).
+    method, rtol, atol : optional
+        Integration method of :func:`rigidmech.ode.solve` and tolerances (default: the
+        scene's). Fixed-step methods need ``step``.
+    n_output : int
+        Number of evenly spaced output times.
+    plot : str or path-like, optional
+        Write a figure (coordinates and relative energy error against time) there; works
+        without a display (matplotlib's Agg canvas, no pyplot).
+
+    Returns
+    -------
+    RunReport
+
+    Raises
+    ------
+    SceneError
+        Unknown scene, parameter or method; malformed values; wrong length of ``q0``/``u0``.
+    NumericalError
+        The integration failed.
+
+    Examples
+    --------
+    >>> from rigidmech import scenes
+    >>> rep = scenes.run("simple-pendulum", t_end=1.0, params={"L": 0.5})
+    >>> rep.parameters["L"], rep.energy_drift < 1e-8
+    (0.5, True)
+    >>> scenes.run("simple-pendulum", params={"l": 1})
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.SceneError: unknown parameter 'l' for scene 'simple-pendulum'; ...
+    """
+    scene = get(scene)
+    if not isinstance(scene, Scene):  # pragma: no cover - get() guarantees it
+        raise SceneError(f"`scene` must be a Scene or a name; got {scene!r}.")
+    values = scene.defaults
+    for name, value in dict(params or {}).items():
+        if name not in values:
+            raise SceneError(
+                f"unknown parameter {name!r} for scene {scene.name!r}; its parameters are "
+                f"{', '.join(values)}.")
+        values[name] = _finite(value, f"parameter `{name}`")
+    n = scene.dof
+    q0 = _state(q0, scene.q0, n, "q0", scene)
+    u0 = _state(u0, scene.u0, n, "u0", scene)
+    t_end = scene.t_end if t_end is None else _finite(t_end, "`t_end`")
+    if t_end <= 0:
+        raise SceneError(f"`t_end` must be > 0; got {t_end:g}.")
+    method = scene.method if method is None else method
+    step = _method(method, step)
+    rtol = scene.rtol if rtol is None else _finite(rtol, "`rtol`")
+    atol = scene.atol if atol is None else _finite(atol, "`atol`")
+    if step is None and not (rtol > 0 and atol >= 0):
+        raise SceneError(f"`rtol` must be > 0 and `atol` >= 0; got rtol={rtol:g}, "
+                         f"atol={atol:g}.")
+
+    timings = {}
+    start = time.perf_counter()
+    built = scene.build()
+    eqs = built.system.equations_of_motion()
+    timings["derive"] = time.perf_counter() - start
+    start = time.perf_counter()
+    eqs.rhs(**values)  # compiles once; simulate() reuses the compiled function
+    timings["compile"] = time.perf_counter() - start
+    sim = eqs.simulate(t=(0.0, t_end), q0=q0, u0=u0, method=method, rtol=rtol, atol=atol,
+                       step=step, n_output=n_output, **values)
+    timings["integrate"] = sim.elapsed
+    start = time.perf_counter()
+    drift = sim.energy_drift() if eqs.energy is not None else None
+    timings["energy"] = time.perf_counter() - start
+    plot_path = None
+    if plot is not None:
+        plot_path = str(plot)
+        plot_simulation(sim, plot_path, title=f"{scene.title} ({scene.section})")
+    return RunReport(
+        scene=scene, parameters=MappingProxyType(values), q0=q0, u0=u0, t_end=t_end,
+        method=method, rtol=rtol, atol=atol, step=step, equations=eqs, simulation=sim,
+        timings=MappingProxyType(timings), nfev=int(sim.result.nfev),
+        nsteps=int(getattr(sim.result, "nsteps", 0) or 0), energy_drift=drift,
+        final_q=tuple(float(x) for x in sim.q[:, -1]),
+        final_u=tuple(float(x) for x in sim.u[:, -1]), plot_path=plot_path)
+
+
+def plot_simulation(sim: Simulation, path, *, title=None):
+    """Write a figure of the coordinates and of the relative energy error against time.
+
+    Uses :class:`matplotlib.figure.Figure` directly (Agg canvas, no pyplot state): works
+    headless and leaves the user's matplotlib backend alone.
+    """
+    from matplotlib.figure import Figure
+
+    eqs = sim.equations
+    has_energy = eqs.energy is not None
+    fig = Figure(figsize=(7, 5.5 if has_energy else 3.5))
+    axes = fig.subplots(2 if has_energy else 1, 1, sharex=True, squeeze=False)[:, 0]
+    for i, q in enumerate(eqs.q):
+        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(q)}$")
+    axes[0].set_ylabel("parameters of situation")
+    axes[0].legend(loc="upper right")
+    axes[0].grid(True, alpha=0.3)
+    if has_energy:
+        e = sim.energy()
+        scale = max(abs(e[0]), float(np.max(np.abs(e))), np.finfo(float).tiny)
+        axes[1].plot(sim.t, (e - e[0]) / scale)
+        axes[1].set_ylabel("(E - E0) / max|E|")
+        axes[1].grid(True, alpha=0.3)
+    axes[-1].set_xlabel("t [s]")
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    return fig
