@@ -10,13 +10,15 @@ reduction) and that point; the moment field follows from the transport formula (
 
 from __future__ import annotations
 
+import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Point, Vector
+from ..vectors.geometry import Line
 from ..vectors.points import check_point
 
-__all__ = ["Torsor", "slider", "couple"]
+__all__ = ["Torsor", "Resolution", "slider", "couple"]
 
 _KINDS = ("zero", "couple", "slider", "torsor")
 
@@ -40,6 +42,29 @@ def _is_zero(expr) -> bool | None:
     if z.is_zero is False or (z.is_number and z != 0):
         return False
     return None
+
+
+def _vector_is_zero(v: Vector) -> bool | None:
+    """Exact decision on a vector: True/False, or None if undecidable.
+
+    Decided component by component in one basis: one component decidedly non-zero is enough
+    to say False, which decides cases such as ``a*R0.i + R0.j`` that |v|^2 leaves open.
+    """
+    if v.is_zero:
+        return True
+    decisions = [_is_zero(c) for c in v.components(v.frames[0])]
+    if any(d is False for d in decisions):
+        return False
+    if all(d is True for d in decisions):
+        return True
+    return None
+
+
+def _undecided(quantity: str, value) -> ArgumentError:
+    return ArgumentError(
+        f"cannot decide whether {quantity} is zero for symbolic values: got {value}; "
+        "substitute values (subs) or declare assumptions on the symbols."
+    )
 
 
 class Torsor:
@@ -168,6 +193,11 @@ class Torsor:
             )
 
     def __add__(self, other):
+        if isinstance(other, Vector | Point):
+            raise ArgumentTypeError(
+                f"a Torsor can only be added to a Torsor; got {type(other).__name__}. Build "
+                "the torsor first (slider(vector, through=point) or couple(vector))."
+            )
         if not isinstance(other, Torsor):
             return NotImplemented
         self._check_combinable(other)
@@ -177,6 +207,12 @@ class Torsor:
             self._point,
             like=self,
         )
+
+    def __radd__(self, other):
+        # sum(torsors) starts from 0
+        if isinstance(other, int) and other == 0:
+            return self
+        return NotImplemented
 
     def __neg__(self):
         return type(self)._new(-self._resultant, -self._moment, self._point, like=self)
@@ -240,13 +276,80 @@ class Torsor:
             self._moment)
 
     # -- geometry -----------------------------------------------------------------------
+    def classify(self, *, atol=None) -> str:
+        """Classification (ch. 5.2): 'zero', 'couple', 'slider' or 'torsor'.
+
+        Parameters
+        ----------
+        atol : float, optional
+            ``None`` (default): exact decisions (sympy ``simplify``), as :attr:`kind`.
+            A number: numeric decisions for float components, with the norm of the
+            resultant, the norm of the moment (for R = 0) and the pitch length
+            :math:`|\\mathbf{R}\\cdot\\mathbf{M}|/|\\mathbf{R}|` compared with ``atol``.
+
+        Returns
+        -------
+        str
+            'zero' (R = 0, M = 0), 'couple' (R = 0, M != 0, ch. 5.2.2), 'slider' (R != 0 and
+            automoment 0: the moment vanishes on the central axis, ch. 5.2.1) or 'torsor'
+            (automoment != 0, ch. 5.2.3).
+
+        Raises
+        ------
+        ArgumentError
+            When ``atol`` is None and a decision cannot be made for symbolic values (for
+            example whether ``a*R0.i`` is zero, with ``a`` a symbol of unknown value): the
+            message names the undecided quantity. Substitute values or give the symbols
+            assumptions (``nonzero=True``, ``positive=True``).
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> Torsor(resultant=R0.k, moment=1e-14 * R0.k, at=R0.origin).classify(atol=1e-9)
+        'slider'
+        >>> Torsor(resultant=R0.k, moment=1e-14 * R0.k, at=R0.origin).classify()
+        'torsor'
+        """
+        if atol is not None:
+            return self._classify_numeric(float(atol))
+        r_zero = _vector_is_zero(self._resultant)
+        if r_zero is None:
+            raise _undecided("the resultant", self._resultant)
+        if r_zero:
+            m_zero = _vector_is_zero(self._moment)
+            if m_zero is None:
+                raise _undecided("the moment of a torsor with zero resultant", self._moment)
+            return "zero" if m_zero else "couple"
+        a = _is_zero(self.automoment)
+        if a is None:
+            raise _undecided("the automoment", self.automoment)
+        return "slider" if a else "torsor"
+
+    def _classify_numeric(self, atol):
+        frame = (self._resultant.frames + self._moment.frames + (self._point.root,))[0]
+        try:
+            r = np.array([complex(x) for x in self._resultant.components(frame)]).real
+            m = np.array([complex(x) for x in self._moment.components(frame)]).real
+        except TypeError as exc:
+            raise ArgumentError(
+                "`atol` classification needs numeric components; got symbols. Substitute "
+                "values first, or call classify() without `atol` for exact decisions."
+            ) from exc
+        nr = float(np.linalg.norm(r))
+        if nr <= atol:
+            return "zero" if np.linalg.norm(m) <= atol else "couple"
+        return "slider" if abs(float(r @ m)) / nr <= atol else "torsor"
+
     @property
     def kind(self) -> str:
         """Classification (ch. 5.2): 'zero', 'couple' (R = 0, M != 0), 'slider' (R != 0,
         automoment 0) or 'torsor' (general).
 
-        Decisions are exact (sympy ``simplify``); a case that cannot be decided for
-        symbolic values raises :class:`ArgumentError` naming the undecided quantity.
+        Decisions are exact (sympy ``simplify``, component by component); a case that
+        cannot be decided for symbolic values raises :class:`ArgumentError` naming the
+        undecided quantity. For float components with round-off use
+        :meth:`classify` with ``atol``.
 
         Examples
         --------
@@ -255,27 +358,17 @@ class Torsor:
         >>> Torsor(resultant=Vector.zero(), moment=R0.i, at=R0.origin).kind
         'couple'
         """
-        r2 = self._resultant.dot(self._resultant)
-        r_zero = _is_zero(r2)
+        return self.classify()
+
+    def _require_resultant(self, what):
+        r_zero = _vector_is_zero(self._resultant)
         if r_zero is None:
-            raise ArgumentError(
-                f"cannot decide whether the resultant is zero: |R|^2 = {r2}; substitute values."
-            )
+            raise _undecided("the resultant", self._resultant)
         if r_zero:
-            m2 = self._moment.dot(self._moment)
-            m_zero = _is_zero(m2)
-            if m_zero is None:
-                raise ArgumentError(
-                    f"cannot decide whether the moment is zero: |M|^2 = {m2}; substitute values."
-                )
-            return "zero" if m_zero else "couple"
-        a = _is_zero(self.automoment)
-        if a is None:
             raise ArgumentError(
-                f"cannot decide whether the automoment {self.automoment} is zero; "
-                "substitute values."
+                f"a torsor with zero resultant (a couple or the zero torsor) has no {what}: "
+                "its moment is the same at every point (ch. 5.2.2)."
             )
-        return "slider" if a else "torsor"
 
     @property
     def pitch(self) -> sp.Expr:
@@ -293,13 +386,8 @@ class Torsor:
         >>> Torsor(resultant=2 * R0.k, moment=6 * R0.k, at=R0.origin).pitch
         3
         """
-        r2 = self._resultant.dot(self._resultant)
-        if _is_zero(r2):
-            raise ArgumentError(
-                "a torsor with zero resultant (couple or zero torsor) has no pitch and no "
-                "central axis."
-            )
-        return sp.simplify(self.automoment / r2)
+        self._require_resultant("pitch")
+        return sp.simplify(self.automoment / self._resultant.dot(self._resultant))
 
     def central_point(self, near: Point | None = None) -> Point:
         """The point of the central axis nearest to ``near`` (default: the point of
@@ -315,13 +403,168 @@ class Torsor:
         """
         near = self._point if near is None else near
         check_point(near, "near")
+        self._require_resultant("central axis")
         r2 = self._resultant.dot(self._resultant)
-        if _is_zero(r2):
-            raise ArgumentError(
-                "a torsor with zero resultant (couple or zero torsor) has no central axis."
-            )
         m = self.moment_at(near)
         return near.moved("I", self._resultant.cross(m) / r2)
+
+    def central_axis(self) -> Line:
+        """The central axis: the line of direction R through the central point (ch. 5.1.7).
+
+        It is the locus of the points where the moment is parallel to the resultant; there
+        the moment has its least norm, :math:`|\\mathbf{R}\\cdot\\mathbf{M}|/|\\mathbf{R}|`.
+
+        Returns
+        -------
+        Line
+            Through :meth:`central_point` (the point of the axis nearest to the point of
+            reduction), with direction the resultant.
+
+        Raises
+        ------
+        ArgumentError
+            If the resultant is zero: a couple or the zero torsor has no central axis.
+
+        Notes
+        -----
+        With :math:`\\mathbf{M}_A` the moment at the point of reduction A (ch. 5.1.7),
+
+        .. math:: \\mathbf{AI} = \\frac{\\mathbf{R}\\wedge\\mathbf{M}_A}{R^2},\\qquad
+                  \\mathbf{M}_I = \\frac{\\mathbf{R}\\cdot\\mathbf{M}_A}{R^2}\\,\\mathbf{R}.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> axis = Torsor(resultant=R0.k, moment=R0.i + 2 * R0.k, at=R0.origin).central_axis()
+        >>> axis.point.coordinates(R0).T, axis.direction
+        (Matrix([[0, 1, 0]]), R0.k)
+        """
+        return _make_line(self.central_point(), self._resultant)
+
+    def moment_about(self, axis, direction: Vector | None = None) -> sp.Expr:
+        """The moment about an axis: M(P) . u, P a point of the axis, u its unit direction
+        (ch. 5.1.6). It does not depend on the point P chosen on the axis.
+
+        Parameters
+        ----------
+        axis : Line or Point
+            The axis, or one of its points (then give ``direction``).
+        direction : Vector, optional
+            Direction of the axis when ``axis`` is a Point; need not be a unit vector.
+
+        Returns
+        -------
+        sympy expression
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``axis`` is neither a Line nor a Point, or ``direction`` is not a Vector.
+        ArgumentError
+            If ``direction`` is missing for a Point, given for a Line, or zero.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> T = Torsor(resultant=R0.i, moment=Vector.zero(), at=R0.origin)
+        >>> T.moment_about(R0.point("P", 0, -2, 5), direction=3 * R0.k)
+        -2
+        """
+        point, u = _axis_elements(axis, direction)
+        return self.moment_at(point).dot(u) / u.magnitude()
+
+    def resolve(self, through) -> Resolution:
+        """Resolution into a slider through a given point plus a couple (ch. 5.2.3).
+
+        Parameters
+        ----------
+        through : Point or Line
+            The point of the slider's line (its direction is that of the resultant), or that
+            line itself, which must then be parallel to the resultant.
+
+        Returns
+        -------
+        Resolution
+            ``slider`` = {R ; 0} reduced at the point, ``couple`` = {0 ; M(point)}; their sum
+            is this torsor at every point.
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``through`` is neither a Point nor a Line.
+        ArgumentError
+            If ``through`` is a Line not parallel to the resultant.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> T = Torsor(resultant=R0.k, moment=R0.i, at=R0.origin)
+        >>> slider_part, couple_part = T.resolve(R0.point("B", 0, 0, 7))
+        >>> couple_part.moment
+        R0.i
+        >>> (slider_part + couple_part).equals(T)
+        True
+        """
+        if _is_line(through):
+            point, u = _axis_elements(through, None)
+            if _vector_is_zero(self._resultant) is False and \
+                    _vector_is_zero(self._resultant.cross(u)) is not True:
+                raise ArgumentError(
+                    "`through` must be a line parallel to the resultant "
+                    f"{self._resultant!r}; got a line of direction {u!r}. Pass a Point to "
+                    "take the parallel line through it."
+                )
+        else:
+            if isinstance(through, Vector):
+                raise ArgumentTypeError(
+                    "`through` must be a Point or a Line (a Vector is not a Point: use "
+                    "A.moved(name, vector)); got Vector."
+                )
+            check_point(through, "through")
+            point = through
+        return Resolution(
+            Torsor._new(self._resultant, Vector.zero(), point),
+            Torsor._new(Vector.zero(), self.moment_at(point), point),
+        )
+
+    def simplest_form(self) -> Resolution:
+        """The simplest resolution: a slider on the central axis plus a couple parallel to
+        the resultant (ch. 5.2.3-5.2.4).
+
+        Returns
+        -------
+        Resolution
+            ``slider`` = {R ; 0} at the central point I, ``couple`` = {0 ; p R} with p the
+            pitch: the least moment. For a slider the couple is zero; for a couple (R = 0)
+            the slider is the zero torsor and the couple is the torsor itself.
+
+        Raises
+        ------
+        ArgumentError
+            If it cannot be decided whether the resultant is zero (symbolic values).
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> T = Torsor(resultant=R0.k, moment=R0.i + 2 * R0.k, at=R0.origin)
+        >>> form = T.simplest_form()
+        >>> form.slider.point.coordinates(R0).T, form.couple.moment
+        (Matrix([[0, 1, 0]]), 2*R0.k)
+        """
+        r_zero = _vector_is_zero(self._resultant)
+        if r_zero is None:
+            raise _undecided("the resultant", self._resultant)
+        if r_zero:
+            return Resolution(Torsor._new(Vector.zero(), Vector.zero(), self._point),
+                              Torsor._new(Vector.zero(), self._moment, self._point))
+        point = self.central_point()
+        least = self._resultant * self.pitch
+        return Resolution(Torsor._new(self._resultant, Vector.zero(), point),
+                          Torsor._new(Vector.zero(), least, point))
 
     # -- transforms and comparison ------------------------------------------------------
     def applyfunc(self, func) -> Torsor:
@@ -403,6 +646,142 @@ class Torsor:
         m = self._moment._latex(printer)
         return (rf"\left\{{ \begin{{matrix}} {r} \\ {m} \end{{matrix}} \right\}}"
                 rf"_{{{self._point.name}}}")
+
+    def _repr_latex_(self):
+        return f"$\\displaystyle {self._latex()}$"
+
+
+def _is_line(obj) -> bool:
+    return isinstance(obj, Line)
+
+
+def _make_line(point: Point, direction: Vector) -> Line:
+    return Line(point, direction)
+
+
+def _axis_elements(axis, direction):
+    """(point, direction vector) of an axis given as a Line or as a Point + direction."""
+    if _is_line(axis):
+        if direction is not None:
+            raise ArgumentError(
+                "`direction` must be omitted when `axis` is a Line (the line has its own); "
+                f"got {direction!r}."
+            )
+        return axis.point, axis.direction
+    if isinstance(axis, Vector):
+        raise ArgumentTypeError(
+            "`axis` must be a Line or a Point (a Vector is not a Point: give a point of the "
+            "axis and pass the vector as `direction`); got Vector."
+        )
+    check_point(axis, "axis")
+    if direction is None:
+        raise ArgumentError(
+            f"`direction` is needed when `axis` is the Point {axis.name}; got None."
+        )
+    _check_vector(direction, "direction")
+    if _vector_is_zero(direction) is True:
+        raise ArgumentError("`direction` must be a non-zero Vector; got the zero vector.")
+    return axis, direction
+
+
+class Resolution:
+    """A torsor resolved into a slider plus a couple (ch. 5.2.3-5.2.4).
+
+    Returned by :meth:`Torsor.resolve` and :meth:`Torsor.simplest_form`; immutable. It
+    unpacks as ``slider, couple = T.resolve(B)``, and :attr:`torsor` (the sum) is the
+    resolved torsor, at every point.
+
+    Parameters
+    ----------
+    slider : Torsor
+        The slider {R ; 0}, reduced at a point of its line (R may be zero).
+    couple : Torsor
+        The couple {0 ; C}.
+
+    Examples
+    --------
+    >>> from rigidmech import Frame, Torsor
+    >>> R0 = Frame("R0")
+    >>> T = Torsor(resultant=R0.k, moment=R0.i + 2 * R0.k, at=R0.origin)
+    >>> form = T.simplest_form()
+    >>> form
+    Resolution(slider=Torsor(resultant=R0.k, moment=0, at=I),
+               couple=Torsor(resultant=0, moment=2*R0.k, at=I))
+    >>> print(form)
+    {k_R0 ; 0}_I + {0 ; 2 k_R0}_I
+    >>> form.torsor.equals(T)
+    True
+    """
+
+    __slots__ = ("_slider", "_couple")
+
+    def __init__(self, slider: Torsor, couple: Torsor):
+        for value, argument in ((slider, "slider"), (couple, "couple")):
+            if not isinstance(value, Torsor):
+                raise ArgumentTypeError(
+                    f"`{argument}` must be a Torsor; got {type(value).__name__}.")
+        if _vector_is_zero(slider.moment) is False:
+            raise ArgumentError(
+                f"`slider` must have a zero moment at its point; got {slider.moment!r}.")
+        if _vector_is_zero(couple.resultant) is False:
+            raise ArgumentError(
+                f"`couple` must have a zero resultant; got {couple.resultant!r}.")
+        self._slider = slider
+        self._couple = couple
+
+    @property
+    def slider(self) -> Torsor:
+        """The slider part {R ; 0}, reduced at a point of its line."""
+        return self._slider
+
+    @property
+    def couple(self) -> Torsor:
+        """The couple part {0 ; C}."""
+        return self._couple
+
+    @property
+    def torsor(self) -> Torsor:
+        """The sum slider + couple, reduced at the slider's point."""
+        return self._slider + self._couple
+
+    def axis(self) -> Line:
+        """The line of the slider (through its point, direction R).
+
+        Raises
+        ------
+        ArgumentError
+            If the resultant is zero (the slider is then the zero torsor).
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor
+        >>> R0 = Frame("R0")
+        >>> T = Torsor(resultant=R0.i, moment=R0.k, at=R0.origin)
+        >>> T.resolve(R0.point("B", 0, 0, 1)).axis().direction
+        R0.i
+        """
+        self._slider._require_resultant("slider line")
+        return _make_line(self._slider.point, self._slider.resultant)
+
+    def __iter__(self):
+        return iter((self._slider, self._couple))
+
+    def __eq__(self, other):
+        if not isinstance(other, Resolution):
+            return NotImplemented
+        return self._slider == other._slider and self._couple == other._couple
+
+    def __hash__(self):
+        return hash((Resolution, self._slider, self._couple))
+
+    def __repr__(self):
+        return f"Resolution(slider={self._slider!r}, couple={self._couple!r})"
+
+    def __str__(self):
+        return f"{self._slider} + {self._couple}"
+
+    def _latex(self, printer=None):
+        return f"{self._slider._latex(printer)} + {self._couple._latex(printer)}"
 
     def _repr_latex_(self):
         return f"$\\displaystyle {self._latex()}$"
