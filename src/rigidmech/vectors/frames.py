@@ -150,7 +150,8 @@ class Frame(FrameBase):
         >>> R.rotation_vector(R0)
         Derivative(phi(t), t)*R.k + Derivative(theta(t), t)*R_psi.i + Derivative(psi(t), t)*R_psi.k
         >>> R.rotation_vector(R0).components(R.parent).T
-        Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(psi(t), t), cos(theta(t))*Derivative(psi(t), t) + Derivative(phi(t), t)]])
+        Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(psi(t), t),
+                 cos(theta(t))*Derivative(psi(t), t) + Derivative(phi(t), t)]])
         """
         f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
         f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
