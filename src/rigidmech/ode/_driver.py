@@ -7,6 +7,8 @@ code path serves a single trajectory and a batch; :class:`Problem` reshapes to t
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ._dense import DenseSolution
@@ -82,24 +84,28 @@ def initial_step(problem, t0, y0, f0, direction, order, rtol, atol, t_bound, max
         Absolute value of the first step.
     """
     length = abs(t_bound - t0)
-    scale = atol + np.abs(y0) * rtol
-    d0 = problem.norm(y0 / scale)
-    d1 = problem.norm(f0 / scale)
-    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
-    h0 = min(h0, length)
-    f1 = problem(t0 + direction * h0, y0 + direction * h0 * f0, np.empty_like(y0))
-    d2 = problem.norm((f1 - f0) / scale) / h0
-    if d1 <= 1e-15 and d2 <= 1e-15:
-        h1 = max(1e-6, h0 * 1e-3)
-    else:
-        h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        scale = atol + np.abs(y0) * rtol
+        d0 = problem.norm(y0 / scale)
+        d1 = problem.norm(f0 / scale)
+        ok = math.isfinite(d0) and math.isfinite(d1)
+        h0 = 1e-6 if (not ok or d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+        h0 = min(h0, length)
+        f1 = problem(t0 + direction * h0, y0 + direction * h0 * f0, np.empty_like(y0))
+        d2 = problem.norm((f1 - f0) / scale) / h0
+        if not (ok and math.isfinite(d2)):
+            h1 = max(1e-6, h0 * 1e-3)
+        elif d1 <= 1e-15 and d2 <= 1e-15:
+            h1 = max(1e-6, h0 * 1e-3)
+        else:
+            h1 = (0.01 / max(d1, d2)) ** (1.0 / (order + 1))
     return min(100 * h0, h1, length, max_step)
 
 
 def fail_message(reason, t, y, shape):
     """One sentence naming the reason, the time and the state of a numerical failure."""
     state = np.array2string(np.asarray(y).reshape(shape), precision=6, threshold=12)
-    return f"{reason} at t = {t!r}; state y = {state}."
+    return f"{reason} at t = {float(t)!r}; state y = {state}."
 
 
 class Recorder:

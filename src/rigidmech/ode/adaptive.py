@@ -106,7 +106,7 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
             h_abs = min_step
         rejected = accepted = False
         while True:
-            if h_abs < min_step:
+            if not h_abs >= min_step:  # also catches a nan step
                 break
             h = h_abs * direction
             t_new = t + h
@@ -238,9 +238,11 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(abs(r.y[0, -1] - np.exp(-2.0)) < 1e-8), r.status
     (True, 0)
     """
-    return _integrate(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                      max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                      events=events, nstiff=_check_nstiff(nstiff))
+    nstiff = _check_nstiff(nstiff)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        return _integrate(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                          max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                          events=events, nstiff=nstiff)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
@@ -265,9 +267,11 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-11)
     True
     """
-    return _integrate(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                      max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                      events=events, nstiff=_check_nstiff(nstiff))
+    nstiff = _check_nstiff(nstiff)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        return _integrate(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                          max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                          events=events, nstiff=nstiff)
 
 
 _registry.register("dopri5", dopri5, kind="adaptive")

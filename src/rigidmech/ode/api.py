@@ -117,14 +117,14 @@ def _check_t_span(t_span):
 
 
 def _check_y0(y0):
+    if np.iscomplexobj(np.asarray(y0)) if not isinstance(y0, str) else False:
+        raise ArgumentTypeError("`y0` must be real; got a complex array.")
     try:
         y = np.array(y0, dtype=float, copy=True)
     except (TypeError, ValueError):
         raise ArgumentTypeError(
             f"`y0` must be an array of real numbers of shape (n,) or (n, batch); got {y0!r}."
         ) from None
-    if np.iscomplexobj(np.asarray(y0)):
-        raise ArgumentTypeError("`y0` must be real; got a complex array.")
     if y.ndim not in (1, 2) or y.size == 0:
         raise ArgumentError(
             f"`y0` must have shape (n,) or (n, batch) with n >= 1; got shape {y.shape}."
@@ -389,6 +389,12 @@ def solve(
             f"steps (got step={step!r}): use `first_step` or `max_step` instead."
         )
     rtol, atol = _check_tolerances(rtol, atol, y)
+    if np.any((np.asarray(atol) == 0) & (y.reshape(-1) == 0)):
+        raise ArgumentError(
+            "`atol` must be > 0 for the components of `y0` that are zero (a pure relative "
+            "error is undefined at 0); got atol = 0 with y0 = "
+            f"{np.array2string(y, threshold=8)}."
+        )
     max_step = _float("max_step", max_step)
     if not max_step > 0:
         raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")

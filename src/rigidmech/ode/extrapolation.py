@@ -64,6 +64,14 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-10)
     True
     """
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        return _gbs(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                    max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                    events=events, k_max=k_max)
+
+
+def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output, events,
+         k_max):
     if isinstance(k_max, bool) or not isinstance(k_max, int | np.integer) or not (
         3 <= k_max <= 12
     ):
@@ -168,7 +176,7 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
             else:
                 h_abs *= _FAC_MIN
             k = max(1, min(k, k_max - 1))
-            if h_abs < min_step:
+            if not h_abs >= min_step:
                 break
         if accepted_col < 0:
             rec.fail("The step size fell below the resolution of t (step size underflow)", t, y)

@@ -129,6 +129,14 @@ def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     """
     if jac is not None and not callable(jac):
         raise ArgumentTypeError(f"`jac` must be a callable jac(t, y) or None; got {jac!r}.")
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        return _radau(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                      max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                      events=events, jac=jac)
+
+
+def _radau(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output,
+           events, jac):
     t0, t_end = t_span
     direction = 1.0 if t_end > t0 else -1.0
     shape = y0.shape

@@ -112,8 +112,9 @@ def fixed_step_method(tableau):
             f"`tableau` must be a ButcherTableau; got {type(tableau).__name__}."
         )
 
-    def method(fun, t_span, y0, *, step, **options):
-        return integrate_fixed(tableau, fun, t_span, y0, step=step)
+    def method(fun, t_span, y0, *, step, max_steps=None):
+        with np.errstate(over="ignore", invalid="ignore"):  # a blow-up is reported in status
+            return integrate_fixed(tableau, fun, t_span, y0, step=step)
 
     method.__name__ = method.__qualname__ = f"fixed_step_{tableau.name}"
     method.__doc__ = f"Fixed-step explicit Runge-Kutta method {tableau.name!r}."
