@@ -207,6 +207,8 @@ class System:
         """The parameters of situation q(t) in the order of the equations."""
         if self._given_coordinates is not None:
             return self._given_coordinates
+        if "coordinates" in self._cache:
+            return self._cache["coordinates"]
         exprs = []
         for b in self._bodies:
             exprs.extend(_frame_exprs(b.frame))
@@ -214,7 +216,8 @@ class System:
         found = _coordinates_in(exprs)
         if not found:
             raise ArgumentError("the system has no parameter of situation: nothing moves.")
-        return tuple(found)
+        self._cache["coordinates"] = tuple(found)
+        return self._cache["coordinates"]
 
     # -- derivations --------------------------------------------------------------------
     def _symbols(self):

@@ -284,6 +284,11 @@ class Vector:
         cos(q(t))
         """
         _check_vector(other, "other")
+        if len(self._parts) * len(other._parts) > 4:
+            # Many bases on both sides: one change of basis per part beats a direction-
+            # cosine product per pair of parts (chains of n bodies: n^2 pairs, n parts).
+            frame = other._parts[-1][0]
+            return dot3(self._comps(frame), other._comps(frame))
         terms = []
         for fa, ca in self._parts:
             for fb, cb in other._parts:
