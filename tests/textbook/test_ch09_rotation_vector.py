@@ -14,6 +14,8 @@ and the algebra of ch. 9.3: inverse motions omega(R0/R) = -omega(R/R0) (9.3.2) a
 omega(2/0) = omega(2/1) + omega(1/0) (9.3.1).
 """
 
+import itertools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -171,13 +173,21 @@ def test_composition_of_rotation_vectors():
     R1 = R0.rotated("R1", about=R0.k, angle=q1)
     R2 = R1.rotated("R2", about=R1.i, angle=q2)
     R3 = R0.rotated("R3", about=R0.vector(0, 3, 4), angle=q3)  # another branch
-    frames = (R0, R1, R2, R3)
-    for a in frames:
-        for b in frames:
-            for c in frames:
-                lhs = c.rotation_vector(a)
-                rhs = c.rotation_vector(b) + b.rotation_vector(a)
-                assert lhs.equals(rhs, frame=a), (a, b, c)
+    # symbolically along the chain R0 -> R1 -> R2
+    assert R2.rotation_vector(R0).equals(R2.rotation_vector(R1) + R1.rotation_vector(R0))
+    # every ordered triple of distinct frames (24), up and down the chain and across branches,
+    # at random values of (q, q'): components of a few products of sines and cosines with
+    # rates of order 1, exact to ~1e-15, hence atol=1e-12
+    rng = np.random.default_rng(93)
+    for a, b, c in itertools.permutations((R0, R1, R2, R3), 3):
+        values = {}
+        for q in Q:
+            values[q.diff(t)] = sp.Float(rng.uniform(-2, 2))
+            values[q] = sp.Float(rng.uniform(-np.pi, np.pi))
+        lhs = c.rotation_vector(a).components(a).xreplace(values)
+        rhs = (c.rotation_vector(b) + b.rotation_vector(a)).components(a).xreplace(values)
+        assert_allclose(np.array(lhs.evalf(), dtype=float), np.array(rhs.evalf(), dtype=float),
+                        rtol=0, atol=1e-12, err_msg=f"{a}, {b}, {c}")
 
 
 def test_elementary_closed_forms():
