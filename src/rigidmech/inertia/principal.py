@@ -9,7 +9,8 @@ the matrix is diagonal. Three cases are handled:
 - one product of inertia only is non-zero (a plane of symmetry, ch. 15.4.1): the axis normal
   to that plane is principal and the other two follow from a rotation by
   :math:`\\theta = \\tfrac{1}{2}\\,\\mathrm{atan2}(2J_{ab}, J_{aa} - J_{bb})`, exactly;
-- otherwise, numeric entries only: ``numpy.linalg.eigh``.
+- otherwise, numeric entries only: ``numpy.linalg.eigh``; also whenever an entry is a
+  floating-point number (then the moments come in increasing order).
 """
 
 from __future__ import annotations
@@ -61,10 +62,12 @@ def principal_axes(matrix, frame) -> PrincipalAxes:
     Returns
     -------
     PrincipalAxes
-        Diagonal matrix: the moments (A, B, C) and the basis (i, j, k) of ``frame``, exactly.
-        One non-zero product: exact moments and axes (the axis normal to the plane of the
-        product keeps its place). Otherwise (numbers): floats from ``numpy.linalg.eigh``,
-        moments in increasing order, the third axis flipped if needed for a direct basis.
+        Entries with floating-point numbers: floats from ``numpy.linalg.eigh``, moments in
+        increasing order, the third axis flipped if needed for a direct basis. Otherwise
+        (exact entries): a diagonal matrix gives the moments (A, B, C) and the basis
+        (i, j, k) of ``frame``; one non-zero product gives exact moments and axes (the axis
+        normal to the plane of the product keeps its place); more products, numbers only,
+        go through ``eigh`` as above.
 
     Raises
     ------
@@ -85,10 +88,11 @@ def principal_axes(matrix, frame) -> PrincipalAxes:
     >>> pa.axes[0]
     sqrt(2)/2*R0.i - sqrt(2)/2*R0.j
     """
+    floats = all(x.is_number for x in matrix) and any(x.has(sp.Float) for x in matrix)
     off = [(r, c) for r, c in ((0, 1), (0, 2), (1, 2)) if matrix[r, c] != 0]
-    if not off:
+    if not off and not floats:
         return PrincipalAxes(tuple(matrix[n, n] for n in range(3)), frame.basis)
-    if len(off) == 1:
+    if len(off) == 1 and not floats:
         return _one_product(matrix, frame, off[0])
     if all(x.is_number for x in matrix):
         try:
