@@ -226,6 +226,11 @@ class Vector:
             return self
         return NotImplemented
 
+    def __rsub__(self, other):
+        if isinstance(other, int | float | sp.Expr) and other == 0:
+            return -self
+        return NotImplemented
+
     def __neg__(self):
         return Vector._from_parts((f, tuple(-x for x in c)) for f, c in self._parts)
 
@@ -416,6 +421,8 @@ class Vector:
         >>> R1.i.diff(q, R0)
         R1.j
         """
+        if frame is not None:
+            _check_frame(frame, "frame")
         variable = sp.sympify(variable)
         out = Vector.zero()
         for f, c in self._parts:
@@ -513,6 +520,8 @@ class Vector:
         True
         """
         _check_vector(other, "other")
+        if frame is not None:
+            _check_frame(frame, "frame")
         frames = self.frames + other.frames
         if not frames:
             return True
@@ -530,7 +539,7 @@ class Vector:
     def __eq__(self, other):
         if isinstance(other, Vector):
             return set(self._parts) == set(other._parts)
-        if isinstance(other, int | float) and other == 0:
+        if isinstance(other, int | float | sp.Expr) and other == 0:
             return self.is_zero
         return NotImplemented
 
