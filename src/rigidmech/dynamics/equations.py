@@ -161,6 +161,22 @@ class EquationsOfMotion:
 
         return fun
 
+    def _acceleration_only(self, method, params):
+        """q'' = a(t, q) for the geometric (second-order) methods, which need accelerations
+        independent of the velocities (separable systems)."""
+        if any(self._f.has(u) for u in self._u):
+            raise ArgumentError(
+                f"method {method!r} integrates q'' = a(t, q) only, but these equations "
+                "depend on q' (velocity products); use an explicit method such as 'dop853'.")
+        values = self._param_values(params)
+        solve = self._solver()
+        zeros = np.zeros(len(self._u))
+
+        def acc(t, q):
+            return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values)
+
+        return acc
+
     def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
                  atol=1e-10, step=None, n_output=1001, **params) -> Simulation:
         """Integrate the equations from (q0, u0) over ``t`` (ch. 27.2.2).
@@ -189,7 +205,10 @@ class EquationsOfMotion:
         if u0.shape != (n,):
             raise ArgumentError(f"`u0` must give {n} initial values; got {u0.tolist()!r}.")
         y0 = np.concatenate((np.asarray(q0, dtype=float), u0))
-        fun = self.rhs(**params)
+        if method.lower() in ode.methods("second_order"):
+            fun = self._acceleration_only(method, params)
+        else:
+            fun = self.rhs(**params)
         t_eval = np.linspace(t[0], t[1], int(n_output))
         kwargs = {"step": step} if step is not None else {"rtol": rtol, "atol": atol}
         start = _time.perf_counter()
