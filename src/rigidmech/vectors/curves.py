@@ -133,7 +133,10 @@ class Curve:
         return self._frame
 
     def _vec(self, comps) -> Vector:
-        return Vector.from_components(self._frame, [sp.simplify(c) for c in comps])
+        # Numbers (a value of the parameter was given) are left in sympy's canonical form:
+        # simplify costs ~0.1 s per algebraic number and seldom shortens them.
+        return Vector.from_components(
+            self._frame, [c if c.is_number else sp.simplify(c) for c in comps])
 
     def _at(self, at, upto=3):
         ds = self._derivs[:upto]
@@ -458,12 +461,24 @@ def frenet_numeric(points, params, *, method: str = "spline", straight: str = "r
 
     Notes
     -----
-    Accuracy on the helix r = (cos s, sin s, s/2) sampled with step h on [0, 2 pi]
-    (tests/vectors/test_curves.py, ``test_numeric_accuracy``): the spline gives the tangent
-    and the curvature with an error O(h^2) inside (the ends are worse, O(h)), the torsion,
-    which needs r''' (piecewise constant for a cubic spline), with an error O(h) inside;
-    finite differences are O(h^2) inside for all three with larger constants and worse ends.
-    Drop a few samples at each end when the ends matter.
+    Accuracy measured on the helix r = (cos s, sin s, s/2) sampled with a uniform step h on
+    [0, 2 pi] (kappa = 0.8, tau = 0.4; see tests/vectors/test_curves.py,
+    ``test_numeric_accuracy``): maximum errors with n = 101 and 401 samples (h = 0.063 and
+    0.016):
+
+    ==================  ==================  ==================  ==================
+    method              tangent             curvature           torsion
+    ==================  ==================  ==================  ==================
+    spline, inside      3e-8, 1e-10 (h^4)   3e-4, 2e-5 (h^2)    3e-4, 2e-5 (h^2)
+    spline, ends        4e-5, 6e-7 (h^3)    2e-3, 1e-4 (h^2)    2e-3, 2e-4 (h^2)
+    differences, in     2e-4, 1e-5 (h^2)    2e-4, 1e-5 (h^2)    2e-4, 1e-5 (h^2)
+    differences, ends   5e-4, 3e-5 (h^2)    2e-3, 1e-4 (h^2)    0.25 (no convergence)
+    ==================  ==================  ==================  ==================
+
+    "Inside" excludes the first and last 10 % of the samples. With finite differences the
+    torsion is wrong at the first and last three samples (the third derivative comes from
+    three nested one-sided differences there): drop them. Prefer the spline for smooth data;
+    finite differences are local (a noisy sample spoils only its neighbours).
 
     Examples
     --------
