@@ -344,3 +344,13 @@ def test_frames_from_different_trees_meet_in_a_vector():
         (R0.i + S0.j).components(R0)
     with pytest.raises(FrameError, match="belong to different trees"):
         R0.i.dot(S0.i)
+
+
+def test_float_zero_components_are_dropped():
+    """Regression: sympy >= 1.13 has Float(0.0) != 0; float zeros must not survive as parts."""
+    from rigidmech import Frame, Vector
+
+    R0 = Frame("R0")
+    assert Vector.from_components(R0, [0.0, 1.0, 0.0]) == 1.0 * R0.j
+    assert (0.0 * R0.i).is_zero
+    assert (1.0 * R0.i - 1.0 * R0.i).is_zero

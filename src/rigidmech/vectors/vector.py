@@ -48,6 +48,15 @@ def _cross3(u, v):
             term(u[0], v[1], u[1], v[0]))
 
 
+def _is_zero(x):
+    """Exact zero, including a float zero (``Float(0.0) != 0`` in sympy >= 1.13)."""
+    return x == 0 or (x.is_Number and x.is_zero)
+
+
+def _any_nonzero(c):
+    return not all(_is_zero(x) for x in c)
+
+
 def _nonzero(c):
     return sum(1 for x in c if x != 0)
 
@@ -136,6 +145,8 @@ class Vector:
             )
         if any(isinstance(c, sp.MatrixBase) for c in comps):
             raise ArgumentTypeError("`components` must be scalars; got a matrix entry.")
+        # Float(0.0) != 0 in sympy: normalise float zeros so that zero tests stay exact.
+        comps = tuple(ZERO if c.is_Float and c.is_zero else c for c in comps)
         if all(c == 0 for c in comps):
             return cls.zero()
         return cls._from_parts(((frame, comps),))
@@ -218,7 +229,7 @@ class Vector:
             else:
                 merged[f] = c
         return Vector._from_parts(
-            (f, c) for f, c in merged.items() if any(x != 0 for x in c)
+            (f, c) for f, c in merged.items() if _any_nonzero(c)
         )
 
     def __radd__(self, other):
@@ -253,7 +264,7 @@ class Vector:
             return NotImplemented
         if not isinstance(s, sp.Expr):
             return NotImplemented
-        if s == 0:
+        if _is_zero(s):
             return Vector.zero()
         if s == 1:
             return self
@@ -333,7 +344,7 @@ class Vector:
                 old = acc.get(frame)
                 acc[frame] = w if old is None else tuple(
                     a + b for a, b in zip(old, w, strict=True))
-        return Vector._from_parts((f, c) for f, c in acc.items() if any(x != 0 for x in c))
+        return Vector._from_parts((f, c) for f, c in acc.items() if _any_nonzero(c))
 
     def magnitude(self) -> sp.Expr:
         """Norm of the vector (book, ch. 1.3.2).
@@ -387,7 +398,7 @@ class Vector:
         out = Vector.zero()
         for f, c in self._parts:
             d = tuple(sp.diff(x, t) for x in c)
-            if any(x != 0 for x in d):
+            if _any_nonzero(d):
                 out = out + Vector._from_parts(((f, d),))
             if f != frame:
                 w = rotation_vector(f, frame)
@@ -427,7 +438,7 @@ class Vector:
         out = Vector.zero()
         for f, c in self._parts:
             d = tuple(sp.diff(x, variable) if x.has(variable) else ZERO for x in c)
-            if any(x != 0 for x in d):
+            if _any_nonzero(d):
                 out = out + Vector._from_parts(((f, d),))
             if frame is None:
                 if _frame_depends_on(f, f.root, variable):
@@ -456,7 +467,7 @@ class Vector:
         """
         return Vector._from_parts(
             (f, cc) for f, cc in ((f, tuple(sp.sympify(func(x)) for x in c))
-                                  for f, c in self._parts) if any(x != 0 for x in cc)
+                                  for f, c in self._parts) if _any_nonzero(cc)
         )
 
     def subs(self, *args, **kwargs) -> Vector:
@@ -753,4 +764,4 @@ def _rotation(frame, relative_to, variable):
         add(f, 1)
     for f in path_to_ancestor(relative_to, anc):
         add(f, -1)
-    return Vector._from_parts((g, c) for g, c in acc.items() if any(x != 0 for x in c))
+    return Vector._from_parts((g, c) for g, c in acc.items() if _any_nonzero(c))
