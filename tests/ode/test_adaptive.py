@@ -17,6 +17,7 @@ from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 
 from rigidmech import ode
+from rigidmech.ode import adaptive
 
 ADAPTIVE = ["dopri5", "dop853", "gbs"]
 
@@ -138,3 +139,37 @@ def test_no_stiffness_warning_on_a_non_stiff_problem():
         warnings.simplefilter("error")
         ode.solve(kepler_rhs, (0.0, 200.0), kepler_initial(0.6), method="dop853", rtol=1e-10,
                   nstiff=1)
+
+
+@pytest.fixture
+def numpy_path(monkeypatch):
+    """Force the numpy kernel (used for n > 12 or batches) on small systems."""
+    monkeypatch.setattr(adaptive, "FLOAT_PATH_MAX_N", 0)
+
+
+@pytest.mark.parametrize("method", ["dopri5", "dop853"])
+def test_float_and_numpy_kernels_agree(method, request):
+    y0 = kepler_initial(0.9)
+    kw = dict(rtol=1e-9, first_step=0.5, dense_output=True)
+    r_float = ode.solve(kepler_rhs, (0.0, 5.0), y0, method=method, **kw)
+    request.getfixturevalue("numpy_path")
+    r_np = ode.solve(kepler_rhs, (0.0, 5.0), y0, method=method, **kw)
+    assert r_float.nfev == r_np.nfev and r_float.nrejected == r_np.nrejected > 0
+    # identical algorithm; sums in another order (error estimates cancel ~8 digits)
+    assert_allclose(r_float.y, r_np.y, rtol=1e-7, atol=1e-9)
+    assert_allclose(r_float.sol(2.5), r_np.sol(2.5), rtol=1e-7, atol=1e-9)
+
+
+def test_numpy_kernel_same_buffer_and_stiffness(numpy_path):
+    y0 = kepler_initial(0.9)
+    kw = dict(method="dop853", rtol=1e-8, first_step=0.5)
+    fresh = ode.solve(kepler_rhs, (0.0, 3.0), y0, **kw)
+    same = ode.solve(SameBuffer(kepler_rhs), (0.0, 3.0), y0, **kw)
+    assert fresh.nrejected > 0
+    assert_allclose(same.y, fresh.y, rtol=0, atol=0)
+
+    def vdp(t, y, mu=1000.0):
+        return np.array([y[1], mu * (1 - y[0] ** 2) * y[1] - y[0]])
+
+    with pytest.warns(ode.StiffnessWarning, match=r"use method='radau'"):
+        ode.solve(vdp, (0.0, 3.0), [2.0, 0.0], method="dop853", rtol=1e-6)

@@ -32,6 +32,7 @@ from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
 from ._driver import Problem, Recorder, initial_step
+from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
 from ._warnings import StiffnessWarning
 
 __all__ = ["dopri5", "dop853"]
@@ -64,10 +65,30 @@ _D8.E3 = tableaux.DOP853_E3.copy()
 _D8.D = tableaux.DOP853_D.copy()
 _D8.A_extra = [np.ascontiguousarray(a[: 13 + i]) for i, a in enumerate(tableaux.DOP853_A_EXTRA)]
 _D8.c_extra = tableaux.DOP853_C_EXTRA.copy()
+_DP5.kernel_args = ("dopri5", tableaux.DOPRI5.A, _DP5.b, _DP5.c, 6, [_DP5.E])
+_D8.kernel_args = ("dop853", tableaux.DOP853.A, _D8.b, _D8.c, 12, [_D8.E5, _D8.E3])
+_KERNELS = {}
+
+
+def _kernel(pair, n):
+    """The plain-float step of `pair` for `n` equations (generated once, then cached)."""
+    key = (pair.name, n)
+    if key not in _KERNELS:
+        _KERNELS[key] = make_unrolled_stepper(*pair.kernel_args, n)
+    return _KERNELS[key]
+
+
+def _use_float_path(shape, fun, t0, y0):
+    """The plain-float kernel serves one small trajectory whose `fun` returns an ndarray."""
+    if len(shape) != 1 or shape[0] > FLOAT_PATH_MAX_N:
+        return False, None
+    f0 = fun(t0, y0.copy())
+    ok = type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64
+    return ok, f0
 
 
 def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, nstiff):
+               dense_output, events, nstiff, f0=None):
     t0, t_end = t_span
     direction = 1.0 if t_end > t0 else -1.0
     shape = y0.shape
@@ -79,7 +100,11 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
     is853 = pair.name == "dop853"
     K = np.empty((16 if is853 else s + 1, N))
     rec = Recorder(t0, y, shape, dense_output, events, "nested" if is853 else "power")
-    prob(t0, y, K[0])
+    if f0 is None:
+        prob(t0, y, K[0])
+    else:  # already evaluated by the dispatcher
+        prob.nfev += 1
+        K[0] = f0
     if not np.isfinite(K[0]).all():
         rec.fail("The right-hand side is not finite", t0, y)
         return rec.result(pair.name, prob.nfev, 0)
@@ -193,6 +218,136 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
     return rec.result(pair.name, prob.nfev, nrej)
 
 
+def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
+                     dense_output, events, nstiff, f0):
+    """The same algorithm as :func:`_integrate` on lists of floats (one small trajectory)."""
+    t0, t_end = t_span
+    direction = 1.0 if t_end > t0 else -1.0
+    shape = y0.shape
+    N = shape[0]
+    prob = Problem(fun, shape)
+    prob.nfev = 1
+    is853 = pair.name == "dop853"
+    rec = Recorder(t0, y0.reshape(-1), shape, dense_output, events,
+                   "nested" if is853 else "power")
+    if not np.isfinite(f0).all():
+        rec.fail("The right-hand side is not finite", t0, y0)
+        return rec.result(pair.name, prob.nfev, 0)
+    if first_step is None:
+        h_abs = initial_step(prob, t0, y0, f0, direction, pair.order_est, rtol, atol, t_end,
+                             max_step)
+    else:
+        h_abs = first_step
+    atols = list(np.broadcast_to(np.asarray(atol, dtype=float), (N,)).tolist())
+    y = y0.tolist()
+    k0 = f0.tolist()
+    kernel = _kernel(pair, N)
+    exponent = pair.exponent
+    want = rec.cs is not None or events is not None
+    isfinite = math.isfinite
+    sqrt = math.sqrt
+    t = t0
+    nrej = naccpt = iasti = nonsti = 0
+    nfev = 1
+    warned = False
+    while direction * (t - t_end) < 0:
+        if naccpt >= max_steps:
+            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
+            break
+        min_step = 10.0 * abs(math.nextafter(t, direction * math.inf) - t)
+        if h_abs > max_step:
+            h_abs = max_step
+        elif h_abs < min_step:
+            h_abs = min_step
+        rejected = accepted = False
+        while True:
+            if not h_abs >= min_step:
+                break
+            h = h_abs * direction
+            t_new = t + h
+            if direction * (t_new - t_end) > 0:
+                t_new = t_end
+            h = t_new - t
+            h_abs = abs(h)
+            out = kernel(fun, t, y, k0, h)
+            nfev += pair.s
+            y_new = out[0]
+            if is853:
+                s5 = s3 = 0.0
+                for a, b_, e5, e3, at in zip(y, y_new, out[3], out[4], atols, strict=True):
+                    sc = at + rtol * max(abs(a), abs(b_))
+                    s5 += (e5 / sc) ** 2
+                    s3 += (e3 / sc) ** 2
+                den = s5 + 0.01 * s3
+                err = h_abs * s5 / sqrt(den * N) if den > 0 else (0.0 if den == 0 else den)
+            else:
+                acc = 0.0
+                for a, b_, e, at in zip(y, y_new, out[3], atols, strict=True):
+                    acc += (e / (at + rtol * max(abs(a), abs(b_)))) ** 2
+                err = h_abs * sqrt(acc / N)
+            if err < 1.0:
+                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**exponent)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_abs *= factor
+                accepted = True
+                break
+            if isfinite(err):
+                h_abs *= max(MIN_FACTOR, SAFETY * err**exponent)
+            else:
+                h_abs *= MIN_FACTOR
+            rejected = True
+            nrej += 1
+        if not accepted:
+            rec.fail("The step size fell below the resolution of t (step size underflow)",
+                     t, y)
+            break
+        if not isfinite(sum(y_new)):
+            rec.fail("The state became non-finite", t_new, y_new)
+            break
+        naccpt += 1
+        ks = out[1]
+        if nstiff and (naccpt % nstiff == 0 or iasti > 0):
+            ys = out[2]
+            den = sum((a - b_) ** 2 for a, b_ in zip(y_new, ys, strict=True))
+            if den > 0:
+                num = sum((a - b_) ** 2 for a, b_ in zip(ks[-1], ks[-2], strict=True))
+                hlamb = h_abs * sqrt(num / den)
+                if hlamb > pair.stiff_border:
+                    nonsti = 0
+                    iasti += 1
+                    if iasti == 15 and not warned:
+                        warned = True
+                        warnings.warn(
+                            f"The problem seems to have become stiff at t = {t_new:.6g} "
+                            f"(method {pair.name!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
+                            "use method='radau'.",
+                            StiffnessWarning,
+                            stacklevel=4,
+                        )
+                else:
+                    nonsti += 1
+                    if nonsti == 6:
+                        iasti = 0
+        if want:
+            ya, yna = np.array(y), np.array(y_new)
+            if is853:
+                K = np.empty((16, N))
+                K[:13] = ks
+                coeffs = _dense_dop853(pair, prob, t, ya, yna, h, K)
+            else:
+                coeffs = (h * pair.P) @ np.array(ks)
+            stop = rec.accept(t_new, yna, coeffs)
+        else:
+            stop = rec.accept(t_new, y_new)
+        t = t_new
+        y = y_new
+        k0 = ks[-1]
+        if stop:
+            break
+    return rec.result(pair.name, nfev + prob.nfev - 1, nrej)
+
+
 def _dense_dop853(pair, prob, t, y, y_new, h, K):
     """DOP853's interpolation coefficients, computed lazily (3 more evaluations of f)."""
     Kc = K.copy()
@@ -240,9 +395,11 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     """
     nstiff = _check_nstiff(nstiff)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
-        return _integrate(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                          max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                          events=events, nstiff=nstiff)
+        ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
+        run = _integrate_float if ok else _integrate
+        return run(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                   max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                   events=events, nstiff=nstiff, f0=f0)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
@@ -269,9 +426,11 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     """
     nstiff = _check_nstiff(nstiff)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
-        return _integrate(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                          max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                          events=events, nstiff=nstiff)
+        ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
+        run = _integrate_float if ok else _integrate
+        return run(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                   max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                   events=events, nstiff=nstiff, f0=f0)
 
 
 _registry.register("dopri5", dopri5, kind="adaptive")
