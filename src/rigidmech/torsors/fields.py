@@ -32,7 +32,8 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
-from .torsor import Torsor, _check_vector
+from ._checks import _check_vector
+from .torsor import Torsor
 
 __all__ = ["Domain", "torsor_of_sliders", "torsor_of_field", "total_measure",
            "measure_centre"]
