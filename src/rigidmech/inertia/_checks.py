@@ -87,6 +87,42 @@ def _numeric(matrix):
     return None
 
 
+def _sign(e):
+    """-1, 0, 1 when decided structurally, else None.
+
+    sympy's ``is_negative`` on a new expression runs the assumptions system (tens of
+    milliseconds each time a body brings new symbols); products and sums of numbers and
+    symbols declared positive are decided here by their structure, and only what this cannot
+    decide goes to sympy.
+    """
+    if e.is_Number:
+        return 1 if e > 0 else (-1 if e < 0 else 0)
+    if e.is_Symbol:
+        return 1 if e.is_positive else (-1 if e.is_negative else None)
+    if e.is_Pow:
+        b = _sign(e.base)
+        if b == 1:
+            return 1
+        return 1 if (e.exp.is_Integer and e.exp % 2 == 0 and b is not None and b != 0) \
+            else None
+    if e.is_Mul:
+        out = 1
+        for a in e.args:
+            sa = _sign(a)
+            if sa is None:
+                return None
+            out *= sa
+        return out
+    if e.is_Add:
+        signs = {_sign(a) for a in e.args}
+        if signs <= {0, 1}:
+            return 1 if 1 in signs else 0
+        if signs <= {0, -1}:
+            return -1 if -1 in signs else 0
+        return None
+    return None
+
+
 def check_inertia(matrix, argument, *, products=False, scale=None):
     """Raise ArgumentError unless the symmetric ``matrix`` can be an operator of inertia.
 
@@ -108,9 +144,10 @@ def check_inertia(matrix, argument, *, products=False, scale=None):
                     if values[n, n] > values[(n + 1) % 3, (n + 1) % 3]
                     + values[(n + 2) % 3, (n + 2) % 3] + tol]
     else:
-        negative = [n for n in range(3) if diag[n].is_negative]
-        triangle = [n for n in range(3)
-                    if (diag[(n + 1) % 3] + diag[(n + 2) % 3] - diag[n]).is_negative]
+        negative = [n for n in range(3) if _sign(diag[n]) == -1]
+        # The triangle inequality with symbols needs new sums, whose construction costs
+        # more than the rest of a body's set-up; it is checked once numbers are given.
+        triangle = []
     if negative:
         n = negative[0]
         name = _MOMENT_NAMES[n]

@@ -31,7 +31,7 @@ from ._rotations import (
     path_to_ancestor,
     transpose,
 )
-from .symbols import t
+from .symbols import time_derivative
 
 __all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector"]
 
@@ -397,13 +397,7 @@ class Vector:
         _check_frame(frame, "frame")
         out = Vector.zero()
         for f, c in self._parts:
-            d = tuple(sp.diff(x, t) for x in c)
-            if _any_nonzero(d):
-                out = out + Vector._from_parts(((f, d),))
-            if f != frame:
-                w = rotation_vector(f, frame)
-                if w._parts:
-                    out = out + w.cross(Vector._from_parts(((f, c),)))
+            out = out + _dt_part(f, c, frame)
         return out
 
     def diff(self, variable, frame=None) -> Vector:
@@ -616,6 +610,19 @@ class Vector:
         return f"$\\displaystyle {self._latex()}$"
 
 
+@lru_cache(maxsize=65536)
+def _dt_part(f, c, frame):
+    """d/dt|frame of the part ``c`` (components in the basis of ``f``), memoised: bodies of a
+    chain share the parts of their position vectors, so each is differentiated once."""
+    d = tuple(time_derivative(x) for x in c)
+    out = Vector._from_parts(((f, d),)) if _any_nonzero(d) else Vector.zero()
+    if f != frame:
+        w = rotation_vector(f, frame)
+        if w._parts:
+            out = out + w.cross(Vector._from_parts(((f, c),)))
+    return out
+
+
 def _check_vector(v, argument):
     if not isinstance(v, Vector):
         raise ArgumentTypeError(f"`{argument}` must be a Vector; got {type(v).__name__}.")
@@ -682,7 +689,7 @@ def _own_rotation(f, variable=None):
     derivative with respect to the rate of ``variable`` (the partial rotation vector)."""
 
     def rate(x):
-        return sp.diff(x, t) if variable is None else (
+        return time_derivative(x) if variable is None else (
             sp.diff(x, variable) if x.has(variable) else ZERO)
 
     if f._axis is not None:
