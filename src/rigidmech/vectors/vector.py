@@ -168,16 +168,9 @@ class Vector:
         return not self._parts
 
     def _comps(self, frame):
-        acc = [ZERO, ZERO, ZERO]
-        for f, c in self._parts:
-            if f is frame or f == frame:
-                v = c
-            else:
-                v = matvec(direction_cosines(frame, f), c)
-            for n in range(3):
-                if v[n] != 0:
-                    acc[n] = acc[n] + v[n]
-        return tuple(acc)
+        if len(self._parts) == 1 and self._parts[0][0] is frame:
+            return self._parts[0][1]
+        return _components(self._parts, frame)
 
     def components(self, frame) -> sp.ImmutableMatrix:
         """Column of the components in the basis of ``frame``.
@@ -608,6 +601,19 @@ class Vector:
 
     def _repr_latex_(self):
         return f"$\\displaystyle {self._latex()}$"
+
+
+@lru_cache(maxsize=65536)
+def _components(parts, frame):
+    """Components in the basis of ``frame`` of the vector made of ``parts`` (memoised: the
+    same partial velocities are dotted with many others in a derivation)."""
+    acc = [ZERO, ZERO, ZERO]
+    for f, c in parts:
+        v = c if (f is frame or f == frame) else matvec(direction_cosines(frame, f), c)
+        for n in range(3):
+            if v[n] != 0:
+                acc[n] = acc[n] + v[n]
+    return tuple(acc)
 
 
 @lru_cache(maxsize=65536)
