@@ -155,8 +155,11 @@ def test_float_and_numpy_kernels_agree(method, request):
     request.getfixturevalue("numpy_path")
     r_np = ode.solve(kepler_rhs, (0.0, 5.0), y0, method=method, **kw)
     assert r_float.nfev == r_np.nfev and r_float.nrejected == r_np.nrejected > 0
-    # identical algorithm; sums in another order (error estimates cancel ~8 digits)
-    assert_allclose(r_float.y, r_np.y, rtol=1e-7, atol=1e-9)
+    # identical algorithm, sums in another order: the error estimates cancel ~8 digits, so
+    # step sizes differ in the 8th digit; at the common final time the states agree to
+    # rounding (measured 1e-13), and the dense outputs to the tolerance
+    assert_allclose(r_float.t, r_np.t, rtol=1e-6)
+    assert_allclose(r_float.y[:, -1], r_np.y[:, -1], rtol=1e-11, atol=1e-12)
     assert_allclose(r_float.sol(2.5), r_np.sol(2.5), rtol=1e-7, atol=1e-9)
 
 

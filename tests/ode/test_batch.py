@@ -30,14 +30,17 @@ def test_fixed_step_batch_equals_loop(method):
 @pytest.mark.parametrize("method", ["dopri5", "dop853", "gbs", "radau"])
 def test_adaptive_batch_of_copies_equals_single(method):
     # identical trajectories: the max norm over the batch is the single norm, so the same
-    # steps are taken; the error estimates cancel ~8 digits, so the different order of the
-    # floating-point sums in the batched code shows in the 8th digit of the step sizes
+    # steps are taken. The error estimates cancel ~8 digits, so the different order of the
+    # floating-point sums in the batched code shows in the 8th digit of the step sizes (and
+    # of the states at those slightly shifted times); at the common final time the states
+    # agree to rounding (measured <= 1e-13)
     y0 = np.repeat(kepler_initial(0.6)[:, None], 3, axis=1)
     rb = ode.solve(kepler_rhs, (0.0, 7.0), y0, method=method, rtol=1e-8)
     rs = ode.solve(kepler_rhs, (0.0, 7.0), y0[:, 0], method=method, rtol=1e-8)
     assert rb.nsteps == rs.nsteps and rb.nfev == rs.nfev
+    assert_allclose(rb.t, rs.t, rtol=1e-6)
     for j in range(3):
-        assert_allclose(rb.y[:, :, j], rs.y, rtol=1e-8, atol=1e-9)
+        assert_allclose(rb.y[:, -1, j], rs.y[:, -1], rtol=1e-12, atol=1e-12)
 
 
 @pytest.mark.parametrize("method", ["dopri5", "dop853", "gbs", "radau"])

@@ -139,7 +139,9 @@ class Recorder:
         self.message = "The integration reached the end of `t_span`."
 
     def accept(self, t_new, y_new, coeffs=None):
-        """Record one accepted step (copies `y_new`); return True if a terminal event fired.
+        """Record one accepted step; return True if a terminal event fired.
+
+        `y_new` is kept as it is: the integrators pass a fresh array that they never modify.
 
         `coeffs` holds the dense coefficients of the step, or a zero-argument callable
         computing them (called only if they are needed: dense output, or a sign change of an
@@ -148,7 +150,7 @@ class Recorder:
         t_old = self.ts[-1]
         y_old = self.ys[-1]
         self.ts.append(t_new)
-        self.ys.append(y_new.copy())
+        self.ys.append(y_new)
         if self.cs is not None:
             if callable(coeffs):
                 coeffs = coeffs()

@@ -63,6 +63,7 @@ _D8 = _Pair("dop853", tableaux.DOP853, 7, 6.1)
 _D8.E5 = tableaux.DOP853_E5.copy()
 _D8.E3 = tableaux.DOP853_E3.copy()
 _D8.D = tableaux.DOP853_D.copy()
+_D8.E53 = np.stack([_D8.E5, _D8.E3])
 _D8.A_extra = [np.ascontiguousarray(a[: 13 + i]) for i, a in enumerate(tableaux.DOP853_A_EXTRA)]
 _D8.c_extra = tableaux.DOP853_C_EXTRA.copy()
 _DP5.kernel_args = ("dopri5", tableaux.DOPRI5.A, _DP5.b, _DP5.c, 6, [_DP5.E])
@@ -114,6 +115,8 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
     else:
         h_abs = first_step
     A, c, b, exponent = pair.A, pair.c, pair.b, pair.exponent
+    E53 = pair.E53 if is853 else None
+    dot = np.dot
     t = t0
     nrej = 0
     naccpt = 0
@@ -140,23 +143,37 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
             h = t_new - t
             h_abs = abs(h)
             for i in range(1, s):
-                ys = y + (h * A[i]) @ K[:i]
+                ys = dot(A[i], K[:i])
+                ys *= h
+                ys += y
                 prob(t + c[i] * h, ys, K[i])
-            y_new = y + (h * b) @ K[:s]
+            y_new = dot(b, K[:s])
+            y_new *= h
+            y_new += y
             prob(t_new, y_new, K[s])
-            scale = atol + rtol * np.maximum(np.abs(y), np.abs(y_new))
+            scale = np.abs(y)
+            np.maximum(scale, np.abs(y_new), out=scale)
+            scale *= rtol
+            scale += atol
             if is853:
-                s5 = prob.sumsq((pair.E5 @ K[:13]) / scale)
-                s3 = prob.sumsq((pair.E3 @ K[:13]) / scale)
-                den = s5 + 0.01 * s3
+                e53 = dot(E53, K[:13])
+                e53 /= scale
                 if prob.batch:
+                    sq = (e53 * e53).reshape((2,) + shape).sum(axis=1)
+                    s5, s3 = sq[0], sq[1]
+                    den = s5 + 0.01 * s3
                     with np.errstate(invalid="ignore", divide="ignore"):
                         e = np.where(den > 0, h_abs * s5 / np.sqrt(den * n), 0.0)
                     err = float(np.max(e))
                 else:
-                    err = h_abs * s5 / math.sqrt(den * N) if den > 0 else 0.0
+                    s5, s3 = np.einsum("ij,ij->i", e53, e53).tolist()
+                    den = s5 + 0.01 * s3
+                    err = h_abs * s5 / math.sqrt(den * N) if den > 0 else (
+                        0.0 if den == 0 else den)
             else:
-                err = prob.norm(((h * pair.E) @ K[: s + 1]) / scale)
+                e = dot(pair.E, K[: s + 1])
+                e /= scale
+                err = h_abs * prob.norm(e)
             if err < 1.0:
                 if err == 0.0:
                     factor = MAX_FACTOR
