@@ -295,10 +295,16 @@ def header():
     import sympy as sp
 
     load = os.getloadavg()
+    try:
+        rev = subprocess.run(["git", "describe", "--always", "--dirty"], capture_output=True,
+                             text=True, cwd=os.path.dirname(os.path.abspath(__file__)),
+                             timeout=10).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        rev = ""
     lines = [
         "Planar n-link pendulum: deriving M(q) q'' = f with rigidmech vs sympy KanesMethod",
         f"python {platform.python_version()}, sympy {sp.__version__}, numpy {np.__version__}, "
-        f"{os.cpu_count()} cores, {platform.machine()}",
+        f"{os.cpu_count()} cores, {platform.machine()}, rigidmech {rev or '(no git)'}",
         f"load average (1, 5, 15 min) at start: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}"
         + ("  -- machine shared with other jobs: absolute times inflated"
            if load[0] > 0.5 * (os.cpu_count() or 1) else ""),
