@@ -1,17 +1,17 @@
 """Parametrised curves: arc length, Frenet trihedron, curvature, torsion (book, ch. 4).
 
 A :class:`Curve` is the position r(s) of a point, relative to a frame, as a function of a
-parameter s (ch. 4.1). Derivatives with respect to s are taken relative to that frame. With the
-curvilinear abscissa sigma (ds/dsigma = 1/|r'|, ch. 4.2) the book defines the unit tangent T, the
-principal normal N, the binormal B = T ^ N, the curvature kappa = 1/rho and the torsion tau by
-the Frenet formulas (ch. 4.3-4.4)
+parameter s (ch. 4.1). Derivatives with respect to s are taken relative to that frame. With
+the curvilinear abscissa sigma (``ds/dsigma = 1/|r'|``, ch. 4.2) the book defines the unit
+tangent T, the principal normal N, the binormal B = T ^ N, the curvature kappa = 1/rho and
+the torsion tau by the Frenet formulas (ch. 4.3-4.4)
 
 .. math:: \\frac{d\\mathbf{T}}{d\\sigma} = \\kappa\\,\\mathbf{N}, \\qquad
           \\frac{d\\mathbf{N}}{d\\sigma} = -\\kappa\\,\\mathbf{T} + \\tau\\,\\mathbf{B}, \\qquad
           \\frac{d\\mathbf{B}}{d\\sigma} = -\\tau\\,\\mathbf{N},
 
-computed for any parameter by kappa = |r' ^ r''| / |r'|^3 and
-tau = (r', r'', r''') / |r' ^ r''|^2. With this sign convention a right-handed helix has a
+computed for any parameter by ``kappa = |r' ^ r''| / |r'|^3`` and
+``tau = (r', r'', r''') / |r' ^ r''|^2``. With this sign convention a right-handed helix has a
 positive torsion. :func:`frenet_numeric` does the same for a curve known by samples.
 
 Where r' = 0 the point is singular (no tangent): rigidmech raises an error instead of returning
@@ -200,7 +200,7 @@ class Curve:
         return self._vec(self._at(at, 1)[0])
 
     def speed(self, at=None) -> sp.Expr:
-        """|dr/ds|, the derivative of the curvilinear abscissa dsigma/ds (ch. 4.2).
+        """``|dr/ds|``, the derivative of the curvilinear abscissa dsigma/ds (ch. 4.2).
 
         Examples
         --------
@@ -266,7 +266,7 @@ class Curve:
         return sp.Float(value)
 
     def curvilinear_abscissa(self, origin=0):
-        """The curvilinear abscissa sigma(s) = integral from ``origin`` to s of |r'| (ch. 4.2).
+        """The curvilinear abscissa sigma(s) = integral from ``origin`` to s of ``|r'|`` (ch. 4.2).
 
         Returns a sympy expression of the parameter (an unevaluated ``Integral`` when sympy
         cannot integrate the speed).
@@ -284,7 +284,7 @@ class Curve:
         return sp.simplify(sp.integrate(speed, (u, sp.sympify(origin), self._parameter)))
 
     def tangent(self, at=None) -> Vector:
-        """The unit tangent T = r' / |r'| (ch. 4.3).
+        """The unit tangent ``T = r' / |r'|`` (ch. 4.3).
 
         Examples
         --------
@@ -299,7 +299,7 @@ class Curve:
         return self._vec(d1 / sp.sqrt(v2))
 
     def curvature(self, at=None) -> sp.Expr:
-        """Curvature kappa = |r' ^ r''| / |r'|^3 (ch. 4.3); 0 on a straight line.
+        """Curvature ``kappa = |r' ^ r''| / |r'|^3`` (ch. 4.3); 0 on a straight line.
 
         Examples
         --------
@@ -334,7 +334,7 @@ class Curve:
         return sp.simplify(1 / self.curvature(at))
 
     def binormal(self, at=None) -> Vector:
-        """The binormal B = r' ^ r'' / |r' ^ r''| = T ^ N (ch. 4.4).
+        """The binormal ``B = r' ^ r'' / |r' ^ r''| = T ^ N`` (ch. 4.4).
 
         Examples
         --------
@@ -369,7 +369,7 @@ class Curve:
         return self._vec(c.cross(d1) / sp.sqrt(c2 * v2))
 
     def torsion(self, at=None) -> sp.Expr:
-        """Torsion tau = (r', r'', r''') / |r' ^ r''|^2 (ch. 4.4); positive for a right-handed
+        """Torsion ``tau = (r', r'', r''') / |r' ^ r''|^2`` (ch. 4.4); positive for a right-handed
         helix.
 
         Examples
@@ -407,8 +407,6 @@ class FrenetSamples(NamedTuple):
 
     Examples
     --------
-    >>> import numpy as np
-    >>> s = np.linspace(0, 1, 5)
     >>> FrenetSamples._fields
     ('tangent', 'normal', 'binormal', 'curvature', 'torsion', 'speed')
     """
@@ -418,7 +416,7 @@ class FrenetSamples(NamedTuple):
     binormal: np.ndarray  #: (n, 3) binormals
     curvature: np.ndarray  #: (n,)
     torsion: np.ndarray  #: (n,)
-    speed: np.ndarray  #: (n,) |dr/ds|
+    speed: np.ndarray  #: (n,) ``|dr/ds|``
 
 
 def _readonly(a):

@@ -165,7 +165,7 @@ def derivation_formula(u: Vector, relative_to, via) -> Vector:
     """The time derivative of u relative to ``relative_to`` computed through the frame ``via``
     by the derivation formula (ch. 3.1.4, 9.2.3).
 
-    d/dt|R0 u = d/dt|R1 u + omega(R1/R0) ^ u, with R0 = ``relative_to`` and R1 = ``via``.
+    ``d/dt|R0 u = d/dt|R1 u + omega(R1/R0) ^ u``, with R0 = ``relative_to`` and R1 = ``via``.
 
     Examples
     --------

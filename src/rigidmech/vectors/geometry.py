@@ -448,8 +448,8 @@ def distance(a, b):
     Returns
     -------
     sympy expression
-        * point-line: |AP ^ u| / |u|; point-plane: |n . AP| / |n|;
-        * line-line: |(A2 - A1) . (u1 ^ u2)| / |u1 ^ u2| (the length of the common
+        * point-line: ``|AP ^ u| / |u|``; point-plane: ``|n . AP| / |n|``;
+        * line-line: ``|(A2 - A1) . (u1 ^ u2)| / |u1 ^ u2|`` (the length of the common
           perpendicular), or the point-line distance for parallel lines;
         * line-plane and plane-plane: 0 when they meet, else the distance from a point.
 
@@ -490,8 +490,8 @@ def common_perpendicular(line1: Line, line2: Line, *, names=("H1", "H2")):
     """Feet (H1, H2) of the common perpendicular of two non-parallel lines (ch. 2.2.4).
 
     H1 = A1 + lambda1 u1 and H2 = A2 + lambda2 u2 with H1H2 orthogonal to u1 and u2:
-    lambda1 = ((A2 - A1) ^ u2) . n / |n|^2 and lambda2 = ((A2 - A1) ^ u1) . n / |n|^2,
-    n = u1 ^ u2. The distance between the lines is |H1H2|; H1 = H2 for secant lines.
+    ``lambda1 = ((A2 - A1) ^ u2) . n / |n|^2`` and ``lambda2 = ((A2 - A1) ^ u1) . n / |n|^2``,
+    n = u1 ^ u2. The distance between the lines is ``|H1H2|``; H1 = H2 for secant lines.
 
     Raises
     ------
@@ -525,7 +525,7 @@ def common_perpendicular(line1: Line, line2: Line, *, names=("H1", "H2")):
 def angle(u: Vector, v: Vector):
     """Angle in [0, pi] between two non-zero vectors, e.g. the bipoints AB and AC (ch. 2.1.4).
 
-    cos(angle) = u . v / (|u| |v|).
+    ``cos(angle) = u . v / (|u| |v|)``.
 
     Examples
     --------
