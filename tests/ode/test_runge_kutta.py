@@ -5,7 +5,7 @@ import pytest
 from numpy.testing import assert_allclose
 
 from rigidmech import ode
-from rigidmech.ode import tableaux
+from rigidmech.ode import runge_kutta, tableaux
 from rigidmech.ode.runge_kutta import fixed_step_method
 
 
@@ -71,3 +71,21 @@ def test_same_result_as_a_hand_written_rk4():
         y, t = y + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4), t + h
     r = ode.solve(rhs, (0.0, 2.0), [1.0], method="rk4", step=0.1)
     assert_allclose(r.y[0, -1], y, rtol=1e-14)
+
+
+@pytest.mark.parametrize("method", ["euler", "heun", "midpoint", "rk4", "rk38"])
+def test_float_and_numpy_kernels_agree(method, monkeypatch):
+    def osc(t, y):
+        return np.array([y[1], -y[0] + np.sin(t)])
+
+    r_float = ode.solve(osc, (0.0, 3.0), [1.0, 0.0], method=method, step=0.01)
+    monkeypatch.setattr(runge_kutta, "FLOAT_PATH_MAX_N", 0)  # force the numpy kernel
+    r_np = ode.solve(osc, (0.0, 3.0), [1.0, 0.0], method=method, step=0.01)
+    assert r_float.nfev == r_np.nfev == 300 * tableaux.ALL[method].stages
+    # same operations in another order: rounding only, over 300 steps
+    assert_allclose(r_float.y, r_np.y, rtol=1e-12, atol=1e-13)
+
+
+def test_float_kernel_not_used_when_fun_returns_a_list():
+    r = ode.solve(lambda t, y: [-y[0]], (0.0, 1.0), [1.0], method="rk4", step=0.1)
+    assert_allclose(r.y[0, -1], 0.36787977441, rtol=1e-10)  # same as the ndarray version

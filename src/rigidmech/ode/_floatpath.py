@@ -34,6 +34,9 @@ def _compile(name, lines):
 def make_unrolled_stepper(name, A, b, c, s, errors, n):
     """Generate ``step(fun, t, y, k0, h) -> (y_new, ks, y_last_stage, *error_vectors)``.
 
+    With ``errors=None`` the step of a fixed-step method is generated instead:
+    ``step(fun, t, y, k0, h) -> y_new``, without the evaluation at ``(t + h, y_new)``.
+
     Parameters
     ----------
     name : str
@@ -59,6 +62,9 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n):
     ...                              [np.array([-1.0, 1.0])], 1)
     >>> step(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.1)[0]
     [0.9]
+    >>> make_unrolled_stepper("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1, None,
+    ...                       1)(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.1)
+    [0.9]
     """
     lines = [f"def step_{name}_{n}(fun, t, y, k0, h):"]
     comps = range(n)
@@ -77,6 +83,9 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n):
         last = "ys"
     elems = ", ".join(f"y_{j} + h*({combo(b, s, j)})" for j in comps)
     lines.append(f"    yn = [{elems}]")
+    if errors is None:
+        lines.append("    return yn")
+        return _compile(f"{name}_{n}", lines)
     lines.append(f"    k{s} = _tolist(fun(t + h, _arr(yn)))")
     lines.append(f"    {', '.join(f'k{s}_{j}' for j in comps)}, = k{s}")
     outs = []

@@ -9,12 +9,15 @@ of any tableau, and the methods ``"euler"``, ``"heun"``, ``"midpoint"``, ``"rk4"
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from rigidmech._core.errors import ArgumentTypeError
 
 from . import _registry, tableaux
 from ._driver import Problem, fail_message
+from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
 from ._result import OdeResult
 
 __all__ = ["fixed_step_method", "integrate_fixed"]
@@ -52,6 +55,12 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
     shape = y0.shape
     nsteps = max(1, int(round((t1 - t0) / step)))
     h = (t1 - t0) / nsteps
+    if len(shape) == 1 and shape[0] <= FLOAT_PATH_MAX_N:
+        f0 = fun(t0, y0.copy())
+        if type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64:
+            return _integrate_fixed_float(tableau, fun, t0, t1, y0, f0, nsteps, h)
+    else:
+        f0 = None
     prob = Problem(fun, shape)
     A, b, c = tableau.A, tableau.b, tableau.c
     s = tableau.stages
@@ -67,7 +76,11 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
     for k in range(nsteps):
         t = t0 + k * h
         y = Y[k]
-        prob(t, y, K[0])
+        if k == 0 and f0 is not None:
+            prob.nfev += 1
+            K[0] = f0
+        else:
+            prob(t, y, K[0])
         for i in range(1, s):
             prob(t + hc[i], y + hA[i] @ K[:i], K[i])
         y_new = Y[k + 1]
@@ -82,6 +95,42 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
     Yk = Y[: last + 1]
     y_out = np.ascontiguousarray(np.moveaxis(Yk.reshape((last + 1,) + shape), 0, 1))
     return OdeResult(t=t_grid, y=y_out, nfev=prob.nfev, nsteps=last, nrejected=0,
+                     status=status, message=message, method=tableau.name)
+
+
+_KERNELS: dict = {}
+
+
+def _integrate_fixed_float(tableau, fun, t0, t1, y0, f0, nsteps, h):
+    """:func:`integrate_fixed` on lists of floats, for one small trajectory."""
+    n = y0.shape[0]
+    key = (tableau, n)
+    if key not in _KERNELS:
+        _KERNELS[key] = make_unrolled_stepper(tableau.name, tableau.A, tableau.b, tableau.c,
+                                              tableau.stages, None, n)
+    step = _KERNELS[key]
+    arr, isfinite = np.array, math.isfinite
+    y = y0.tolist()
+    ys = [y]
+    k0 = f0.tolist()
+    status, message, last = 0, "The integration reached the end of `t_span`.", nsteps
+    nfev = 1
+    for k in range(nsteps):
+        t = t0 + k * h
+        if k:
+            k0 = fun(t, arr(y)).tolist()
+            nfev += 1
+        y = step(fun, t, y, k0, h)
+        nfev += tableau.stages - 1
+        if not isfinite(sum(y)):
+            status, last = -1, k
+            message = fail_message("The state became non-finite", t + h, y, y0.shape)
+            break
+        ys.append(y)
+    t_grid = t0 + h * np.arange(last + 1)
+    if status == 0:
+        t_grid[-1] = t1
+    return OdeResult(t=t_grid, y=np.array(ys).T.copy(), nfev=nfev, nsteps=last, nrejected=0,
                      status=status, message=message, method=tableau.name)
 
 
