@@ -1,0 +1,100 @@
+"""Mechanical actions, power, connections (book, ch. 11-13)."""
+
+import pytest
+import sympy as sp
+
+import rigidmech as rm
+from rigidmech.kinematics import Solid, kinematic_torsor
+
+
+def test_power_of_a_force_is_force_dot_velocity():
+    """Ch. 11.3.5: P = F . v(A) for a force applied at A."""
+    q = rm.coordinates("q")
+    F, r = sp.symbols("F r")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    A = R0.origin.moved("A", r * R1.i)
+    S = Solid("S", frame=R1)
+    (_, T), = rm.Force(on=S, vector=F * R0.i, at=A).contributions([S])
+    V = kinematic_torsor(R1, relative_to=R0, at=R0.origin)
+    assert sp.simplify(rm.power(T, V) - F * R0.i.dot(A.velocity(R0))) == 0
+
+
+def test_perfect_pivot_and_prismatic_connections_develop_no_power():
+    """Ch. 13.2.4: the unknown action torsor of a perfect joint has zero comoment with every
+    relative motion the joint allows."""
+    q, x = rm.coordinates("q x")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    pivot = rm.joints.Pivot(at=R0.origin, axis=R0.k)
+    T, unknowns = pivot.action_torsor("01")
+    assert sp.simplify(rm.power(T, kinematic_torsor(R1, relative_to=R0, at=R0.origin))) == 0
+    assert [u.name for u in unknowns] == ["X_01", "Y_01", "Z_01", "L_01", "M_01"]
+    R2 = R0.translated("R2", R0.point("P", x, 0, 0))
+    prismatic = rm.joints.Prismatic(at=R2.origin, axis=R0.i)
+    T2, _ = prismatic.action_torsor("02")
+    assert sp.simplify(rm.power(T2, kinematic_torsor(R2, relative_to=R0, at=R2.origin))) == 0
+
+
+def test_gravity_potential_energy_gives_its_power():
+    """Ch. 12.2.3: the power of gravity is -dV/dt with V = -m g . OG."""
+    q = rm.coordinates("q")
+    m, L, g = rm.constants("m L g", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    G = R0.origin.moved("G", L / 2 * R1.i)
+    body = rm.Body("b", frame=R1, mass=m, centre=G)
+    grav = rm.gravity(g * R0.i)
+    (_, T), = grav.contributions([body])
+    V = grav.potential_energy([body], R0)
+    P = rm.power(T, body.kinematic_torsor(relative_to=R0, at=G))
+    assert sp.simplify(P + rm.vectors.time_derivative(V)) == 0
+
+
+def test_spring_potential_and_force_agree():
+    """Force of a spring = -grad of k (l - l0)^2 / 2 (power of the spring = -dV/dt)."""
+    x = rm.coordinates("x")
+    k, l0 = sp.symbols("k l0", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.translated("R1", R0.point("P", x, 0, 0))
+    S = Solid("S", frame=R1)
+    spring = rm.Spring(k, l0, a=R0.point("A", -1, 0, 0), b=R1.origin, on_b=S)
+    (_, T), = spring.contributions([S])
+    P = rm.power(T, kinematic_torsor(R1, relative_to=R0, at=R1.origin))
+    V = spring.potential_energy([S], R0)
+    # the spring is stretched (x > -1): its length is x + 1
+    assert sp.simplify((P + rm.vectors.time_derivative(V)).subs(x, x)) == 0
+
+
+def test_joint_axis_must_be_a_basis_vector():
+    R0 = rm.Frame("R0")
+    with pytest.raises(ValueError, match="must be a unit basis vector of a frame"):
+        rm.joints.Pivot(at=R0.origin, axis=2 * R0.k)
+    with pytest.raises(TypeError, match="`axis` must be a Vector; got the Point"):
+        rm.joints.Pivot(at=R0.origin, axis=R0.origin)
+    with pytest.raises(TypeError, match="`at` must be a Point"):
+        rm.joints.Pivot(at=R0.k, axis=R0.k)
+
+
+def test_system_refuses_a_joint_the_frames_do_not_realise():
+    """A body turning about k0 at O cannot be pivoted at A != O."""
+    q = rm.coordinates("q")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    body = rm.Body("b", frame=R1, mass=1, centre=R0.origin.moved("G", R1.i))
+    s = rm.System(galilean=R0)
+    with pytest.raises(ValueError, match="Pivot at A: the relative motion is not allowed"):
+        s.connect(R0, body, rm.joints.Pivot(at=R0.point("A", 1, 0, 0), axis=R0.k))
+    with pytest.raises(ValueError, match="Pivot at O_R0: the relative motion is not allowed"):
+        s.connect(R0, body, rm.joints.Pivot(at=R0.origin, axis=R0.i))
+
+
+def test_system_argument_errors():
+    R0 = rm.Frame("R0")
+    s = rm.System(galilean=R0)
+    with pytest.raises(TypeError, match="`action` must be an Action"):
+        s.act(R0.i)
+    with pytest.raises(TypeError, match="`galilean` must be a Frame"):
+        rm.System(galilean="R0")
+    with pytest.raises(ValueError, match="no parameter of situation"):
+        s.equations_of_motion()
