@@ -89,7 +89,9 @@ def linearly_independent(*vectors) -> bool:
     ``a i + j`` and ``i + a j``, the determinant ``a**2 - 1`` vanishes for a = 1 and
     a = -1); substitute values to decide such cases. Zero-testing of sympy expressions is
     undecidable in general: a minor that is zero but that ``simplify`` cannot reduce makes the
-    function answer ``True``.
+    function answer ``True``. Floating-point components are taken as exact (a number counts as
+    zero below 1e-25 only): round-off makes nearly dependent vectors independent, so give
+    rationals or round the data first.
 
     Examples
     --------

@@ -247,7 +247,10 @@ class Curve:
         speed = self.speed()
         s = self._parameter
         if method != "numeric":
-            value = sp.integrate(speed, (s, start, end))
+            try:
+                value = sp.integrate(speed, (s, start, end))
+            except (NotImplementedError, sp.PolynomialError, ValueError):  # sympy gave up
+                value = sp.Integral(speed, (s, start, end))
             if not value.has(sp.Integral):
                 return sp.simplify(value)
             if method == "symbolic":
