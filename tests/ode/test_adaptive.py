@@ -13,6 +13,8 @@ from _ode_exact import (
     oscillator_exact,
     oscillator_rhs,
 )
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 
@@ -176,3 +178,17 @@ def test_numpy_kernel_same_buffer_and_stiffness(numpy_path):
 
     with pytest.warns(ode.StiffnessWarning, match=r"use method='radau'"):
         ode.solve(vdp, (0.0, 3.0), [2.0, 0.0], method="dop853", rtol=1e-6)
+
+
+@settings(max_examples=25)
+@given(lam=st.floats(-3.0, -0.05), omega=st.floats(0.0, 3.0),
+       method=st.sampled_from(["dopri5", "dop853", "gbs"]))
+def test_linear_scalar_problems_meet_the_tolerance(lam, omega, method):
+    # y' = (lam + i omega) y as a real 2-d system: |y| = exp(lam t), phase omega t
+    def rhs(t, y):
+        return np.array([lam * y[0] - omega * y[1], omega * y[0] + lam * y[1]])
+
+    r = ode.solve(rhs, (0.0, 2.0), [1.0, 0.0], method=method, rtol=1e-9, atol=1e-12)
+    exact = np.exp(2 * lam) * np.array([np.cos(2 * omega), np.sin(2 * omega)])
+    # dissipative linear problems: the global error stays within a small multiple of rtol
+    assert np.max(np.abs(r.y[:, -1] - exact)) < 20 * 1e-9

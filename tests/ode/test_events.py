@@ -102,3 +102,13 @@ def test_tracker_reports_zero_at_step_end_once():
     assert not tr.check(0.0, 1.0, np.array([1.0]), lambda t: np.array([t]))
     assert not tr.check(1.0, 2.0, np.array([2.0]), lambda t: np.array([t]))
     assert [list(v) for v in tr.t_events] == [[1.0]]
+
+
+def test_events_and_t_eval_for_a_second_order_method():
+    # q'' = -g with Stormer-Verlet (part B): exact on a parabola, like its Hermite interpolant
+    ground = ode.event(lambda t, y: y[0], terminal=True, direction=-1)
+    r = ode.solve(lambda t, q: np.array([-G]), (0.0, 10.0), [H, 0.0], method="verlet",
+                  step=0.05, events=ground, t_eval=[0.5, 1.0])
+    assert r.status == 1
+    assert_allclose(r.t_events[0], [np.sqrt(2 * H / G)], atol=1e-10)
+    assert_allclose(r.y, [[H - G / 8, H - G / 2], [-G / 2, -G]], atol=1e-12)
