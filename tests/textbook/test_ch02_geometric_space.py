@@ -15,11 +15,11 @@ from rigidmech.vectors.geometry import (
     Line,
     Plane,
     angle,
-    change_of_coordinates,
     common_perpendicular,
     distance,
     intersection,
 )
+from rigidmech.vectors.reference_change import change_of_coordinates
 
 R0 = Frame("R0")
 V = R0.vector

@@ -1,5 +1,5 @@
-"""Tests of rigidmech.vectors.geometry: lines, planes, distances, changes of reference system
-(book, ch. 2)."""
+"""Tests of rigidmech.vectors.geometry (lines, planes, distances) and
+rigidmech.vectors.reference_change (changes of reference system), book ch. 2."""
 
 import pytest
 import sympy as sp
@@ -11,16 +11,18 @@ from rigidmech.vectors import Frame, coordinates
 from rigidmech.vectors.geometry import (
     Line,
     Plane,
-    affine_map,
     angle,
-    change_of_coordinates,
-    common_axis_map,
-    common_origin_map,
     common_perpendicular,
     distance,
     intersection,
     is_orthogonal,
     is_parallel,
+)
+from rigidmech.vectors.reference_change import (
+    affine_map,
+    change_of_coordinates,
+    common_axis_map,
+    common_origin_map,
 )
 
 R0 = Frame("R0")
