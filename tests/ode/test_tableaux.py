@@ -88,3 +88,16 @@ def test_two_stage_family_has_order_two_for_every_node(alpha):
     tab = T.ButcherTableau("fam", [[0, 0], [alpha, 0]], [1 - 1 / (2 * alpha), 1 / (2 * alpha)],
                            [0, alpha], order=2)
     assert np.max(np.abs(tab.order_residuals(2))) < 1e-12
+
+
+def test_verify_names_the_violated_identity():
+    for tab in T.ALL.values():
+        tab.verify(tol=TOL)
+    with pytest.raises(ArgumentError, match=r"`c` of tableau 'x' must equal the row sums"):
+        T.ButcherTableau("x", [[0, 0], [1, 0]], [0.5, 0.5], [0, 0.5], order=2).verify()
+    with pytest.raises(ArgumentError, match=r"`order` = 3 of tableau 'heun3' is not reached: "
+                       r"the condition of tree \(\(\(\)\)\) \(order 3\) has residual -0.167"):
+        T.ButcherTableau("heun3", [[0, 0], [1, 0]], [0.5, 0.5], [0, 1], order=3).verify()
+    with pytest.raises(ArgumentError, match=r"`order_embedded` = 5 of tableau 'dp'"):
+        T.ButcherTableau("dp", T.DOPRI5.A, T.DOPRI5.b, T.DOPRI5.c, order=5,
+                         b_embedded=T.DOPRI5.b_embedded, order_embedded=5).verify()

@@ -82,6 +82,10 @@ def _size(tree) -> int:
     return 1 + sum(_size(c) for c in tree)
 
 
+def _tree_str(tree) -> str:
+    return "(" + ",".join(_tree_str(c) for c in tree) + ")"
+
+
 def tree_density(tree) -> int:
     """The density ``gamma(tree)``: its order times the densities of its subtrees.
 
@@ -235,6 +239,47 @@ class ButcherTableau:
             for tree in rooted_trees(p):
                 out.append(float(w @ phi(tree)) - float(Fraction(1, tree_density(tree))))
         return np.array(out)
+
+    def verify(self, tol: float = 1e-12) -> None:
+        """Check the row sums and the order conditions up to the claimed order(s).
+
+        Parameters
+        ----------
+        tol : float
+            Largest residual accepted.
+
+        Raises
+        ------
+        ArgumentError
+            Naming the first violated identity: a row sum, or the tree and its residual.
+
+        Examples
+        --------
+        >>> DOP853.verify()
+        >>> ButcherTableau("bad", [[0, 0], [1, 0]], [0.5, 0.5], [0, 1], order=3).verify()
+        Traceback (most recent call last):
+        ...
+        rigidmech._core.errors.ArgumentError: `order` = 3 of tableau 'bad' is not reached: ...
+        """
+        if self.row_sum_defect() > tol:
+            raise ArgumentError(
+                f"`c` of tableau {self.name!r} must equal the row sums of `A`; they differ by "
+                f"{self.row_sum_defect():.3g}."
+            )
+        checks = [("order", self.order, self.b)]
+        if self.b_embedded is not None and self.order_embedded is not None:
+            checks.append(("order_embedded", self.order_embedded, self.b_embedded))
+        for label, order, weights in checks:
+            res = self.order_residuals(order, weights)
+            bad = np.flatnonzero(np.abs(res) > tol)
+            if bad.size:
+                trees = [t for p in range(1, order + 1) for t in rooted_trees(p)]
+                tree = trees[bad[0]]
+                raise ArgumentError(
+                    f"`{label}` = {order} of tableau {self.name!r} is not reached: the "
+                    f"condition of tree {_tree_str(tree)} (order {_size(tree)}) has residual "
+                    f"{res[bad[0]]:.3g}."
+                )
 
     def row_sum_defect(self) -> float:
         """Largest ``|sum_j a_ij - c_i|`` (zero for a consistent tableau).
