@@ -61,6 +61,10 @@ def chain(t, y):
     return np.concatenate([v, _L @ q])
 
 
+def van_der_pol(t, y, mu=1000.0):
+    return np.array([y[1], mu * (1 - y[0] ** 2) * y[1] - y[0]])
+
+
 E = 0.6
 KEPLER_Y0 = np.array([1 - E, 0.0, 0.0, np.sqrt((1 + E) / (1 - E))])
 CHAIN_Y0 = np.concatenate([np.sin(np.linspace(0, np.pi, N_CHAIN)), np.zeros(N_CHAIN)])
@@ -95,6 +99,20 @@ def main():
                   f"{t_ours / steps * 1e6:>13.1f} {t_sci / steps * 1e6:>14.1f} "
                   f"{t_fun / steps * 1e6:>12.1f} {t_sci / t_ours:>6.2f}"
                   + ("" if same else "  (step counts differ!)"))
+
+    # Radau IIA on a stiff problem: Newton iterations and linear algebra dominate
+    kw = dict(rtol=1e-6, atol=1e-6)
+    r = ode.solve(van_der_pol, (0.0, 3000.0), [2.0, 0.0], method="radau", **kw)
+    s = solve_ivp(van_der_pol, (0.0, 3000.0), [2.0, 0.0], method="Radau", **kw)
+    t_ours = best_time(lambda: ode.solve(van_der_pol, (0.0, 3000.0), [2.0, 0.0],
+                                         method="radau", **kw), repeat=3)
+    t_sci = best_time(lambda: solve_ivp(van_der_pol, (0.0, 3000.0), [2.0, 0.0], method="Radau",
+                                        **kw), repeat=3)
+    t_fun = fun_cost(van_der_pol, np.array([2.0, 0.0]), r.nfev)
+    print(f"{'Van der Pol mu=1000':<20} {'radau / Radau':<16} {r.nsteps:>6} {r.nfev:>6} "
+          f"{t_ours / r.nsteps * 1e6:>13.1f} {t_sci / (len(s.t) - 1) * 1e6:>14.1f} "
+          f"{t_fun / r.nsteps * 1e6:>12.1f} {t_sci / t_ours:>6.2f}  (scipy: {len(s.t) - 1} "
+          f"steps, {s.nfev} nfev; ratio of total times)")
 
     print()
     batch = 200

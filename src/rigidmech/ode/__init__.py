@@ -9,7 +9,12 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * adaptive, with dense output, events and stiffness detection: ``"dopri5"`` (alias
   ``"rk45"``) and ``"dop853"``;
 * extrapolation (Gragg-Bulirsch-Stoer, the book's Romberg idea, ch. 26.2.3): ``"gbs"``;
-* stiff: ``"radau"`` (Radau IIA, order 5).
+* stiff: ``"radau"`` (Radau IIA, order 5);
+* multistep (Adams) and geometric (symplectic, for ``q'' = a(t, q)``) methods of
+  :mod:`rigidmech.ode.multistep` and :mod:`rigidmech.ode.geometric`.
+
+``methods()`` (or ``METHODS``) lists them all; :mod:`rigidmech.ode._registry` tells how a new
+method plugs in.
 
 Examples
 --------
