@@ -8,6 +8,7 @@ from numpy.testing import assert_allclose
 from rigidmech import Frame, constants
 from rigidmech.torsors import (
     Domain,
+    barycentre,
     measure_centre,
     slider,
     torsor_of_field,
@@ -98,6 +99,9 @@ def test_domain_properties_and_repr():
     assert repr(d) == "Domain(R0, [x, x**2, 0], (x, 0, 1))"
     assert Domain(R0, [u, v, 0], (u, 0, 1), (v, 0, 1)).kind == "surface"
     assert Domain(R0, [u, v, w], (u, 0, 1), (v, 0, 1), (w, 0, 1)).kind == "volume"
+    same = Domain(R0, [x, x**2, 0], (x, 0, 1))
+    assert d == same and hash(d) == hash(same)
+    assert d != Domain(R0, [x, x**2, 0], (x, 0, 2))
     # a given measure element overrides the derived one
     assert Domain(R0, [u, 0, 0], (u, 0, 1), measure=7).measure == 7
 
@@ -242,3 +246,31 @@ def test_measure_centre_zero_measure():
     d = Domain(R0, [u, 0, 0], (u, 0, 1))
     with pytest.raises(ValueError, match="the total measure of the domain is zero"):
         measure_centre(u - sp.Rational(1, 2), d)
+
+
+def test_barycentre_of_weighted_points():
+    m = sp.Symbol("m", positive=True)
+    G = barycentre([(R0.point("A", 0, 0, 0), m), (R0.point("B", L, 0, 0), 2 * m),
+                    (R0.point("C", 0, L, 0), m)])
+    assert coords(G) == sp.Matrix([L / 2, L / 4, 0])
+    assert G.name == "G"
+    # the gravity torsor of the weighted points is a slider through their barycentre
+    g = sp.Symbol("g", positive=True)
+    T = torsor_of_sliders([(R0.point("A", 0, 0, 0), -m * g * R0.k),
+                           (R0.point("B", L, 0, 0), -2 * m * g * R0.k),
+                           (R0.point("C", 0, L, 0), -m * g * R0.k)])
+    assert T.central_axis().contains(G)
+
+
+def test_barycentre_errors():
+    A = R0.point("A", 1, 0, 0)
+    with pytest.raises(ValueError, match="`pairs` must hold at least one"):
+        barycentre([])
+    with pytest.raises(ValueError, match="the weights add up to zero"):
+        barycentre([(A, 1), (R0.origin, -1)])
+    with pytest.raises(TypeError, match=r"`pairs\[0\]\[1\]` must be a scalar weight; got a Vector"):
+        barycentre([(A, R0.i)])
+    with pytest.raises(TypeError, match=r"`pairs\[0\]\[0\]` must be a Point"):
+        barycentre([(R0.i, 1)])
+    with pytest.raises(TypeError, match=r"`pairs\[0\]` must be a \(Point, weight\) pair"):
+        barycentre([A])

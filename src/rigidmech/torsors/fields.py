@@ -36,7 +36,7 @@ from ._checks import _check_vector
 from .torsor import Torsor
 
 __all__ = ["Domain", "torsor_of_sliders", "torsor_of_field", "total_measure",
-           "measure_centre"]
+           "measure_centre", "barycentre"]
 
 _KINDS = {1: "curve", 2: "surface", 3: "volume"}
 _METHODS = ("auto", "symbolic", "numeric", "quad")
@@ -272,6 +272,15 @@ class Domain:
     def measure(self) -> sp.Expr:
         """The measure element per unit of the parameters (length, area or volume)."""
         return self._measure
+
+    def __eq__(self, other):
+        if not isinstance(other, Domain):
+            return NotImplemented
+        return (self._frame == other._frame and self._coords == other._coords
+                and self._ranges == other._ranges and self._measure == other._measure)
+
+    def __hash__(self):
+        return hash((Domain, self._frame, self._coords, self._ranges, self._measure))
 
     def __repr__(self):
         ranges = ", ".join(f"({v}, {sp.sstr(a)}, {sp.sstr(b)})" for v, a, b in self._ranges)
@@ -567,3 +576,58 @@ def measure_centre(density, domain: Domain, *, method="auto", order=32,
             "the total measure of the domain is zero: the measure centre is undefined.")
     coords = [sp.simplify(v / total) for v in values[1:]]
     return domain.frame.origin.moved(name, Vector.from_components(domain.frame, coords))
+
+
+def barycentre(pairs, *, name: str = "G") -> Point:
+    """The measure centre of a finite set of weighted points (ch. 5.3.1, 5.3.3).
+
+    .. math:: \\mathbf{OG} = \frac{\\sum_i m_i\\,\\mathbf{OP}_i}{\\sum_i m_i}
+
+    Parameters
+    ----------
+    pairs : iterable of (Point, scalar)
+        The points P_i and their weights m_i (masses, for example).
+    name : str
+        Name of the returned point.
+
+    Returns
+    -------
+    Point
+
+    Raises
+    ------
+    ArgumentTypeError
+        If a pair is not (Point, scalar).
+    ArgumentError
+        If there is no pair or the weights add up to zero.
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> R0 = Frame("R0")
+    >>> G = barycentre([(R0.point("A", 0, 0, 0), 1), (R0.point("B", 4, 0, 0), 3)])
+    >>> G.coordinates(R0).T
+    Matrix([[3, 0, 0]])
+    """
+    items = []
+    for n, pair in enumerate(pairs):
+        try:
+            point, weight = pair
+        except (TypeError, ValueError) as exc:
+            raise ArgumentTypeError(
+                f"`pairs[{n}]` must be a (Point, weight) pair; got {pair!r}.") from exc
+        check_point(point, f"pairs[{n}][0]")
+        if isinstance(weight, Vector | Point):
+            raise ArgumentTypeError(
+                f"`pairs[{n}][1]` must be a scalar weight; got a {type(weight).__name__}.")
+        items.append((point, sp.sympify(weight)))
+    if not items:
+        raise ArgumentError("`pairs` must hold at least one (Point, weight) pair; got none.")
+    total = sp.Add(*(m for _, m in items))
+    if sp.simplify(total) == 0:
+        raise ArgumentError("the weights add up to zero: the barycentre is undefined.")
+    origin = items[0][0]
+    offset = Vector.zero()
+    for point, m in items:
+        offset = offset + m * (point - origin)
+    return origin.moved(name, (offset / total).applyfunc(sp.simplify))
