@@ -14,12 +14,35 @@ from .kinematics import KinematicTorsor, Solid, kinematic_torsor
 from .kinetics import Body
 from .lagrange import lagrange_equations
 from .torsors import Torsor, couple, slider
-from .vectors import Frame, Point, Vector, constants, coordinates, cross, dot, mixed, t
+from .vectors import (
+    Basis,
+    Curve,
+    Frame,
+    Line,
+    Plane,
+    Point,
+    Vector,
+    change_of_coordinates,
+    common_perpendicular,
+    constants,
+    coordinates,
+    cross,
+    distance,
+    dot,
+    double_cross,
+    frenet_numeric,
+    intersection,
+    linearly_independent,
+    mixed,
+    t,
+)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
+    "Basis", "Line", "Plane", "Curve", "frenet_numeric", "intersection", "distance",
+    "common_perpendicular", "change_of_coordinates", "linearly_independent", "double_cross",
     "Torsor", "couple", "slider",
     "Solid", "KinematicTorsor", "kinematic_torsor",
     "Force", "Couple", "Spring", "gravity", "power", "joints", "actions",

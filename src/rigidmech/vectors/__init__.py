@@ -1,15 +1,42 @@
-"""Part I of the book: the vector space, the geometric space, vector functions (ch. 1-4).
+"""Part I of the book: the vector space, the geometric space, vector functions, curves
+(ch. 1-4).
 
-Frames (reference systems) forming a tree, vectors that may mix bases, points, and
-parameters of situation as functions of time.
+Frames (reference systems) forming a tree, vectors that may mix bases, points, parameters of
+situation as functions of time; bases that need not be orthonormal, lines and planes, changes
+of reference system, derivatives of vector functions, curves and the Frenet trihedron.
 """
 
+from .basis import Basis, double_cross, linear_dependence, linearly_independent
+from .curves import Curve, FrenetSamples, FrenetTrihedron, frenet_numeric
 from .frames import Frame
+from .functions import derivation_formula, derivative, jacobian, partial
+from .geometry import (
+    Line,
+    Plane,
+    angle,
+    common_perpendicular,
+    distance,
+    intersection,
+    is_orthogonal,
+    is_parallel,
+)
 from .points import Point
+from .reference_change import (
+    affine_map,
+    change_of_coordinates,
+    common_axis_map,
+    common_origin_map,
+)
 from .symbols import constants, coordinates, is_coordinate, t, time_derivative
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
 __all__ = [
     "Frame", "Point", "Vector", "t", "coordinates", "constants", "is_coordinate",
     "time_derivative", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector",
+    "Basis", "double_cross", "linear_dependence", "linearly_independent",
+    "Line", "Plane", "angle", "common_perpendicular", "distance", "intersection",
+    "is_orthogonal", "is_parallel",
+    "affine_map", "change_of_coordinates", "common_axis_map", "common_origin_map",
+    "derivation_formula", "derivative", "jacobian", "partial",
+    "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
 ]
