@@ -209,3 +209,13 @@ def test_max_step_and_first_step_are_honoured():
     r = ode.solve(decay, (0.0, 1.0), [1.0], method="dopri5", max_step=0.05, first_step=1e-3)
     assert r.t[1] == pytest.approx(1e-3)
     assert np.max(np.diff(r.t)) <= 0.05 + 1e-15
+
+
+@pytest.mark.parametrize("method", ["dop853", "rk4", "radau", "verlet"])
+def test_wrong_output_shape_of_fun_is_refused(method):
+    kw = {"step": 0.1} if method in ("rk4", "verlet") else {}
+    with pytest.raises(ArgumentError, match=r"`fun\(t0, y0\)` must return an array of the "
+                       r"shape of its `y` argument, \(\d,\); got shape \(3,\)"):
+        ode.solve(lambda t, y: np.zeros(3), (0.0, 1.0), [1.0, 0.0], method=method, **kw)
+    with pytest.raises(ArgumentTypeError, match=r"must return an array of real numbers"):
+        ode.solve(lambda t, y: "abc", (0.0, 1.0), [1.0, 0.0], method=method, **kw)

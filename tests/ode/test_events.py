@@ -112,3 +112,10 @@ def test_events_and_t_eval_for_a_second_order_method():
     assert r.status == 1
     assert_allclose(r.t_events[0], [np.sqrt(2 * H / G)], atol=1e-10)
     assert_allclose(r.y, [[H - G / 8, H - G / 2], [-G / 2, -G]], atol=1e-12)
+
+
+def test_zero_at_the_initial_state_is_not_an_event():
+    # thrown upwards from the ground: lands at 2 v0 / g, not at t = 0
+    ground = ode.event(lambda t, y: y[0], terminal=True)
+    r = ode.solve(fall, (0.0, 10.0), [0.0, 10.0], events=ground)
+    assert_allclose(r.t_events[0], [2 * 10.0 / G], atol=1e-10)

@@ -227,6 +227,30 @@ def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
     return dataclasses.replace(res, **changes)
 
 
+def _check_fun_output(fun, t0, y, kind):
+    """One call of `fun` at the initial state, to refuse a wrong output shape clearly."""
+    if kind == "second_order":
+        if y.shape[0] % 2:
+            return  # refused with its own message
+        arg, want = y[: y.shape[0] // 2].copy(), (y.shape[0] // 2,) + y.shape[1:]
+    else:
+        arg, want = y.copy(), y.shape
+    out = fun(t0, arg)
+    try:
+        got = np.shape(out)
+        arr = np.asarray(out, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"`fun(t0, y0)` must return an array of real numbers of shape {want}; got "
+            f"{type(out).__name__}."
+        ) from None
+    if arr.shape != want:
+        raise ArgumentError(
+            f"`fun(t0, y0)` must return an array of the shape of its `y` argument, {want}; "
+            f"got shape {got}."
+        )
+
+
 def _restrict(t_eval, t, sol):
     """``t_eval`` cut to the part of `t_span` actually integrated, and the states there."""
     sign = 1.0 if t[-1] >= t[0] else -1.0
@@ -264,6 +288,8 @@ def solve(
         ``fun(t, y, *args) -> dy/dt`` with ``y`` (and the result) of the shape of `y0`. For a
         method of kind ``"second_order"``, ``fun(t, q, *args)`` returns the acceleration and
         `y0` is ``[q0, v0]``. `fun` may return the same buffer at every call: it is copied.
+        It is called once more than ``nfev`` says, at the initial state, to check the shape
+        of its output.
     t_span : (float, float)
         Initial and final times; ``t1 < t0`` integrates backwards.
     y0 : array_like, shape (n,) or (n, batch)
@@ -358,6 +384,7 @@ def solve(
             )
         tracker = EventTracker(events, t0, y.copy())
     kind = entry.kind
+    _check_fun_output(fun, t0, y, kind)
     if kind == "second_order" and shape[0] % 2:
         raise ArgumentError(
             f"`y0` must be [q0, v0] of even length n for method {entry.name!r}; got n = "

@@ -10,9 +10,10 @@ An event function is any callable ``g(t, y) -> float``. Two optional attributes,
     ``> 0``: only zeros where ``g`` goes from negative to positive; ``< 0``: from positive to
     negative; ``0`` (default): both.
 
-The zeros are located with Brent's method (:func:`scipy.optimize.brentq`) on the dense output
-of the step where ``g`` changed sign, to a tolerance of a few ulps of ``t``; their accuracy is
-therefore that of the dense output.
+A zero of ``g`` at the initial state is not an event (a ball thrown from the ground does not
+land at ``t0``). The zeros are located with Brent's method (:func:`scipy.optimize.brentq`) on
+the dense output of the step where ``g`` changed sign, to a tolerance of a few ulps of ``t``;
+their accuracy is therefore that of the dense output.
 """
 
 from __future__ import annotations
@@ -106,6 +107,7 @@ class EventTracker:
     def __init__(self, events, t0: float, y0: np.ndarray):
         self.functions = _as_event_list(events)
         self._n = int(np.size(y0))
+        self._t0 = t0
         self.terminal = []
         self.direction = []
         for i, g in enumerate(self.functions):
@@ -153,10 +155,10 @@ class EventTracker:
             d = self.direction[i]
             if g_old[i] == 0.0 and g_new[i] == 0.0:
                 continue
-            if g_old[i] == 0.0 and t_old != t_new and len(self.times[i]) and (
-                self.times[i][-1] == t_old
+            if g_old[i] == 0.0 and (
+                t_old == self._t0 or (len(self.times[i]) and self.times[i][-1] == t_old)
             ):
-                continue  # already reported at the end of the previous step
+                continue  # a zero at the initial time, or already reported
             if (d > 0 and up[i]) or (d < 0 and down[i]) or (d == 0 and (up[i] or down[i])):
                 if g_new[i] == 0.0:
                     te = t_new
