@@ -48,7 +48,8 @@ assert form.torsor.equals(T)
 # %%
 # Check: the moment is least on the axis
 # --------------------------------------
-# |M(P)|^2 = |M(I)|^2 + |IP ^ R|^2: the norm of the moment grows with the distance to the axis.
+# ``|M(P)|^2 = |M(I)|^2 + |IP ^ R|^2``: the norm of the moment grows with the distance to
+# the axis.
 for P in (R0.origin, R0.point("E", 2, -1, 3), axis.point):
     print(P.name, float(T.moment_at(P).magnitude()))
 

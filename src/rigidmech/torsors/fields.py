@@ -581,7 +581,7 @@ def measure_centre(density, domain: Domain, *, method="auto", order=32,
 def barycentre(pairs, *, name: str = "G") -> Point:
     """The measure centre of a finite set of weighted points (ch. 5.3.1, 5.3.3).
 
-    .. math:: \\mathbf{OG} = \frac{\\sum_i m_i\\,\\mathbf{OP}_i}{\\sum_i m_i}
+    .. math:: \\mathbf{OG} = \\frac{\\sum_i m_i\\,\\mathbf{OP}_i}{\\sum_i m_i}
 
     Parameters
     ----------

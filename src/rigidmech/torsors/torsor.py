@@ -6,6 +6,13 @@ principle 2). A torsor is known by its resultant, its moment at one point (the p
 reduction) and that point; the moment field follows from the transport formula (ch. 5.1.2)
 
 .. math:: \\mathbf{M}(B) = \\mathbf{M}(A) + \\mathbf{BA} \\wedge \\mathbf{R}.
+
+Geometry of the moment field (ch. 5.1.6-5.2): the moment about an axis, the central axis
+(a :class:`~rigidmech.vectors.geometry.Line`) and the pitch, the classification into zero
+torsor, couple, slider or general torsor, and the resolution of any torsor into a slider
+plus a couple (:class:`Resolution`), the simplest one having the slider on the central axis.
+Printing follows the book: ``str`` gives ``{R ; M}_A`` and LaTeX the braces with R over M
+and the point of reduction as a subscript.
 """
 
 from __future__ import annotations
