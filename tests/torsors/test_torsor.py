@@ -176,6 +176,34 @@ def test_simplest_form(T, P):
         assert zero(form.couple.moment.dot(T.resultant) - T.automoment)
 
 
+# -- the same identities with float components, compared with is_close ---------------------------
+floats = st.floats(min_value=-10, max_value=10, allow_nan=False, allow_infinity=False)
+
+
+@st.composite
+def float_torsors(draw):
+    def vec():
+        return Vector.from_components(draw(frames), [draw(floats) for _ in range(3)])
+
+    return Torsor(resultant=vec(), moment=vec(), at=R0.origin.moved("P", vec()))
+
+
+@SETTINGS
+@given(float_torsors(), float_torsors())
+def test_float_identities_with_is_close(T, U):
+    B = U.point
+    # atol: components up to 10 and lever arms up to 20 give moments up to ~1e3; round-off of
+    # a few operations stays below 1e-9 in absolute terms
+    assert T.at(B).at(T.point).is_close(T, rtol=1e-12, atol=1e-9)
+    assert abs(float(T.at(B).automoment - T.automoment)) <= 1e-9
+    assert abs(float(T.comoment(U) - U.comoment(T))) <= 1e-9
+    assert (T + U).at(B).is_close(T.at(B) + U.at(B), rtol=1e-12, atol=1e-9)
+    if T.classify(atol=1e-9) in ("slider", "torsor"):
+        assert T.simplest_form().torsor.is_close(T, rtol=1e-9, atol=1e-9)
+        M_I = T.moment_at(T.central_point())
+        assert M_I.cross(T.resultant).is_close(Vector.zero(), atol=1e-8)
+
+
 # -- classification --------------------------------------------------------------------------
 A = R0.point("A", 1, 2, 3)
 
