@@ -48,10 +48,12 @@ class _Pair:
     def __init__(self, name, tableau, order_est, stiff_border):
         self.name = name
         self.s = tableau.stages if name == "dop853" else tableau.stages - 1  # w/o FSAL stage
-        self.A = [np.ascontiguousarray(tableau.A[i, :i]) for i in range(self.s)]
         self.c = tableau.c[: self.s].copy()
         self.b = tableau.b[: self.s].copy()
         self.exponent = -1.0 / (order_est + 1)
+        self.Ab = np.zeros((self.s + 1, self.s))
+        self.Ab[: self.s] = tableau.A[: self.s, : self.s]
+        self.Ab[self.s] = self.b
         self.order_est = order_est
         self.stiff_border = stiff_border
 
@@ -114,9 +116,12 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
                              max_step)
     else:
         h_abs = first_step
-    A, c, b, exponent = pair.A, pair.c, pair.b, pair.exponent
+    c, exponent = pair.c, pair.exponent
+    Amat = pair.Ab  # stage matrix with the weights b as its last row
     E53 = pair.E53 if is853 else None
     dot = np.dot
+    flat = not prob.batch  # single trajectory: call fun directly, copy its output into K
+    nfev = 0
     t = t0
     nrej = 0
     naccpt = 0
@@ -142,15 +147,22 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
                 t_new = t_end
             h = t_new - t
             h_abs = abs(h)
+            hA = h * Amat  # one product for all the stages of this attempt
             for i in range(1, s):
-                ys = dot(A[i], K[:i])
-                ys *= h
+                ys = dot(hA[i, :i], K[:i])
                 ys += y
-                prob(t + c[i] * h, ys, K[i])
-            y_new = dot(b, K[:s])
-            y_new *= h
+                if flat:
+                    K[i] = fun(t + c[i] * h, ys)
+                else:
+                    prob(t + c[i] * h, ys, K[i])
+            y_new = dot(hA[s, :s], K[:s])
             y_new += y
-            prob(t_new, y_new, K[s])
+            if flat:
+                K[s] = fun(t_new, y_new)
+            else:
+                prob(t_new, y_new, K[s])
+            if flat:
+                nfev += s
             scale = np.abs(y)
             np.maximum(scale, np.abs(y_new), out=scale)
             scale *= rtol
@@ -232,7 +244,7 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
         K[0] = K[s]
         if stop:
             break
-    return rec.result(pair.name, prob.nfev, nrej)
+    return rec.result(pair.name, prob.nfev + nfev, nrej)
 
 
 def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
