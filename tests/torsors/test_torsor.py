@@ -374,6 +374,10 @@ def test_repr_str_latex():
                 r"\vec{j}_{R_{0}} \end{matrix} \right\}_{A}")
     assert sp.latex(T) == expected
     assert T._repr_latex_() == f"$\\displaystyle {expected}$"
+    assert sp.pretty(T) == ("\u23a7 k_R0          \u23ab \n"
+                            "\u23a8               \u23ac \n"
+                            "\u23a9 2 i_R0 - j_R0 \u23adA")
+    assert sp.pretty(T, use_unicode=False) == str(T)
     form = T.resolve(A)
     assert repr(form) == ("Resolution(slider=Torsor(resultant=R0.k, moment=0, at=A), "
                           "couple=Torsor(resultant=0, moment=2*R0.i - R0.j, at=A))")

@@ -11,14 +11,15 @@ Geometry of the moment field (ch. 5.1.6-5.2): the moment about an axis, the cent
 (a :class:`~rigidmech.vectors.geometry.Line`) and the pitch, the classification into zero
 torsor, couple, slider or general torsor, and the resolution of any torsor into a slider
 plus a couple (:class:`Resolution`), the simplest one having the slider on the central axis.
-Printing follows the book: ``str`` gives ``{R ; M}_A`` and LaTeX the braces with R over M
-and the point of reduction as a subscript.
+Printing follows the book: ``str`` gives ``{R ; M}_A``; LaTeX and sympy's ``pprint`` give
+the braces with R over M and the point of reduction as a subscript.
 """
 
 from __future__ import annotations
 
 import numpy as np
 import sympy as sp
+from sympy.printing.pretty.stringpict import prettyForm
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Point, Vector
@@ -621,6 +622,17 @@ class Torsor:
 
     def _repr_latex_(self):
         return f"$\\displaystyle {self._latex()}$"
+
+    def _pretty(self, printer=None):
+        """sympy's ``pprint``: the book's braces, R above M, the point as a subscript."""
+        if printer is not None and not printer._use_unicode:
+            return prettyForm(str(self))
+        r, m = str(self._resultant), str(self._moment)
+        w = max(len(r), len(m))
+        pad = " " * len(self._point.name)
+        return prettyForm("\n".join([f"\u23a7 {r:<{w}} \u23ab{pad}",
+                                     f"\u23a8 {'':<{w}} \u23ac{pad}",
+                                     f"\u23a9 {m:<{w}} \u23ad{self._point.name}"]))
 
 
 class Resolution:
