@@ -119,3 +119,14 @@ def test_zero_at_the_initial_state_is_not_an_event():
     ground = ode.event(lambda t, y: y[0], terminal=True)
     r = ode.solve(fall, (0.0, 10.0), [0.0, 10.0], events=ground)
     assert_allclose(r.t_events[0], [2 * 10.0 / G], atol=1e-10)
+
+
+@pytest.mark.parametrize(("method", "kw"), [("dop853", {}), ("radau", {}), ("rk4", {"step": 0.01})])
+def test_events_when_integrating_backwards(method, kw):
+    # y' = -y from y(2) = exp(-2) back to t = 0: y = 1/2 at t = ln 2
+    g = ode.event(lambda t, y: y[0] - 0.5, terminal=True)
+    r = ode.solve(lambda t, y: -y, (2.0, 0.0), [np.exp(-2.0)], method=method, rtol=1e-10,
+                  atol=1e-12, events=g, **kw)
+    assert r.status == 1
+    # root of the interpolant: as accurate as the solution there (RK4 h = 0.01: ~1e-9)
+    assert_allclose(r.t_events[0], [np.log(2.0)], atol=1e-8)
