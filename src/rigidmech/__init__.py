@@ -13,7 +13,16 @@ from .inertia import InertiaOperator
 from .kinematics import KinematicTorsor, Solid, kinematic_torsor
 from .kinetics import Body
 from .lagrange import lagrange_equations
-from .torsors import Torsor, couple, slider
+from .torsors import (
+    Domain,
+    Resolution,
+    Torsor,
+    couple,
+    measure_centre,
+    slider,
+    torsor_of_field,
+    torsor_of_sliders,
+)
 from .vectors import (
     Basis,
     Curve,
@@ -43,7 +52,8 @@ __all__ = [
     "Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
     "Basis", "Line", "Plane", "Curve", "frenet_numeric", "intersection", "distance",
     "common_perpendicular", "change_of_coordinates", "linearly_independent", "double_cross",
-    "Torsor", "couple", "slider",
+    "Torsor", "couple", "slider", "Resolution", "Domain", "torsor_of_sliders",
+    "torsor_of_field", "measure_centre",
     "Solid", "KinematicTorsor", "kinematic_torsor",
     "Force", "Couple", "Spring", "gravity", "power", "joints", "actions",
     "InertiaOperator", "inertia",
