@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["xreplace_shared"]
+__all__ = ["xreplace_shared", "free_symbols_shared"]
 
 
 def xreplace_shared(exprs, rule, memo=None):
@@ -62,3 +62,33 @@ def xreplace_shared(exprs, rule, memo=None):
         return out
 
     return [walk(sp.sympify(e)) for e in exprs]
+
+
+def free_symbols_shared(exprs) -> set:
+    """The free symbols of ``exprs``, visiting every distinct subexpression once.
+
+    ``Expr.free_symbols`` walks a DAG as a tree (every path again); this walk is linear in
+    the number of distinct nodes.
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> e = sp.sin(x) * y
+    >>> sorted(free_symbols_shared([e + e**2, 3]), key=str)
+    [x, y]
+    """
+    seen = set()
+    out = set()
+    stack = [sp.sympify(e) for e in exprs]
+    while stack:
+        e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
+        if isinstance(e, sp.Symbol):
+            out.add(e)
+        elif isinstance(e, sp.Derivative | sp.Subs | sp.Integral):
+            out |= e.free_symbols
+        else:
+            stack.extend(e.args)
+    return out

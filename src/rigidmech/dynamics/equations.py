@@ -17,6 +17,7 @@ import sympy as sp
 from .. import ode
 from .._core.compile import compile_expressions, compile_linear_solve
 from .._core.errors import ArgumentError, NumericalError
+from .._core.symbolic import free_symbols_shared
 from ..vectors import t as _t
 
 __all__ = ["EquationsOfMotion", "Simulation"]
@@ -35,6 +36,9 @@ class EquationsOfMotion:
     forcing : sympy.ImmutableMatrix, shape (n, 1)
     energy : callable returning a sympy expression or None, optional
         Total mechanical energy, derived on demand (for the energy drift of a simulation).
+    parameters : iterable of sympy.Symbol, optional
+        The constant symbols of the equations, when the caller knows them already; found in
+        ``mass_matrix`` and ``forcing`` otherwise.
 
     Examples
     --------
@@ -51,7 +55,8 @@ class EquationsOfMotion:
 
     __slots__ = ("_coordinates", "_q", "_u", "_M", "_f", "_energy", "_params", "_cache")
 
-    def __init__(self, *, coordinates, q, u, mass_matrix, forcing, energy=None):
+    def __init__(self, *, coordinates, q, u, mass_matrix, forcing, energy=None,
+                 parameters=None):
         self._coordinates = tuple(coordinates)
         self._q, self._u = tuple(q), tuple(u)
         self._M = sp.ImmutableMatrix(mass_matrix)
@@ -63,7 +68,10 @@ class EquationsOfMotion:
                 f"and {self._f.shape}.")
         self._energy = energy
         known = set(self._q) | set(self._u) | {_t}
-        free = (self._M.free_symbols | self._f.free_symbols) - known
+        if parameters is None:
+            free = free_symbols_shared(list(self._M) + list(self._f)) - known
+        else:
+            free = set(parameters)
         self._params = tuple(sorted(free, key=lambda s: s.name))
         self._cache = {}
 

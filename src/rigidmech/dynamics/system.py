@@ -26,7 +26,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.symbolic import xreplace_shared
+from .._core.symbolic import free_symbols_shared, xreplace_shared
 from ..actions import Action, Joint
 from ..kinematics import Solid
 from ..kinetics import Body
@@ -279,8 +279,10 @@ class System:
         q_sym, u_sym, a_sym, rule = self._symbols()
         n = len(q_sym)
         no_acc = {q.diff(t, 2): 0 for q in self.coordinates}
-        M = [[sp.S.Zero] * n for _ in range(n)]
-        f = [sp.S.Zero] * n
+        # Terms are collected in lists and summed once: adding to a growing sympy sum
+        # re-sorts it at every step.
+        M_terms = [[[] for _ in range(n)] for _ in range(n)]
+        f_terms = [[] for _ in range(n)]
         for body in self._bodies:
             if not body.mass:
                 continue
@@ -297,17 +299,22 @@ class System:
                 Wi, Vi = parts[i]
                 if Wi.is_zero and Vi.is_zero:
                     continue
-                f[i] -= m * a0.dot(Vi) + (d0.dot(Wi) if J is not None else 0)
+                f_terms[i].append(-m * a0.dot(Vi))
+                if J is not None:
+                    f_terms[i].append(-d0.dot(Wi))
                 for j in range(i, n):
                     Wj, Vj = parts[j]
-                    term = m * Vi.dot(Vj) + (JW[j].dot(Wi) if J is not None else 0)
-                    if term != 0:
-                        M[i][j] += term
+                    M_terms[i][j].append(m * Vi.dot(Vj))
+                    if J is not None:
+                        M_terms[i][j].append(JW[j].dot(Wi))
         for solid, torsor, _ in self._contributions():
             parts = self._partials(solid, torsor.point)
             for i in range(n):
                 Wi, Vi = parts[i]
-                f[i] += torsor.resultant.dot(Vi) + torsor.moment.dot(Wi)
+                f_terms[i].append(torsor.resultant.dot(Vi))
+                f_terms[i].append(torsor.moment.dot(Wi))
+        M = [[sp.Add(*M_terms[i][j]) if j >= i else None for j in range(n)] for i in range(n)]
+        f = [sp.Add(*terms) for terms in f_terms]
         memo = {}
         upper = xreplace_shared([M[i][j] for i in range(n) for j in range(i, n)], rule, memo)
         fx = xreplace_shared(f, rule, memo)
@@ -319,7 +326,8 @@ class System:
         eqs = EquationsOfMotion(
             coordinates=self.coordinates, q=q_sym, u=u_sym,
             mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(n, 1, fx),
-            energy=self.mechanical_energy)
+            energy=self.mechanical_energy,
+            parameters=free_symbols_shared(upper + fx) - set(q_sym) - set(u_sym) - {t})
         self._cache["eom"] = eqs
         return eqs
 
