@@ -40,6 +40,13 @@ __all__ = ["dopri5", "dop853"]
 SAFETY = 0.9
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
+#: Gains of the PI step-size controller (Gustafsson 1991; HNW II, IV.2, eq. (2.43)):
+#: ``h_new = h * SAFETY * err_n**(-PI_KI / k) * err_{n-1}**(PI_KP / k)``, ``k = q + 1``.
+PI_KI = 0.7
+PI_KP = 0.4
+#: Floor of the previous error in the PI formula (as in Hairer's DOPRI5 code).
+PI_ERR_FLOOR = 1e-4
+STEP_CONTROLS = ("i", "pi")
 
 
 class _Pair:
@@ -91,7 +98,7 @@ def _use_float_path(shape, fun, t0, y0):
 
 
 def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, nstiff, f0=None):
+               dense_output, events, nstiff, f0=None, step_control="i"):
     t0, t_end = t_span
     direction = 1.0 if t_end > t0 else -1.0
     shape = y0.shape
@@ -117,6 +124,7 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
     else:
         h_abs = first_step
     c, exponent = pair.c, pair.exponent
+    pi, pi_alpha, pi_beta, err_old = _pi_constants(pair, step_control)
     Amat = pair.Ab  # stage matrix with the weights b as its last row
     E53 = pair.E53 if is853 else None
     dot = np.dot
@@ -189,10 +197,14 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
             if err < 1.0:
                 if err == 0.0:
                     factor = MAX_FACTOR
+                elif pi:
+                    factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
                 else:
                     factor = min(MAX_FACTOR, SAFETY * err**exponent)
                 if rejected:
                     factor = min(1.0, factor)
+                if pi:
+                    err_old = max(err, PI_ERR_FLOOR)
                 h_abs *= factor
                 accepted = True
                 break
@@ -248,7 +260,7 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
 
 
 def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-                     dense_output, events, nstiff, f0):
+                     dense_output, events, nstiff, f0, step_control="i"):
     """The same algorithm as :func:`_integrate` on lists of floats (one small trajectory)."""
     t0, t_end = t_span
     direction = 1.0 if t_end > t0 else -1.0
@@ -272,6 +284,7 @@ def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step,
     k0 = f0.tolist()
     kernel = _kernel(pair, N)
     exponent = pair.exponent
+    pi, pi_alpha, pi_beta, err_old = _pi_constants(pair, step_control)
     want = rec.cs is not None or events is not None
     isfinite = math.isfinite
     sqrt = math.sqrt
@@ -315,9 +328,16 @@ def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step,
                     acc += (e / (at + rtol * max(abs(a), abs(b_)))) ** 2
                 err = h_abs * sqrt(acc / N)
             if err < 1.0:
-                factor = MAX_FACTOR if err == 0.0 else min(MAX_FACTOR, SAFETY * err**exponent)
+                if err == 0.0:
+                    factor = MAX_FACTOR
+                elif pi:
+                    factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
+                else:
+                    factor = min(MAX_FACTOR, SAFETY * err**exponent)
                 if rejected:
                     factor = min(1.0, factor)
+                if pi:
+                    err_old = max(err, PI_ERR_FLOOR)
                 h_abs *= factor
                 accepted = True
                 break
@@ -395,6 +415,22 @@ def _dense_dop853(pair, prob, t, y, y_new, h, K):
     return coeffs
 
 
+def _pi_constants(pair, step_control):
+    """``(pi, alpha, beta, err_old)``: exponents of the PI controller, or unused values."""
+    k = pair.order_est + 1
+    return step_control == "pi", -PI_KI / k, PI_KP / k, 1.0
+
+
+def _check_step_control(step_control):
+    if not isinstance(step_control, str) or step_control not in STEP_CONTROLS:
+        raise ArgumentError(
+            f"`step_control` must be one of {STEP_CONTROLS} (\"i\": the integral controller of "
+            f"scipy and Hairer's codes, \"pi\": Gustafsson's PI controller); got "
+            f"{step_control!r}."
+        )
+    return step_control
+
+
 def _check_nstiff(nstiff):
     if isinstance(nstiff, bool) or not isinstance(nstiff, int | np.integer) or nstiff < 0:
         raise ArgumentError(f"`nstiff` must be an int >= 0 (0 disables the test); got {nstiff!r}.")
@@ -403,7 +439,7 @@ def _check_nstiff(nstiff):
 
 def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000):
+           nstiff=1000, step_control="i"):
     """Dormand-Prince 5(4) with error control, dense output and stiffness detection.
 
     Called through :func:`rigidmech.ode.solve` (``method="dopri5"`` or ``"rk45"``), which
@@ -423,17 +459,18 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     (True, 0)
     """
     nstiff = _check_nstiff(nstiff)
+    step_control = _check_step_control(step_control)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
         run = _integrate_float if ok else _integrate
         return run(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                   events=events, nstiff=nstiff, f0=f0)
+                   events=events, nstiff=nstiff, f0=f0, step_control=step_control)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000):
+           nstiff=1000, step_control="i"):
     """Dormand-Prince 8(5,3) (Hairer's DOP853) with error control, 7th-order dense output and
     stiffness detection.
 
@@ -454,12 +491,13 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     True
     """
     nstiff = _check_nstiff(nstiff)
+    step_control = _check_step_control(step_control)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
         run = _integrate_float if ok else _integrate
         return run(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                   events=events, nstiff=nstiff, f0=f0)
+                   events=events, nstiff=nstiff, f0=f0, step_control=step_control)
 
 
 _registry.register("dopri5", dopri5, kind="adaptive")

@@ -230,6 +230,9 @@ def pendulum(theta0_deg: float = 170.0, omega0: float = 1.0, periods: float = 10
     w2 = w * w
 
     def fun(t, y):
+        if type(y) is np.ndarray and y.ndim == 1:  # one state: plain floats, no numpy scalars
+            theta, dtheta = y.tolist()
+            return np.array([dtheta, -w2 * math.sin(theta)])
         return np.array([y[1], -w2 * np.sin(y[0])])
 
     def acceleration(t, q):
@@ -370,6 +373,11 @@ def kepler(e: float, *, orbits: float = 10.0, mu: float = 1.0, a: float = 1.0):
         return np.array([c * q[0], c * q[1]])
 
     def fun(t, y):
+        if type(y) is np.ndarray and y.ndim == 1:  # one state: plain floats, no numpy scalars
+            x1, x2, v1, v2 = y.tolist()
+            r2 = x1 * x1 + x2 * x2
+            c = -mu / (r2 * math.sqrt(r2))
+            return np.array([v1, v2, c * x1, c * x2])
         r2 = y[0] * y[0] + y[1] * y[1]
         c = -mu / (r2 * np.sqrt(r2))
         return np.array([y[2], y[3], c * y[0], c * y[1]])
@@ -472,6 +480,9 @@ def damped_oscillator(
     c_damp, k_stiff = 2.0 * zeta * w0, w0 * w0
 
     def fun(t, y):
+        if type(y) is np.ndarray and y.ndim == 1:  # one state: plain floats, no numpy scalars
+            x, v = y.tolist()
+            return np.array([v, F * math.cos(W * t) - c_damp * v - k_stiff * x])
         return np.array([y[1], F * np.cos(W * t) - c_damp * y[1] - k_stiff * y[0]])
 
     def exact(t):
