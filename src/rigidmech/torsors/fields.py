@@ -26,7 +26,6 @@ product rule, or ``scipy.integrate.nquad``).
 from __future__ import annotations
 
 import numpy as np
-import scipy.integrate
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
@@ -398,6 +397,10 @@ def _gauss_legendre(funcs, bounds, dim, order):
 
 
 def _nquad(f, bounds, dim):
+    # Imported on use: scipy.integrate costs about 0.7 s to import and most sessions never
+    # integrate numerically.
+    import scipy.integrate
+
     def ranges_for(k):
         lo, hi = bounds[k]
 

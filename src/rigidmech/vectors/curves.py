@@ -25,8 +25,6 @@ from typing import NamedTuple
 
 import numpy as np
 import sympy as sp
-from scipy.integrate import quad
-from scipy.interpolate import CubicSpline
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from .basis import _is_zero
@@ -264,6 +262,9 @@ class Curve:
                 "`method='numeric'` needs numeric bounds and a speed depending on the parameter "
                 f"only; got the speed {speed} between {start} and {end}: substitute values first."
             )
+        # Imported on use: scipy.integrate costs about 0.7 s to import.
+        from scipy.integrate import quad
+
         f = sp.lambdify(s, speed, "math")
         value, _ = quad(f, float(start), float(end), limit=200, epsabs=1e-13, epsrel=1e-12)
         return sp.Float(value)
@@ -514,6 +515,8 @@ def frenet_numeric(points, params, *, method: str = "spline", straight: str = "r
     if np.any(np.diff(s) <= 0):
         raise ArgumentError("`params` must be strictly increasing; got a non-increasing step.")
     if method == "spline":
+        from scipy.interpolate import CubicSpline  # imported on use (slow import)
+
         spline = CubicSpline(s, pts, axis=0)
         d1, d2, d3 = spline(s, 1), spline(s, 2), spline(s, 3)
     else:
