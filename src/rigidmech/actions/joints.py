@@ -135,7 +135,7 @@ class Joint:
         return dict(zip(_NAMES, vals, strict=True))
 
     def check(self, motion: Torsor) -> None:
-        """Raise ConnectionError_ if ``motion``, the kinematic torsor of the child relative
+        """Raise ``ConnectionError_`` if ``motion``, the kinematic torsor of the child relative
         to the parent, is not one this joint allows (decided exactly with ``simplify``).
 
         Examples

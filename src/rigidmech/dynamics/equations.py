@@ -279,7 +279,7 @@ class Simulation:
         return self.evaluate(e)
 
     def energy_drift(self) -> float:
-        """max |E(t) - E(0)| / max(|E(0)|, max |E|): relative drift of the energy."""
+        """Relative drift of the energy: ``max |E(t) - E(0)| / max(|E(0)|, max |E|)``."""
         e = self.energy()
         scale = max(abs(e[0]), np.max(np.abs(e)), np.finfo(float).tiny)
         return float(np.max(np.abs(e - e[0])) / scale)

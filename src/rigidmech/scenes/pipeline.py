@@ -84,7 +84,7 @@ class RunReport:
     nfev, nsteps : int
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
-        max |E(t) - E(0)| / max |E| along the motion (None without a potential energy).
+        ``max |E(t) - E(0)| / max |E|`` along the motion (None without a potential energy).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
