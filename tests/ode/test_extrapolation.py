@@ -40,3 +40,35 @@ def test_k_max_limits_the_order():
     r = ode.solve(kepler_rhs, (0.0, 2 * np.pi), kepler_initial(0.6), method="gbs", rtol=1e-12,
                   k_max=4)
     assert max(r.stats["orders"]) <= 8
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-11])
+def test_float_and_numpy_paths_agree(rtol, monkeypatch):
+    # one small trajectory runs the midpoint substeps and the tableau on lists of floats;
+    # the numpy path (batches, n > FLOAT_PATH_MAX_N) is the same algorithm: same steps and
+    # orders, states equal to rounding (sums in another order)
+    from rigidmech.ode import extrapolation
+
+    kw = dict(method="gbs", rtol=rtol, atol=rtol * 1e-3)
+    y0 = kepler_initial(0.9)
+    r_float = ode.solve(kepler_rhs, (0.0, 8.0), y0, **kw)
+    monkeypatch.setattr(extrapolation, "FLOAT_PATH_MAX_N", 0)
+    r_np = ode.solve(kepler_rhs, (0.0, 8.0), y0, **kw)
+    assert r_float.nfev == r_np.nfev and r_float.nrejected == r_np.nrejected
+    assert r_float.stats["orders"] == r_np.stats["orders"]
+    assert_allclose(r_float.t, r_np.t, rtol=1e-9)
+    assert_allclose(r_float.y, r_np.y, rtol=1e-9, atol=1e-12)
+
+
+def test_float_path_keeps_fun_output_fresh():
+    # fun returning one buffer reused across calls must not corrupt the float path either
+    buf = np.empty(4)
+
+    def same_buffer(t, y):
+        buf[...] = kepler_rhs(t, y)
+        return buf
+
+    kw = dict(method="gbs", rtol=1e-9, atol=1e-12)
+    y0 = kepler_initial(0.6)
+    assert_allclose(ode.solve(same_buffer, (0.0, 5.0), y0, **kw).y,
+                    ode.solve(kepler_rhs, (0.0, 5.0), y0, **kw).y, rtol=0, atol=0)
