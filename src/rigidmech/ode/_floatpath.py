@@ -31,11 +31,16 @@ def _compile(name, lines):
     return namespace[f"step_{name}"]
 
 
-def make_unrolled_stepper(name, A, b, c, s, errors, n):
+def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     """Generate ``step(fun, t, y, k0, h) -> (y_new, ks, y_last_stage, *error_vectors)``.
 
     With ``errors=None`` the step of a fixed-step method is generated instead:
     ``step(fun, t, y, k0, h) -> y_new``, without the evaluation at ``(t + h, y_new)``.
+
+    With ``norm=True`` the step is ``step(fun, t, y, k0, h, rtol, atols)`` and returns, in
+    place of each error vector ``e``, its weighted sum of squares
+    ``sum((e_j / (atol_j + rtol max(|y_j|, |y_new_j|)))**2)`` (`atols`: list of `n` floats),
+    so that the adaptive driver needs no loop over the components.
 
     Parameters
     ----------
@@ -65,8 +70,16 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n):
     >>> make_unrolled_stepper("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1, None,
     ...                       1)(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.1)
     [0.9]
+    >>> step = make_unrolled_stepper("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1,
+    ...                              [np.array([-1.0, 1.0])], 1, norm=True)
+    >>> out = step(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.1, 0.1, [0.01])
+    >>> out[0], round(out[3], 12)  # e = -k0 + k1 = 0.1; scale = 0.01 + 0.1 * 1.0
+    ([0.9], 0.826446280992)
     """
-    lines = [f"def step_{name}_{n}(fun, t, y, k0, h):"]
+    if norm:
+        lines = [f"def step_{name}_{n}n(fun, t, y, k0, h, rtol, atols):"]
+    else:
+        lines = [f"def step_{name}_{n}(fun, t, y, k0, h):"]
     comps = range(n)
     lines.append(f"    {', '.join(f'y_{j}' for j in comps)}, = y")
     lines.append(f"    {', '.join(f'k0_{j}' for j in comps)}, = k0")
@@ -81,18 +94,32 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n):
         lines.append(f"    k{i} = _tolist(fun(t + {float(c[i])!r}*h, _arr(ys)))")
         lines.append(f"    {', '.join(f'k{i}_{j}' for j in comps)}, = k{i}")
         last = "ys"
-    elems = ", ".join(f"y_{j} + h*({combo(b, s, j)})" for j in comps)
-    lines.append(f"    yn = [{elems}]")
+    for j in comps:
+        lines.append(f"    yn_{j} = y_{j} + h*({combo(b, s, j)})")
+    lines.append(f"    yn = [{', '.join(f'yn_{j}' for j in comps)}]")
     if errors is None:
         lines.append("    return yn")
         return _compile(f"{name}_{n}", lines)
     lines.append(f"    k{s} = _tolist(fun(t + h, _arr(yn)))")
     lines.append(f"    {', '.join(f'k{s}_{j}' for j in comps)}, = k{s}")
     outs = []
-    for e_idx, e in enumerate(errors):
-        elems = ", ".join(combo(e, s + 1, j) for j in comps)
-        lines.append(f"    e{e_idx} = [{elems}]")
-        outs.append(f"e{e_idx}")
+    if norm:
+        lines.append(f"    {', '.join(f'at_{j}' for j in comps)}, = atols")
+        for e_idx in range(len(errors)):
+            lines.append(f"    s{e_idx} = 0.0")
+        for j in comps:
+            lines.append(f"    a = abs(y_{j})")
+            lines.append(f"    b = abs(yn_{j})")
+            lines.append(f"    sc = at_{j} + rtol*(a if a > b else b)")
+            for e_idx, e in enumerate(errors):
+                lines.append(f"    w = ({combo(e, s + 1, j)}) / sc")
+                lines.append(f"    s{e_idx} += w*w")
+        outs = [f"s{e_idx}" for e_idx in range(len(errors))]
+    else:
+        for e_idx, e in enumerate(errors):
+            elems = ", ".join(combo(e, s + 1, j) for j in comps)
+            lines.append(f"    e{e_idx} = [{elems}]")
+            outs.append(f"e{e_idx}")
     lines.append(f"    return yn, ({', '.join(f'k{i}' for i in range(s + 1))},), {last}, "
                  f"{', '.join(outs)}")
-    return _compile(f"{name}_{n}", lines)
+    return _compile(f"{name}_{n}{'n' if norm else ''}", lines)

@@ -127,6 +127,7 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
     isfinite = math.isfinite
     if floats:
         atols = np.broadcast_to(np.asarray(atol, dtype=float), (N,)).tolist()
+        midpoint = _midpoint_floats(N)
     while direction * (t - t_end) < 0:
         if naccpt >= max_steps:
             rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
@@ -153,7 +154,7 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
                 hs = h / nj
                 if floats:  # the same tableau on lists of floats
                     prev_rows = rows
-                    rows = [_midpoint_floats(fun, t, y_list, f0_list, hs, nj)]
+                    rows = [midpoint(fun, t, y_list, f0_list, hs, nj)]
                     prob.nfev += nj - 1
                     cj = coef[j]
                     for m in range(1, j + 1):  # Aitken-Neville
@@ -251,16 +252,42 @@ def _norm_floats(a, b, y, atols, rtol):
     return math.sqrt(acc / len(a))
 
 
-def _midpoint_floats(fun, t, y, f0, hs, nj):
-    """Gragg's midpoint rule, `nj` substeps of `hs`, on lists of floats; `fun` sees ndarrays."""
-    arr = np.array
-    y_prev = y
-    y_cur = [a + hs * b for a, b in zip(y, f0, strict=True)]
-    h2 = 2.0 * hs
-    for i in range(1, nj):
-        fi = fun(t + i * hs, arr(y_cur)).tolist()
-        y_prev, y_cur = y_cur, [a + h2 * b for a, b in zip(y_prev, fi, strict=True)]
-    return y_cur
+_MIDPOINTS = {}
+
+
+def _midpoint_floats(n):
+    """Gragg's midpoint rule on `n` plain floats, unrolled over the components (cached).
+
+    ``mid(fun, t, y, f0, hs, nj)`` makes `nj` substeps of `hs` from the lists `y`, `f0` and
+    returns the final list; `fun` receives a fresh ndarray at every substep.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> mid = _midpoint_floats(1)
+    >>> mid(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.5, 2)  # y1 = 0.5, y2 = 1 - 1 * 0.5
+    [0.5]
+    """
+    if n not in _MIDPOINTS:
+        c = range(n)
+        p_ = ", ".join(f"p{j}" for j in c)
+        q_ = ", ".join(f"q{j}" for j in c)
+        lines = [
+            "def mid(fun, t, y, f0, hs, nj):",
+            f"    {p_}, = y",
+            f"    {', '.join(f'f{j}' for j in c)}, = f0",
+            *(f"    q{j} = p{j} + hs*f{j}" for j in c),
+            "    h2 = hs + hs",
+            "    for i in range(1, nj):",
+            f"        {', '.join(f'f{j}' for j in c)}, = _tolist(fun(t + i*hs, _arr([{q_}])))",
+            f"        {p_}, {q_} = {q_}, {', '.join(f'p{j} + h2*f{j}' for j in c)}",
+            f"    return [{q_}]",
+        ]
+        namespace = {"_arr": np.array, "_tolist": np.ndarray.tolist}
+        exec(compile("\n".join(lines), f"<rigidmech.ode gbs midpoint {n}>", "exec"),  # noqa: S102
+             namespace)
+        _MIDPOINTS[n] = namespace["mid"]
+    return _MIDPOINTS[n]
 
 
 _registry.register("gbs", gbs, kind="adaptive")
