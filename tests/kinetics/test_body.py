@@ -89,3 +89,39 @@ def test_quantities_that_need_a_mass():
     R0 = rm.Frame("R0")
     with pytest.raises(ValueError, match="needs the mass of body b"):
         rm.Body("b", frame=R0).kinetic_energy(R0)
+
+
+def test_catalogue_operator_is_placed_at_the_mass_centre():
+    """rm.inertia.rod(m, L, axis=R1.i) without `centre` is the rod's central operator: the
+    body places it at its own mass centre (the TOUR's form)."""
+    q = rm.coordinates("q")
+    m, L = rm.constants("m L", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    G = R0.origin.moved("G", L / 2 * R1.i)
+    bar = rm.Body("bar", frame=R1, mass=m, centre=G, inertia=rm.inertia.rod(m, L, axis=R1.i))
+    assert bar.inertia.at == G
+    assert sp.simplify(bar.inertia.C - m * L**2 / 12) == 0
+    # T = (m L^2 / 3) q'^2 / 2 about the end
+    assert sp.simplify(bar.kinetic_energy(R0) - m * L**2 / 6 * q.diff() ** 2) == 0
+
+
+def test_operator_given_at_another_point_is_moved_by_huygens():
+    """The rod's operator given at its end O (C = m L^2 / 3) is moved to G (m L^2 / 12)."""
+    q = rm.coordinates("q")
+    m, L = rm.constants("m L", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    G = R0.origin.moved("G", L / 2 * R1.i)
+    J_O = rm.InertiaOperator.from_products(0, m * L**2 / 3, m * L**2 / 3, frame=R1,
+                                           at=R0.origin)
+    bar = rm.Body("bar", frame=R1, mass=m, centre=G, inertia=J_O)
+    assert bar.inertia.at == G
+    assert sp.simplify(bar.inertia.C - m * L**2 / 12) == 0
+
+
+def test_only_central_operators_can_be_placed():
+    R0 = rm.Frame("R0")
+    J = rm.InertiaOperator.from_products(1, 1, 1, frame=R0)
+    with pytest.raises(ValueError, match="only an operator taken at the mass centre"):
+        J.placed_at(R0.point("G", 1, 0, 0))

@@ -68,7 +68,13 @@ def _revolution(axis, axial, transverse, centre):
     frame, n = _axis(axis)
     moments = [transverse] * 3
     moments[n] = axial
-    return InertiaOperator.from_products(*moments, frame=frame, at=centre)
+    return _central(InertiaOperator.from_products(*moments, frame=frame, at=centre))
+
+
+def _central(op):
+    """Mark a catalogue operator as taken at the body's mass centre (see
+    :meth:`InertiaOperator.placed_at`)."""
+    return InertiaOperator._make(op.matrix, op.frame, op.at, central=True)
 
 
 def rod(mass, length, *, axis, centre=None) -> InertiaOperator:
@@ -281,8 +287,9 @@ def block(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
     check_frame(frame, "frame")
     m, a, b, c = (nonnegative(x, n) for x, n in ((mass, "mass"), (a, "a"), (b, "b"),
                                                   (c, "c")))
-    return InertiaOperator.from_products(m * (b**2 + c**2) / 12, m * (c**2 + a**2) / 12,
-                                         m * (a**2 + b**2) / 12, frame=frame, at=centre)
+    return _central(InertiaOperator.from_products(
+        m * (b**2 + c**2) / 12, m * (c**2 + a**2) / 12, m * (a**2 + b**2) / 12, frame=frame,
+        at=centre))
 
 
 def rectangular_plate(mass, a, b, *, frame, centre=None) -> InertiaOperator:
@@ -315,5 +322,6 @@ def ellipsoid(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
     check_frame(frame, "frame")
     m, a, b, c = (nonnegative(x, n) for x, n in ((mass, "mass"), (a, "a"), (b, "b"),
                                                   (c, "c")))
-    return InertiaOperator.from_products(m * (b**2 + c**2) / 5, m * (c**2 + a**2) / 5,
-                                         m * (a**2 + b**2) / 5, frame=frame, at=centre)
+    return _central(InertiaOperator.from_products(
+        m * (b**2 + c**2) / 5, m * (c**2 + a**2) / 5, m * (a**2 + b**2) / 5, frame=frame,
+        at=centre))

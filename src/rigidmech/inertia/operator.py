@@ -138,7 +138,7 @@ class InertiaOperator:
     A*R0.i - F*R0.j
     """
 
-    __slots__ = ("_matrix", "_frame", "_at", "_hash")
+    __slots__ = ("_matrix", "_frame", "_at", "_hash", "_central")
 
     def __init__(self, *args, **kwargs):
         raise TypeError(
@@ -148,12 +148,13 @@ class InertiaOperator:
         )
 
     @classmethod
-    def _make(cls, matrix, frame, at):
+    def _make(cls, matrix, frame, at, central=False):
         obj = object.__new__(cls)
         obj._matrix = matrix
         obj._frame = frame
         obj._at = at
         obj._hash = None
+        obj._central = central
         return obj
 
     # -- construction -------------------------------------------------------------------
@@ -279,6 +280,40 @@ class InertiaOperator:
         return self._frame
 
     @property
+    def is_central(self) -> bool:
+        """True for an operator known to be taken at the body's mass centre (the catalogue's
+        operators, and the result of :meth:`moved` to the mass centre)."""
+        return self._central
+
+    def placed_at(self, centre: Point) -> InertiaOperator:
+        """The same central operator, taken at the mass centre ``centre`` of the body.
+
+        The catalogue gives the operator of a homogeneous body at its mass centre; when no
+        ``centre`` was given there, this places it (a :class:`~rigidmech.kinetics.Body` does
+        it with its own mass centre). Only a central operator can be placed: any other one
+        changes point by the relations of Huygens (:meth:`moved`).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.inertia import rod
+        >>> from rigidmech.vectors import Frame
+        >>> m, L = sp.symbols("m L", positive=True)
+        >>> R1 = Frame("R1")
+        >>> G = R1.point("G", L / 2, 0, 0)
+        >>> rod(m, L, axis=R1.i).placed_at(G).at.name
+        'G'
+        """
+        check_point(centre, "centre")
+        if not self._central:
+            raise ArgumentError(
+                f"only an operator taken at the mass centre can be placed at another point; "
+                f"this one is at {self._at.name}. Use moved(to, mass=, centre=) (Huygens)."
+            )
+        check_same_tree(self._frame, centre, "centre")
+        return InertiaOperator._make(self._matrix, self._frame, centre, True)
+
+    @property
     def at(self) -> Point:
         """The point at which the operator is taken."""
         return self._at
@@ -388,7 +423,7 @@ class InertiaOperator:
                 P = sp.ImmutableMatrix(value)
                 full = P.T * J * P
                 J = _sym([[full[r, c] for c in range(3)] for r in range(3)])
-        return InertiaOperator._make(J, frame, self._at)
+        return InertiaOperator._make(J, frame, self._at, self._central)
 
     def moved(self, to: Point, *, mass, centre: Point) -> InertiaOperator:
         """The operator at ``to``, by the relations of Huygens (ch. 15.2.1-15.2.2).
@@ -446,10 +481,11 @@ class InertiaOperator:
         forth = _huygens(mass, (centre - to)._comps(self._frame))
         if forth is not None:
             J = J + sp.ImmutableMatrix(forth)
+        central = to == centre
         if back is None and forth is None:
-            return InertiaOperator._make(J, self._frame, to)
+            return InertiaOperator._make(J, self._frame, to, central)
         return InertiaOperator._make(_sym([[J[r, c] for c in range(3)] for r in range(3)]),
-                                     self._frame, to)
+                                     self._frame, to, central)
 
     def principal_axes(self) -> PrincipalAxes:
         """Principal moments and axes of inertia at :attr:`at` (ch. 15.2.3).
@@ -540,7 +576,7 @@ class InertiaOperator:
         6
         """
         return InertiaOperator._make(self._matrix.subs(*args, **kwargs), self._frame,
-                                     self._at.subs(*args, **kwargs))
+                                     self._at.subs(*args, **kwargs), self._central)
 
     def simplify(self) -> InertiaOperator:
         """The operator with simplified entries (never done unless asked).
@@ -555,7 +591,7 @@ class InertiaOperator:
         1
         """
         return InertiaOperator._make(self._matrix.applyfunc(sp.simplify), self._frame,
-                                     self._at)
+                                     self._at, self._central)
 
     def is_close(self, other, *, rtol=1e-9, atol=0.0) -> bool:
         """Numeric closeness of the matrices (in this operator's basis) and of the points.

@@ -40,9 +40,10 @@ class Body(Solid):
     centre : Point, optional
         The mass centre G; defaults to the origin of ``frame``.
     inertia : InertiaOperator, optional
-        The operator of inertia, given at G or at any point of the body (it is moved to G
-        by the relations of Huygens), in a basis fixed in the body. Defaults to zero (a
-        particle).
+        The operator of inertia in a basis fixed in the body: an operator of the catalogue
+        (:mod:`rigidmech.inertia`), which is the central one and is placed at G, or an
+        operator given at any point of the body, moved to G by the relations of Huygens.
+        Defaults to zero (a particle).
 
     Examples
     --------
@@ -82,7 +83,10 @@ class Body(Solid):
             raise ArgumentError("`inertia` given without `mass`: give the body's mass too.")
         if inertia is not None:
             if inertia.at != centre:
-                inertia = inertia.moved(centre, mass=mass, centre=centre)
+                # a catalogue operator is the body's central one: place it at G; any other
+                # operator is moved to G by the relations of Huygens
+                inertia = (inertia.placed_at(centre) if inertia.is_central
+                           else inertia.moved(centre, mass=mass, centre=centre))
             if inertia.frame != frame:
                 inertia = inertia.in_basis(frame)
         self._mass = mass
