@@ -5,6 +5,10 @@ in Hairer's weighted RMS norm ``sqrt(mean((err / (atol + rtol max(|y0|, |y1|)))*
 new step is ``h * min(10, max(0.2, 0.9 err**(-1/(q+1))))`` with ``q`` the order of the error
 estimator, never growing just after a rejection (the same rules as scipy's ``solve_ivp`` RK45
 and DOP853, so that both take the same steps). The starting step follows Hairer's algorithm.
+With ``step_control="pi"``, an accepted step is followed by Gustafsson's PI controller
+``h_new = h * 0.9 * err_n**(-0.7/k) * err_{n-1}**(0.4/k)`` (``k = q + 1``; Hairer, Wanner II,
+IV.2, eq. (2.43)), which damps the oscillation of the step size: on eccentric orbits it rejects
+about half as many steps, for a similar number of evaluations at equal error.
 
 Dense output: Shampine's 4th-order interpolant for ``"dopri5"`` (free: it reuses the stages)
 and DOP853's 7th-order interpolant (three extra evaluations of ``f`` per step, made only when a
@@ -437,7 +441,8 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
 
     Called through :func:`rigidmech.ode.solve` (``method="dopri5"`` or ``"rk45"``), which
     validates the arguments; see its parameters. `nstiff` (int, default 1000) sets how often
-    the stiffness test runs; 0 disables it.
+    the stiffness test runs; 0 disables it. `step_control` is ``"i"`` (default: the integral
+    controller of scipy and Hairer's codes) or ``"pi"`` (Gustafsson's PI controller).
 
     Returns
     -------
@@ -468,7 +473,8 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     stiffness detection.
 
     Called through :func:`rigidmech.ode.solve` (``method="dop853"``, the default), which
-    validates the arguments; see its parameters. `nstiff` as in :func:`dopri5`.
+    validates the arguments; see its parameters. `nstiff` and `step_control` as in
+    :func:`dopri5`.
 
     Returns
     -------
@@ -480,6 +486,9 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> from rigidmech import ode
     >>> osc = lambda t, y: np.array([y[1], -y[0]])
     >>> r = ode.solve(osc, (0.0, 20.0), [1.0, 0.0], method="dop853", rtol=1e-12, atol=1e-14)
+    >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-11)
+    True
+    >>> r = ode.solve(osc, (0.0, 20.0), [1.0, 0.0], rtol=1e-12, atol=1e-14, step_control="pi")
     >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-11)
     True
     """
