@@ -101,3 +101,43 @@ def test_system_argument_errors():
         rm.System(galilean="R0")
     with pytest.raises(ValueError, match="no parameter of situation"):
         s.equations_of_motion()
+
+
+def test_heavy_top_on_a_ball_joint_and_its_reaction():
+    """Heavy symmetric top with its tip O on a spherical joint (ch. 13.2.2, 22-24): the
+    joint is accepted, M(q) is the book's [[A sin^2 + C cos^2, 0, C cos], [0, A, 0],
+    [C cos, 0, C]] with A the moment about a transverse axis through O, and at rest in the
+    upright position the reaction at O balances the weight."""
+    psi, theta, phi = rm.coordinates("psi theta phi")
+    m, g, l, A, C = rm.constants("m g l A C", positive=True)
+    R0 = rm.Frame("R0")
+    R = R0.euler("R", psi, theta, phi)
+    G = R0.origin.moved("G", l * R.k)
+    top = rm.Body("top", frame=R, mass=m, centre=G,
+                  inertia=rm.InertiaOperator.from_products(A, A, C, frame=R, at=G))
+    s = rm.System(galilean=R0)
+    s.connect(R0, top, rm.joints.Spherical(at=R0.origin))
+    s.act(rm.gravity(-g * R0.k))
+    eqs = s.equations_of_motion()
+    th = eqs.q[1]
+    AO = A + m * l**2
+    expected = sp.Matrix([[AO * sp.sin(th)**2 + C * sp.cos(th)**2, 0, C * sp.cos(th)],
+                          [0, AO, 0], [C * sp.cos(th), 0, C]])
+    assert sp.simplify(eqs.mass_matrix - expected) == sp.zeros(3, 3)
+    comps = s.connection_components(R0, top)
+    q_sym, u_sym, a_sym, _ = s.symbols()
+    rest = {**{x: 0 for x in (*q_sym, *u_sym, *a_sym)}}
+    assert sp.simplify(comps["Z"].xreplace(rest) - m * g) == 0
+    assert comps["X"].xreplace(rest) == 0
+
+
+def test_cylindrical_joint_allows_rotation_and_sliding():
+    q, z = rm.coordinates("q z")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q, origin=R0.point("P", 0, 0, z))
+    body = rm.Body("b", frame=R1, mass=1)
+    s = rm.System(galilean=R0)
+    s.connect(R0, body, rm.joints.Cylindrical(at=R0.origin, axis=R0.k))
+    assert s.coordinates == (q, z)
+    with pytest.raises(ValueError, match="Spherical at O_R0: the relative motion"):
+        rm.System(galilean=R0).connect(R0, body, rm.joints.Spherical(at=R0.origin))

@@ -2,7 +2,7 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
-from .joints import Joint, Pivot, Prismatic
+from .joints import Cylindrical, Joint, Pivot, Prismatic, Spherical
 
 __all__ = ["Action", "Couple", "Force", "Gravity", "Spring", "gravity", "power", "Joint",
-           "Pivot", "Prismatic"]
+           "Pivot", "Prismatic", "Cylindrical", "Spherical"]

@@ -12,6 +12,9 @@ pivot          rotation about (O, w)     {X u + Y v + Z w ;          X, Y, Z, L,
                                           L u + M v}
 prismatic      translation along w       {X u + Y v ; L u + M v      X, Y, L, M, N
                                           + N w}
+cylindrical    rotation about and        {X u + Y v ; L u + M v}     X, Y, L, M
+               translation along (O, w)
+spherical      rotation about O          {X u + Y v + Z w ; 0}       X, Y, Z
 =============  =======================  ==========================  ========================
 
 (u, v, w) is a direct orthonormal basis with w along the axis, taken from the frame the axis
@@ -27,7 +30,7 @@ from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
 
-__all__ = ["Joint", "Pivot", "Prismatic"]
+__all__ = ["Joint", "Pivot", "Prismatic", "Cylindrical", "Spherical"]
 
 _NAMES = ("X", "Y", "Z", "L", "M", "N")
 
@@ -211,3 +214,46 @@ class Prismatic(Joint):
     __slots__ = ()
     free_components = (2,)
     free_components_motion_zero = (0, 1, 2, 3, 4)
+
+
+class Cylindrical(Joint):
+    """Cylindrical connection (*pivot glissant*) about and along the axis (``at``, ``axis``)
+    (ch. 13.2.2): rotation about and translation along one line.
+
+    Perfect: no resultant along the axis and no moment about it, Z = N = 0.
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> R0 = Frame("R0")
+    >>> Cylindrical(at=R0.origin, axis=R0.k).unknown_names
+    ('X', 'Y', 'L', 'M')
+    """
+
+    __slots__ = ()
+    free_components = (2, 5)
+    free_components_motion_zero = (0, 1, 3, 4)
+
+
+class Spherical(Joint):
+    """Spherical connection (ball joint, *rotule*) at ``at`` (ch. 13.2.2): any rotation about
+    the point.
+
+    Perfect: no moment at the centre, L = M = N = 0. The components are given in the basis
+    of ``axis``'s frame (default: the basis of the root frame of ``at``).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> R0 = Frame("R0")
+    >>> Spherical(at=R0.origin).unknown_names
+    ('X', 'Y', 'Z')
+    """
+
+    __slots__ = ()
+    free_components = (3, 4, 5)
+    free_components_motion_zero = (3, 4, 5)
+
+    def __init__(self, *, at: Point, axis: Vector | None = None):
+        check_point(at, "at")
+        super().__init__(at=at, axis=at.root.k if axis is None else axis)
