@@ -434,3 +434,27 @@ def test_linear_solve_pickle():
     solve = compile_linear_solve(A, rhs, [x, y], symmetric=True)
     clone = pickle.loads(pickle.dumps(solve))
     assert_allclose(clone(0.2, 0.3), solve(0.2, 0.3), rtol=0)
+
+
+def test_batched_symmetric_solve_matches_numpy_and_falls_back():
+    """The batched unrolled Cholesky (symmetric systems) agrees with numpy.linalg.solve on
+    SPD systems; an indefinite member sends the batch through numpy's LU instead."""
+    n = 8
+    a = sympy.symbols(f"a0:{n}")
+    L = sympy.Matrix(n, n, lambda i, j: (a[i] + a[j]) / 4 if i >= j else 0) + sympy.diag(*a)
+    A = L * L.T
+    b = sympy.Matrix([a[i] - 2 * a[(i + 1) % n] for i in range(n)])
+    solve = compile_linear_solve(A, b, [list(a)], symmetric=True)
+    rng = np.random.default_rng(3)
+    values = rng.uniform(0.5, 2.0, size=(n, 50))
+    got = solve(values)
+    f_A = sympy.lambdify([a], A, "numpy")
+    f_b = sympy.lambdify([a], b, "numpy")
+    for k in range(50):
+        expected = np.linalg.solve(np.array(f_A(values[:, k]), dtype=float),
+                                   np.array(f_b(values[:, k]), dtype=float).ravel())
+        assert_allclose(got[:, k], expected, rtol=1e-10)
+    indefinite = compile_linear_solve(sympy.Matrix([[x, 1], [1, 0]]), [1, 2], [x],
+                                      symmetric=True)
+    assert_allclose(indefinite(np.array([1.0, 2.0])),
+                    [[2.0, 2.0], [-1.0, -3.0]], rtol=1e-14)

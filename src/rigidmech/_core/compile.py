@@ -24,6 +24,7 @@ import sympy
 
 from . import _codegen
 from ._codegen import (
+    _batched_cholesky_lines,
     _check_name,
     _cholesky_lines,
     _describe,
@@ -474,8 +475,10 @@ class CompiledLinearSolve(_Compiled):
                     return self._solve_one(result[0], result[1], args)
         arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
         with np.errstate(all="ignore"):
-            A, b = self._batched(*arrays, batch)
-        return self._solve_batch(A, b, arrays, batch)
+            result = self._batched(*arrays, batch)
+        if type(result) is not tuple:
+            return result
+        return self._solve_batch(result[0], result[1], arrays, batch)
 
     def _solve_one(self, A, b, args):
         x = None
@@ -649,13 +652,29 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
         [f"def {name}_batched({', '.join(batched_params)}):"]
         + unpack
         + _codegen.body_lines(printer_array, prepared.replacements)
-        + [f"    _A = numpy.empty(({n}, {n}) + _batch)", f"    _B = numpy.empty(({n},) + _batch)"]
     )
-    for (i, j), e in zip(a_index, reduced, strict=False):
-        target = f"_A[{i}, {j}]" + (f" = _A[{j}, {i}]" if symmetric and i != j else "")
-        batched_lines.append(f"    {target} = {_codegen.print_expr(printer_array, e)}")
-    for i, e in enumerate(reduced[len(a_index) :]):
-        batched_lines.append(f"    _B[{i}] = {_codegen.print_expr(printer_array, e)}")
+    if symmetric:
+        # entries in locals, then an unrolled Cholesky over the batch (see
+        # _batched_cholesky_lines); A and b are built only if that path is left
+        batched_lines += [
+            f"    {local} = {_codegen.print_expr(printer_array, e)}"
+            for local, e in zip(a_locals + b_locals, reduced, strict=True)
+        ]
+        batched_lines += _batched_cholesky_lines(n)
+        batched_lines += [f"    _A = numpy.empty(({n}, {n}) + _batch)",
+                          f"    _B = numpy.empty(({n},) + _batch)"]
+        for i, j in a_index:
+            target = f"_A[{i}, {j}]" + (f" = _A[{j}, {i}]" if i != j else "")
+            batched_lines.append(f"    {target} = {entry[i, j]}")
+        for i in range(n):
+            batched_lines.append(f"    _B[{i}] = _b{i}")
+    else:
+        batched_lines += [f"    _A = numpy.empty(({n}, {n}) + _batch)",
+                          f"    _B = numpy.empty(({n},) + _batch)"]
+        for (i, j), e in zip(a_index, reduced, strict=False):
+            batched_lines.append(f"    _A[{i}, {j}] = {_codegen.print_expr(printer_array, e)}")
+        for i, e in enumerate(reduced[len(a_index) :]):
+            batched_lines.append(f"    _B[{i}] = {_codegen.print_expr(printer_array, e)}")
     batched_lines.append("    return _A, _B")
     obj = CompiledLinearSolve.__new__(CompiledLinearSolve)
     obj._init(
