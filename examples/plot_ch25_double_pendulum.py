@@ -58,8 +58,8 @@ print(scenes.equations_text(eqs, pretty=True))
 # Action of the pivot at O on the first rod
 # -----------------------------------------
 # Derived only now, on demand (ch. 18.2): the fundamental principle for the set {bar1, bar2}
-# carried by that connection. It is a torsor reduced at O, written with the symbols q, q_dot
-# and q_ddot of the parameters of situation and their derivatives. Its moment about k0 is the
+# carried by that connection. It is a torsor reduced at O, written with the parameters of
+# situation theta1(t), theta2(t) and their derivatives. Its moment about k0 is the
 # first equation of motion of the set {bar1, bar2} written as "left minus right side": it
 # vanishes along every motion, as it must for a perfect pivot (N = 0, ch. 13.2.2).
 action = system.connection_action(R0, bar1)

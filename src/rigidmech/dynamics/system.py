@@ -375,11 +375,26 @@ class System:
 
     def connection_action(self, parent, child) -> Torsor:
         """The action exerted by ``parent`` on ``child`` through their connection (ch. 18.2),
-        reduced at the joint's point, in symbol form (q, q_dot, q_ddot).
+        reduced at the joint's point.
 
         Derived only now, from the fundamental principle for the bodies carried by the
         connection: {A(parent -> child)} = sum over the carried bodies of their dynamic
-        torsors minus the other actions exerted on them.
+        torsors minus the other actions exerted on them. Like every torsor of rigidmech it is
+        written with the parameters of situation q(t) and their derivatives; for numbers, use
+        :meth:`connection_components` (symbols q, q_dot, q_ddot, joint basis).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> q = rm.coordinates("q"); m, L, g = rm.constants("m L g", positive=True)
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> G = R0.origin.moved("G", L * R1.i)
+        >>> s = System(galilean=R0)
+        >>> s.connect(R0, rm.Body("bob", frame=R1, mass=m, centre=G),
+        ...           rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.act(rm.gravity(g * R0.i))
+        >>> s.connection_action(R0, s.bodies[0]).resultant
+        -L*m*Derivative(q(t), t)**2*R1.i + L*m*Derivative(q(t), (t, 2))*R1.j - g*m*R0.i
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
@@ -388,7 +403,6 @@ class System:
                 f"there is no connection from {parent.name} to {child.name}.")
         key = ("action", child.name)
         if key not in self._cache:
-            _, _, _, rule = self._symbols()
             joint = self._joints[child][1]
             P = joint.at
             carried = self._subtree(child)
@@ -399,10 +413,7 @@ class System:
             for solid, torsor, _ in self._contributions():
                 if solid in carried:
                     total = total - torsor
-            memo = {}
-            self._cache[key] = Torsor(
-                total.resultant.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]),
-                total.moment.applyfunc(lambda e: xreplace_shared([e], rule, memo)[0]), P)
+            self._cache[key] = total
         return self._cache[key]
 
     def connection_components(self, parent, child) -> dict:
