@@ -413,7 +413,7 @@ class System:
             for solid, torsor, _ in self._contributions():
                 if solid in carried:
                     total = total - torsor
-            self._cache[key] = total
+            self._cache[key] = Torsor(total.resultant.compact(), total.moment.compact(), P)
         return self._cache[key]
 
     def connection_components(self, parent, child) -> dict:

@@ -439,6 +439,45 @@ class Vector:
                     out = out + w.cross(Vector._from_parts(((f, c),)))
         return out
 
+    def compact(self) -> Vector:
+        """The same vector with each part along one axis moved into another part's basis
+        when that axis is also an axis of the other basis (k of frames turning about k, for
+        instance): such parts join instead of standing apart. Not done automatically: it
+        needs direction cosines between every pair of bases used.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q1, q2 = coordinates("q1 q2")
+        >>> R0 = Frame("R0")
+        >>> R1 = R0.rotated("R1", about=R0.k, angle=q1)
+        >>> R2 = R0.rotated("R2", about=R0.k, angle=q2)
+        >>> (2 * R1.k + 3 * R2.k + R2.i).compact()
+        R2.i + 5*R2.k
+        """
+        parts = list(self._parts)
+        changed = True
+        while changed and len(parts) > 1:
+            changed = False
+            for a in range(len(parts)):
+                fa, ca = parts[a]
+                if _nonzero(ca) != 1:
+                    continue
+                for b in range(len(parts)):
+                    if a == b:
+                        continue
+                    fb, cb = parts[b]
+                    moved = matvec(direction_cosines(fb, fa), ca)
+                    if _nonzero(moved) == 1:
+                        merged = tuple(x + y for x, y in zip(cb, moved, strict=True))
+                        parts[b] = (fb, merged)
+                        del parts[a]
+                        changed = True
+                        break
+                if changed:
+                    break
+        return Vector._from_parts((f, c) for f, c in parts if _any_nonzero(c))
+
     # -- element-wise transforms --------------------------------------------------------
     def applyfunc(self, func) -> Vector:
         """Apply ``func`` to every component (of every part).
