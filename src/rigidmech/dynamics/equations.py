@@ -227,6 +227,27 @@ class EquationsOfMotion:
             raise NumericalError(f"integration failed: {res.message}")
         return Simulation(self, res, params, elapsed)
 
+    def _latex(self, printer=None):
+        acc = sp.Matrix([sp.Symbol(rf"\ddot{{{sp.latex(q)}}}") for q in self._q])
+        return (sp.latex(sp.Matrix(self._M)) + sp.latex(acc) + " = "
+                + sp.latex(sp.Matrix(self._f)))
+
+    def _repr_latex_(self):
+        """M(q) q'' = f(q, q', t) rendered in Jupyter and in the docs.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> x, v, k = sp.symbols("x x_dot k")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> print(eqs._repr_latex_()[:60])
+        $\\displaystyle \\left[\\begin{matrix}1\\end{matrix}\\right]\\left[\\begin{matrix}
+        >>> "\\ddot{x}" in eqs._repr_latex_()
+        True
+        """
+        return f"$\\displaystyle {self._latex()}$"
+
     def __repr__(self):
         return (f"EquationsOfMotion(coordinates={list(self._coordinates)}, "
                 f"n={len(self._q)}, parameters={list(self._params)})")
