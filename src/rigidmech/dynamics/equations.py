@@ -306,26 +306,29 @@ class Simulation:
         return float(np.max(np.abs(e - e[0])) / scale)
 
     def plot(self, path=None, *, ax=None):
-        """Plot the parameters of situation against time; save to ``path`` if given."""
-        import matplotlib
+        """Plot the parameters of situation against time; save to ``path`` if given.
 
-        if path is not None and ax is None:
-            matplotlib.use("Agg", force=False)
-        import matplotlib.pyplot as plt
+        With ``path`` and no ``ax`` the figure is drawn off-screen (no pyplot state, works
+        headless); with neither, pyplot makes a figure to show. Returns the Axes.
+        """
+        if ax is None:
+            if path is not None:
+                from matplotlib.figure import Figure  # imported on use (slow import)
 
-        own = ax is None
-        if own:
-            fig, ax = plt.subplots(figsize=(7, 4))
+                ax = Figure(figsize=(7, 4)).subplots()
+            else:
+                import matplotlib.pyplot as plt  # imported on use (slow import)
+
+                ax = plt.subplots(figsize=(7, 4))[1]
         for i, q in enumerate(self._eqs.q):
             ax.plot(self.t, self.q[i], label=f"${sp.latex(q)}$")
         ax.set_xlabel("t")
         ax.set_ylabel("parameters of situation")
         ax.legend()
         ax.grid(True, alpha=0.3)
-        if own and path is not None:
-            fig.tight_layout()
-            fig.savefig(path, dpi=100)
-            plt.close(fig)
+        if path is not None:
+            ax.figure.tight_layout()
+            ax.figure.savefig(path, dpi=100)
         return ax
 
     def __repr__(self):
