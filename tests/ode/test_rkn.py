@@ -10,7 +10,15 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from rigidmech.ode import rkn
 from rigidmech.ode.problems import kepler, pendulum
 
-PAIRS = [rkn.DPRKN6]
+PAIRS = [rkn.DPRKN6, rkn.DPRKN12]
+#: DPRKN6 is exact in Q(sqrt(8581)); the published DPRKN12 rationals are ~50-digit
+#: approximations (rows sums and order conditions measured to hold to 4e-53): a transcription
+#: slip would show far above 1e-45, and anything below 1e-30 is invisible in double precision
+TOL = {"rkn64": 0, "rkn1210": 1e-45}
+
+
+def _small(r, pair):
+    return r == 0 if TOL[pair.name] == 0 else abs(sp.Float(r, 60)) <= TOL[pair.name]
 
 
 def _exact(pair):
@@ -53,30 +61,33 @@ def _conditions(c, A, bbar, b, p):
                 out.append((f"bbar c^{k} A c^{m}",
                             sum(bbar[i] * c[i] ** k * inner[i] for i in range(s))
                             - sp.Rational(1, (m + 1) * (m + 2) * (k + m + 3) * (k + m + 4))))
-    return [(name, sp.nsimplify(sp.expand(r))) for name, r in out]
+    return [(name, sp.expand(r)) for name, r in out]
 
 
 @pytest.mark.parametrize("pair", PAIRS, ids=lambda p: p.name)
 def test_row_sums_and_explicitness(pair):
     c, A, *_ = _exact(pair)
     for i, row in enumerate(A):
-        assert sp.expand(sum(row) - c[i] ** 2 / 2) == 0, i
+        assert _small(sp.expand(sum(row) - c[i] ** 2 / 2), pair), i
         assert all(x == 0 for x in row[i:]), i
 
 
 @pytest.mark.parametrize("pair", PAIRS, ids=lambda p: p.name)
 def test_order_conditions_exact(pair):
     c, A, bbar, b, bbar_hat, b_hat = _exact(pair)
-    bad = [n for n, r in _conditions(c, A, bbar, b, pair.order) if r != 0]
+    bad = [n for n, r in _conditions(c, A, bbar, b, pair.order) if not _small(r, pair)]
     assert bad == []
-    bad = [n for n, r in _conditions(c, A, bbar_hat, b_hat, pair.order_embedded) if r != 0]
+    bad = [n for n, r in _conditions(c, A, bbar_hat, b_hat, pair.order_embedded)
+           if not _small(r, pair)]
     assert bad == []
     # and the orders are not higher than claimed: the next quadrature conditions fail
     s = len(c)
     p = pair.order
-    assert sp.expand(sum(b[i] * c[i] ** p for i in range(s)) - sp.Rational(1, p + 1)) != 0
+    r = sp.expand(sum(b[i] * c[i] ** p for i in range(s)) - sp.Rational(1, p + 1))
+    assert abs(sp.Float(r, 30)) > 1e-12
     q = pair.order_embedded
-    assert sp.expand(sum(b_hat[i] * c[i] ** q for i in range(s)) - sp.Rational(1, q + 1)) != 0
+    r = sp.expand(sum(b_hat[i] * c[i] ** q for i in range(s)) - sp.Rational(1, q + 1))
+    assert abs(sp.Float(r, 30)) > 1e-12
 
 
 @pytest.mark.parametrize("pair", PAIRS, ids=lambda p: p.name)
@@ -102,17 +113,36 @@ def test_observed_order_six_on_kepler():
     assert abs(slope - 6) <= 0.05 * 6, (slope, errs)
 
 
+def test_observed_order_twelve_on_kepler():
+    # fixed step, half an orbit of Kepler e = 0.6 with 40-70 steps per orbit: errors 7.6e-11
+    # to 1.0e-13, above the rounding floor (about 3e-15 here). The local slopes scatter
+    # (11.9, 11.3, 12.4: the steps sample the pericentre passage differently), the fit over
+    # the four gives 11.77.
+    p = kepler(0.6, orbits=0.5)
+    hs, errs = [], []
+    for n in (40, 50, 60, 70):
+        h = 2 * p.t_span[1] / n
+        r = ode.solve(p.acceleration, p.t_span, p.y0, method="rkn1210", step=h)
+        hs.append(h)
+        errs.append(p.final_error(r.y[:, -1]))
+    slope = np.polyfit(np.log(hs), np.log(errs), 1)[0]
+    assert abs(slope - 12) <= 0.05 * 12, (slope, errs)
+
+
+@pytest.mark.parametrize(("method", "per_step"), [(rkn.rkn64, 5), (rkn.rkn1210, 17)])
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9, 1e-11])
-def test_reaches_tolerance_on_kepler(rtol):
+def test_reaches_tolerance_on_kepler(method, per_step, rtol):
     # Kepler e = 0.6 over 10 orbits against the exact solution (Kepler's equation, 27.3.1):
-    # the global error stays within 30 rtol (measured 20, 0.6 and 1.2 rtol at these rtols: the
-    # 4th-order estimate controls a 6th-order solution, and errors add up over 10 orbits).
+    # the global error stays within 60 rtol (measured for rkn64 20, 0.6 and 1.2 rtol, for
+    # rkn1210 42, 24 and 15 rtol: local errors ~rtol per step add up over 10 orbits and the
+    # pericentre passages; a per-step tolerance does not bound the global error).
     p = kepler(0.6)
-    r = rkn.rkn64(p.acceleration, p.t_span, p.y0, rtol=rtol, atol=1e-3 * rtol)
+    r = method(p.acceleration, p.t_span, p.y0, rtol=rtol, atol=1e-3 * rtol)
     assert r.status == 0
     assert r.t[-1] == p.t_span[1]
-    assert p.final_error(r.y[:, -1]) <= 30 * rtol
-    assert r.nfev == 1 + 1 + 5 * (r.nsteps + r.nrejected)  # shape probe, first-step, FSAL
+    assert p.final_error(r.y[:, -1]) <= 60 * rtol
+    # shape probe, first-step estimate, then per_step calls per attempted step
+    assert r.nfev == 1 + 1 + per_step * (r.nsteps + r.nrejected)
 
 
 def test_matches_solve_ivp_style_first_order_solution_on_pendulum():
@@ -183,9 +213,11 @@ def test_buffer_safety_same_array_returned():
     def acc_fresh(t, q):
         return acc_buf(t, q).copy()
 
-    for kw in ({"rtol": 1e-9, "atol": 1e-12, "dense_output": True}, {"step": 0.01}):
-        a = rkn.rkn64(acc_buf, p.t_span, p.y0, **kw)
-        b = rkn.rkn64(acc_fresh, p.t_span, p.y0, **kw)
+    for method, kw in [(m, kw) for m in (rkn.rkn64, rkn.rkn1210)
+                       for kw in ({"rtol": 1e-9, "atol": 1e-12, "dense_output": True},
+                                  {"step": 0.05})]:
+        a = method(acc_buf, p.t_span, p.y0, **kw)
+        b = method(acc_fresh, p.t_span, p.y0, **kw)
         assert np.array_equal(a.y, b.y) and np.array_equal(a.t, b.t)
         if a.sol is not None:
             assert np.array_equal(a.sol(1.0), b.sol(1.0))
@@ -195,9 +227,10 @@ def test_large_system_numpy_path_matches_unrolled():
     # d = 10 > FLOAT_PATH_MAX_D runs the whole-array kernel: ten oscillators, exact solution
     w = np.linspace(1.0, 2.0, 10)
     y0 = np.concatenate([np.ones(10), np.zeros(10)])
-    r = rkn.rkn64(lambda t, q: -(w**2) * q, (0.0, 3.0), y0, rtol=1e-10, atol=1e-12)
-    assert_allclose(r.y[:10, -1], np.cos(3.0 * w), atol=1e-9)
-    assert_allclose(r.y[10:, -1], -w * np.sin(3.0 * w), atol=1e-9)
+    for method in (rkn.rkn64, rkn.rkn1210):
+        r = method(lambda t, q: -(w**2) * q, (0.0, 3.0), y0, rtol=1e-10, atol=1e-12)
+        assert_allclose(r.y[:10, -1], np.cos(3.0 * w), atol=1e-9)
+        assert_allclose(r.y[10:, -1], -w * np.sin(3.0 * w), atol=1e-9)
 
 
 def test_max_steps_status():
