@@ -98,7 +98,7 @@ def test_fsal_last_row_is_the_position_update(pair):
 
 
 def test_observed_order_six_on_kepler():
-    # fixed step (ode.solve gives a step): half an orbit of Kepler e = 0.3, ending at the
+    # fixed step (direct call with a step): half an orbit of Kepler e = 0.3, ending at the
     # apocentre; 150-300 steps per orbit are in the asymptotic range (local slopes 6.12, 6.09,
     # then 6.02 at 400, before the rounding floor near 1e-13). After whole orbits the error of
     # this pair cancels to O(h^7) (measured slopes 7.0-7.3), hence the half orbit.
@@ -106,7 +106,7 @@ def test_observed_order_six_on_kepler():
     hs, errs = [], []
     for n in (150, 200, 300):
         h = 2 * p.t_span[1] / n
-        r = ode.solve(p.acceleration, p.t_span, p.y0, method="rkn64", step=h)
+        r = rkn.rkn64(p.acceleration, p.t_span, p.y0, step=h)
         hs.append(h)
         errs.append(p.final_error(r.y[:, -1]))
     slope = np.polyfit(np.log(hs), np.log(errs), 1)[0]
@@ -122,7 +122,7 @@ def test_observed_order_twelve_on_kepler():
     hs, errs = [], []
     for n in (40, 50, 60, 70):
         h = 2 * p.t_span[1] / n
-        r = ode.solve(p.acceleration, p.t_span, p.y0, method="rkn1210", step=h)
+        r = rkn.rkn1210(p.acceleration, p.t_span, p.y0, step=h)
         hs.append(h)
         errs.append(p.final_error(r.y[:, -1]))
     slope = np.polyfit(np.log(hs), np.log(errs), 1)[0]
@@ -182,12 +182,21 @@ def test_dense_output_quintic_hermite():
     assert_allclose(r.sol(tt), [tt**5, 5 * tt**4], atol=1e-13)
 
 
-def test_via_solve_with_a_step_dense_and_events():
-    r = ode.solve(lambda t, q: -q, (0.0, np.pi), [1.0, 0.0], method="rkn64", step=0.05,
-                  dense_output=True, events=lambda t, y: y[0])
+def test_via_solve_adaptive_dense_and_events():
+    """solve() drives the pairs with error control (kind "adaptive_second_order")."""
+    r = ode.solve(lambda t, q: -q, (0.0, np.pi), [1.0, 0.0], method="rkn64", rtol=1e-10,
+                  atol=1e-12, dense_output=True, events=lambda t, y: y[0])
     assert_allclose(r.t_events[0], [np.pi / 2], atol=1e-8)
-    assert_allclose(r.y[:, -1], [-1.0, 0.0], atol=1e-9)
-    assert "rkn64" in ode.methods("second_order")
+    assert_allclose(r.y[:, -1], [-1.0, 0.0], atol=1e-8)
+    assert {"rkn64", "rkn1210"} <= set(ode.methods("adaptive_second_order"))
+    with pytest.raises(ValueError, match="`step` is only for fixed-step methods"):
+        ode.solve(lambda t, q: -q, (0.0, 1.0), [1.0, 0.0], method="rkn1210", step=0.1)
+
+
+def test_rkn1210_via_solve_reaches_tight_error_on_kepler():
+    p = kepler(0.6, orbits=1)
+    r = ode.solve(p.acceleration, p.t_span, p.y0, method="rkn1210", rtol=1e-13, atol=1e-16)
+    assert p.final_error(r.y[:, -1]) < 1e-10
 
 
 def test_events_adaptive_direct_call():

@@ -213,7 +213,7 @@ class EquationsOfMotion:
         if u0.shape != (n,):
             raise ArgumentError(f"`u0` must give {n} initial values; got {u0.tolist()!r}.")
         y0 = np.concatenate((np.asarray(q0, dtype=float), u0))
-        if method.lower() in ode.methods("second_order"):
+        if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
             fun = self._acceleration_only(method, params)
         else:
             fun = self.rhs(**params)

@@ -10,6 +10,9 @@ together with its *kind*, which tells :func:`~rigidmech.ode.solve` which argumen
     Fixed-step method for ``q'' = a(t, q)`` (Stormer-Verlet, compositions); ``fun`` is the
     acceleration ``a(t, q)`` and ``y0`` is the concatenation ``[q0, v0]``; called like
     ``"fixed"``.
+``"adaptive_second_order"``
+    Error-controlled method for ``q'' = a(t, q)`` (Runge-Kutta-Nystrom pairs): ``fun`` and
+    ``y0`` as for ``"second_order"``, called like ``"adaptive"``.
 ``"adaptive"``
     Error-controlled explicit method; called as ``fn(fun, t_span, y0, step=None, rtol=...,
     atol=..., first_step=..., max_step=..., max_steps=..., dense_output=..., events=...)``.
@@ -29,7 +32,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 __all__ = ["KINDS", "MethodEntry", "register", "unregister", "get", "names"]
 
 #: The kinds of method the dispatcher knows how to call.
-KINDS = ("fixed", "adaptive", "second_order", "stiff")
+KINDS = ("fixed", "adaptive", "second_order", "adaptive_second_order", "stiff")
 
 
 @dataclass(frozen=True)
@@ -59,7 +62,7 @@ def register(name: str, fn: Callable, *, kind: str) -> Callable:
         Short lower-case name used as ``solve(..., method=name)``.
     fn : callable
         ``fn(fun, t_span, y0, *, step, **options) -> OdeResult``.
-    kind : {"fixed", "adaptive", "second_order", "stiff"}
+    kind : {"fixed", "adaptive", "second_order", "adaptive_second_order", "stiff"}
         How :func:`~rigidmech.ode.solve` calls `fn` (see the module docstring).
 
     Returns

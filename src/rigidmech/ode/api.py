@@ -15,6 +15,8 @@ is imported by ``rigidmech/ode/__init__.py``). What it receives depends on its k
   ``max_steps`` (``N <= max_steps`` is guaranteed). It returns all ``N + 1`` grid points.
 * ``"second_order"`` - the same, but ``fun`` is the acceleration ``a(t, q)`` of
   ``q'' = a(t, q)`` and ``y0 = [q0, v0]`` (``n`` even); the result's ``y`` holds ``[q, v]``.
+* ``"adaptive_second_order"`` - ``fun`` and ``y0`` as for ``"second_order"``, the options
+  as for ``"adaptive"``.
 * ``"adaptive"`` / ``"stiff"`` - ``step=None`` and the options ``rtol``, ``atol`` (float or
   array broadcastable to ``y0``), ``first_step`` (None or float > 0), ``max_step``,
   ``max_steps``, ``dense_output`` (bool: fill ``OdeResult.sol``) and ``events`` (None or an
@@ -54,7 +56,7 @@ def methods(kind: str | None = None) -> list[str]:
 
     Parameters
     ----------
-    kind : {"fixed", "adaptive", "second_order", "stiff"}, optional
+    kind : {"fixed", "adaptive", "second_order", "adaptive_second_order", "stiff"}, optional
 
     Examples
     --------
@@ -227,9 +229,12 @@ def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
     return dataclasses.replace(res, **changes)
 
 
+_SECOND_ORDER = ("second_order", "adaptive_second_order")
+
+
 def _check_fun_output(fun, t0, y, kind):
     """One call of `fun` at the initial state, to refuse a wrong output shape clearly."""
-    if kind == "second_order":
+    if kind in _SECOND_ORDER:
         if y.shape[0] % 2:
             return  # refused with its own message
         arg, want = y[: y.shape[0] // 2].copy(), (y.shape[0] // 2,) + y.shape[1:]
@@ -385,7 +390,7 @@ def solve(
         tracker = EventTracker(events, t0, y.copy())
     kind = entry.kind
     _check_fun_output(fun, t0, y, kind)
-    if kind == "second_order" and shape[0] % 2:
+    if kind in _SECOND_ORDER and shape[0] % 2:
         raise ArgumentError(
             f"`y0` must be [q0, v0] of even length n for method {entry.name!r}; got n = "
             f"{shape[0]}."

@@ -6,15 +6,15 @@ Runge-Kutta-Nystrom (RKN) method integrates them directly, without doubling the 
 ``y' = (v, a)``; for the same order it needs fewer stages than a Runge-Kutta method (DPRKN6:
 6 stages, 5 evaluations per step thanks to FSAL, against 12 for DOP853).
 
-Methods (registered in :func:`rigidmech.ode.solve` with kind ``"second_order"``: ``fun`` is
-the acceleration ``a(t, q)`` and ``y0 = [q0, v0]``):
+Methods (registered in :func:`rigidmech.ode.solve` with kind ``"adaptive_second_order"``:
+``fun`` is the acceleration ``a(t, q)`` and ``y0 = [q0, v0]``; ``solve`` passes ``rtol``,
+``atol``, ``first_step``, ``max_step``, dense output and events):
 
 ``"rkn64"``
-    Dormand and Prince's 6(4) RKN pair with FSAL (DPRKN6). Called by :func:`~rigidmech.ode.solve`
-    (which gives a `step`), it runs the 6th-order formula with a constant step; called
-    directly as :func:`rkn64` with ``step=None`` it controls the local error (``rtol``,
-    ``atol``) with the 4th-order embedded formula, Hairer's RMS norm on ``(q, v)``, and offers
-    dense output and events.
+    Dormand and Prince's 6(4) RKN pair with FSAL (DPRKN6): the local error (``rtol``,
+    ``atol``) is controlled with the 4th-order embedded formula, Hairer's RMS norm on
+    ``(q, v)``; dense output and events. Called directly as :func:`rkn64` with a ``step``, it
+    runs the 6th-order formula with a constant step.
 ``"rkn1210"``
     Dormand, El-Mikkawy and Prince's 12(10) pair (DPRKN12), 17 evaluations per step, for
     tight tolerances; same two ways of calling.
@@ -467,9 +467,8 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     y0 : array_like, shape (2 d,)
         ``[q0, v0]`` (no batch axis).
     step : float, optional
-        Constant step (the 6th-order formula without error control; what
-        :func:`~rigidmech.ode.solve` uses, since it calls ``"second_order"`` methods with a
-        step). ``None``: adaptive step.
+        Constant step (the 6th-order formula without error control). ``None`` (what
+        :func:`~rigidmech.ode.solve` passes): adaptive step.
     rtol, atol : float (`atol` also array of shape ``(2 d,)``)
         Local error of the 4th-order embedded formula kept below ``atol + rtol |y|`` in
         Hairer's RMS norm over the ``2 d`` components of ``(q, v)``.
@@ -557,5 +556,5 @@ def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None
                 dense_output, events)
 
 
-register("rkn64", rkn64, kind="second_order")
-register("rkn1210", rkn1210, kind="second_order")
+register("rkn64", rkn64, kind="adaptive_second_order")
+register("rkn1210", rkn1210, kind="adaptive_second_order")

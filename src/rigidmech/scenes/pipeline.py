@@ -171,7 +171,7 @@ def _method(method, step):
     known = ode.methods()
     if not isinstance(method, str) or method not in known:
         raise SceneError(f"unknown method {method!r}; known methods: {', '.join(known)}.")
-    if method in ode.methods("second_order"):
+    if method in ode.methods("second_order") + ode.methods("adaptive_second_order"):
         raise SceneError(
             f"method {method!r} integrates q'' = a(t, q) only; the equations of a scene depend "
             "on q' too: choose another method.")
