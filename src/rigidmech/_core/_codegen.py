@@ -412,6 +412,29 @@ def _output_code(template, reduced, printer_math, printer_array):
     return single(template), batched_lines, batched(template)
 
 
+def _cholesky_steps(n, indent, check_pivot, inverse_sqrt):
+    """The factorisation and the two triangular solves of an unrolled Cholesky, shared by the
+    scalar and the batched code: locals ``_a{j}_{i}`` (j <= i) and ``_b{i}`` in, ``_z{i}`` out.
+    ``check_pivot`` is the line that follows each pivot ``_p``; ``inverse_sqrt`` formats
+    1/sqrt(_p)."""
+    lines = []
+    for j in range(n):
+        pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
+        lines.append(f"{indent}_p = {pivot}")
+        lines.append(f"{indent}{check_pivot}")
+        lines.append(f"{indent}_r{j} = {inverse_sqrt}")
+        for i in range(j + 1, n):
+            rest = "".join(f" - _l{i}_{k}*_l{j}_{k}" for k in range(j))
+            lines.append(f"{indent}_l{i}_{j} = (_a{j}_{i}{rest})*_r{j}")
+    for i in range(n):
+        rest = "".join(f" - _l{i}_{k}*_y{k}" for k in range(i))
+        lines.append(f"{indent}_y{i} = (_b{i}{rest})*_r{i}")
+    for i in reversed(range(n)):
+        rest = "".join(f" - _l{k}_{i}*_z{k}" for k in range(i + 1, n))
+        lines.append(f"{indent}_z{i} = (_y{i}{rest})*_r{i}")
+    return lines
+
+
 def _cholesky_lines(n):
     """Unrolled Cholesky solve of the symmetric system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``.
 
@@ -425,20 +448,8 @@ def _cholesky_lines(n):
         f"        _s = {entries}",
         "        if not _s - _s == 0.0: raise ArithmeticError",
     ]
-    for j in range(n):
-        pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
-        lines.append(f"        _p = {pivot}")
-        lines.append("        if not _p > 0.0: raise ArithmeticError")
-        lines.append(f"        _r{j} = 1.0/math.sqrt(_p)")
-        for i in range(j + 1, n):
-            rest = "".join(f" - _l{i}_{k}*_l{j}_{k}" for k in range(j))
-            lines.append(f"        _l{i}_{j} = (_a{j}_{i}{rest})*_r{j}")
-    for i in range(n):
-        rest = "".join(f" - _l{i}_{k}*_y{k}" for k in range(i))
-        lines.append(f"        _y{i} = (_b{i}{rest})*_r{i}")
-    for i in reversed(range(n)):
-        rest = "".join(f" - _l{k}_{i}*_z{k}" for k in range(i + 1, n))
-        lines.append(f"        _z{i} = (_y{i}{rest})*_r{i}")
+    lines += _cholesky_steps(n, "        ", "if not _p > 0.0: raise ArithmeticError",
+                             "1.0/math.sqrt(_p)")
     lines.append("        return numpy.array([" + ", ".join(f"_z{i}" for i in range(n)) + "])")
     lines.append("    except ArithmeticError:")
     lines.append("        pass")
@@ -456,20 +467,8 @@ def _batched_cholesky_lines(n):
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
     lines = [f"    _ok = bool(numpy.isfinite({entries}).all())"]
-    for j in range(n):
-        pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
-        lines.append(f"    _p = {pivot}")
-        lines.append("    _ok = _ok and bool(numpy.all(_p > 0.0))")
-        lines.append(f"    _r{j} = 1.0/numpy.sqrt(numpy.abs(_p))")
-        for i in range(j + 1, n):
-            rest = "".join(f" - _l{i}_{k}*_l{j}_{k}" for k in range(j))
-            lines.append(f"    _l{i}_{j} = (_a{j}_{i}{rest})*_r{j}")
-    for i in range(n):
-        rest = "".join(f" - _l{i}_{k}*_y{k}" for k in range(i))
-        lines.append(f"    _y{i} = (_b{i}{rest})*_r{i}")
-    for i in reversed(range(n)):
-        rest = "".join(f" - _l{k}_{i}*_z{k}" for k in range(i + 1, n))
-        lines.append(f"    _z{i} = (_y{i}{rest})*_r{i}")
+    lines += _cholesky_steps(n, "    ", "_ok = _ok and bool(numpy.all(_p > 0.0))",
+                             "1.0/numpy.sqrt(numpy.abs(_p))")
     zs = ", ".join(f"_z{i}" for i in range(n))
     lines.append(f"    _x = numpy.stack(numpy.broadcast_arrays({zs}, numpy.empty(_batch)))[:{n}]")
     lines.append("    if _ok and numpy.isfinite(_x).all():")
