@@ -53,6 +53,28 @@ PI_ERR_FLOOR = 1e-4
 STEP_CONTROLS = ("i", "pi")
 
 
+def _stiffness_test(pair, hlamb, t_new, iasti, nonsti, warned):
+    """One step of Hairer's stiffness detection (DOPRI5/DOP853): 15 checks in a row with
+    h |lambda| beyond the stability border warn once; 6 checks below reset the count.
+    Returns the updated (iasti, nonsti, warned). Shared by the numpy and the float paths."""
+    if hlamb > pair.stiff_border:
+        iasti, nonsti = iasti + 1, 0
+        if iasti == 15 and not warned:
+            warned = True
+            warnings.warn(
+                f"The problem seems to have become stiff at t = {t_new:.6g} "
+                f"(method {pair.name!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
+                "use method='radau'.",
+                StiffnessWarning,
+                stacklevel=5,
+            )
+    else:
+        nonsti += 1
+        if nonsti == 6:
+            iasti = 0
+    return iasti, nonsti, warned
+
+
 class _Pair:
     """Constants of one embedded pair, precomputed once."""
 
@@ -233,22 +255,8 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
             if den > 0:
                 d = K[s] - K[s - 1]
                 hlamb = h_abs * math.sqrt(float(np.dot(d, d)) / den)
-                if hlamb > pair.stiff_border:
-                    nonsti = 0
-                    iasti += 1
-                    if iasti == 15 and not warned:
-                        warned = True
-                        warnings.warn(
-                            f"The problem seems to have become stiff at t = {t_new:.6g} "
-                            f"(method {pair.name!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
-                            "use method='radau'.",
-                            StiffnessWarning,
-                            stacklevel=4,
-                        )
-                else:
-                    nonsti += 1
-                    if nonsti == 6:
-                        iasti = 0
+                iasti, nonsti, warned = _stiffness_test(pair, hlamb, t_new, iasti, nonsti,
+                                                        warned)
         if rec.cs is not None or events is not None:
             coeffs = _dense_dop853(pair, prob, t, y, y_new, h, K) if is853 else (
                 (h * pair.P) @ K[: s + 1])
@@ -359,22 +367,8 @@ def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step,
             if den > 0:
                 num = sum((a - b_) ** 2 for a, b_ in zip(ks[-1], ks[-2], strict=True))
                 hlamb = h_abs * sqrt(num / den)
-                if hlamb > pair.stiff_border:
-                    nonsti = 0
-                    iasti += 1
-                    if iasti == 15 and not warned:
-                        warned = True
-                        warnings.warn(
-                            f"The problem seems to have become stiff at t = {t_new:.6g} "
-                            f"(method {pair.name!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
-                            "use method='radau'.",
-                            StiffnessWarning,
-                            stacklevel=4,
-                        )
-                else:
-                    nonsti += 1
-                    if nonsti == 6:
-                        iasti = 0
+                iasti, nonsti, warned = _stiffness_test(pair, hlamb, t_new, iasti, nonsti,
+                                                        warned)
         if want:
             ya, yna = np.array(y), np.array(y_new)
             if is853:
