@@ -65,8 +65,11 @@ class Joint:
     """
 
     __slots__ = ("_at", "_axis", "_basis")
-    #: indices in (X, Y, Z, L, M, N) of the components that are zero for a perfect joint
-    free_components: tuple = ()
+    #: indices in (X, Y, Z, L, M, N) of the action components that are zero for a perfect joint
+    zero_components: tuple = ()
+    #: indices in (omega_u, omega_v, omega_w, v_u, v_v, v_w) of the relative motion the joint
+    #: forbids (kinematic torsor components at its point that must vanish)
+    blocked_motion: tuple = ()
 
     def __init__(self, *, at: Point, axis: Vector):
         check_point(at, "at")
@@ -92,7 +95,7 @@ class Joint:
     @property
     def unknown_names(self):
         """Names of the unknown components of the action torsor of a perfect connection."""
-        return tuple(n for i, n in enumerate(_NAMES) if i not in self.free_components)
+        return tuple(n for i, n in enumerate(_NAMES) if i not in self.zero_components)
 
     def action_torsor(self, label: str) -> tuple[Torsor, tuple]:
         """The action torsor of a perfect connection with unknown components as symbols
@@ -111,12 +114,12 @@ class Joint:
         (X_01, Y_01, Z_01, L_01, M_01)
         """
         syms = [sp.Symbol(f"{n}_{label}", real=True) for n in _NAMES]
-        vals = [sp.S.Zero if i in self.free_components else s for i, s in enumerate(syms)]
+        vals = [sp.S.Zero if i in self.zero_components else s for i, s in enumerate(syms)]
         u, v, w = self._basis
         r = vals[0] * u + vals[1] * v + vals[2] * w
         m = vals[3] * u + vals[4] * v + vals[5] * w
         return Torsor(r, m, self._at), tuple(
-            s for i, s in enumerate(syms) if i not in self.free_components)
+            s for i, s in enumerate(syms) if i not in self.zero_components)
 
     def components(self, torsor: Torsor) -> dict:
         """The six components (X, Y, Z, L, M, N) of ``torsor`` in the local basis, with the
@@ -160,7 +163,7 @@ class Joint:
         comps = self._motion_components(V)
         names = ("wX", "wY", "wZ", "X", "Y", "Z")
         bad = [(names[i], c) for i, c in enumerate(comps)
-               if i in self.free_components_motion_zero and c != 0 and sp.simplify(c) != 0]
+               if i in self.blocked_motion and c != 0 and sp.simplify(c) != 0]
         if bad:
             raise ConnectionError_(
                 f"{type(self).__name__} at {self._at.name}: the relative motion is not "
@@ -192,9 +195,9 @@ class Pivot(Joint):
     """
 
     __slots__ = ()
-    free_components = (5,)
+    zero_components = (5,)
     #: allowed motion: rotation about w only, no velocity at the point
-    free_components_motion_zero = (0, 1, 3, 4, 5)
+    blocked_motion = (0, 1, 3, 4, 5)
 
 
 class Prismatic(Joint):
@@ -212,8 +215,8 @@ class Prismatic(Joint):
     """
 
     __slots__ = ()
-    free_components = (2,)
-    free_components_motion_zero = (0, 1, 2, 3, 4)
+    zero_components = (2,)
+    blocked_motion = (0, 1, 2, 3, 4)
 
 
 class Cylindrical(Joint):
@@ -231,8 +234,8 @@ class Cylindrical(Joint):
     """
 
     __slots__ = ()
-    free_components = (2, 5)
-    free_components_motion_zero = (0, 1, 3, 4)
+    zero_components = (2, 5)
+    blocked_motion = (0, 1, 3, 4)
 
 
 class Spherical(Joint):
@@ -251,8 +254,8 @@ class Spherical(Joint):
     """
 
     __slots__ = ()
-    free_components = (3, 4, 5)
-    free_components_motion_zero = (3, 4, 5)
+    zero_components = (3, 4, 5)
+    blocked_motion = (3, 4, 5)
 
     def __init__(self, *, at: Point, axis: Vector | None = None):
         check_point(at, "at")

@@ -253,7 +253,7 @@ class System:
         V_i(P) = d(O_R P)/dq_i |_R for the anchor of the solid, transported to P with
         Omega_i = d omega / d q_i': no differentiation of velocity expressions is needed.
         """
-        key = ("partials", solid.name, point)
+        key = ("partials", solid, point)
         if key not in self._cache:
             R = self._galilean
             anchor_pos = solid.anchor - R.origin
@@ -401,7 +401,7 @@ class System:
         if self._joints.get(child, (None,))[0] is not parent:
             raise ConnectionError_(
                 f"there is no connection from {parent.name} to {child.name}.")
-        key = ("action", child.name)
+        key = ("action", child)
         if key not in self._cache:
             joint = self._joints[child][1]
             P = joint.at

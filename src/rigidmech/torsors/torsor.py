@@ -159,12 +159,6 @@ class Torsor:
         return type(self)._new(self._resultant, self.moment_at(point), point, like=self)
 
     # -- algebra ------------------------------------------------------------------------
-    def _check_combinable(self, other):
-        if not isinstance(other, Torsor):
-            raise ArgumentTypeError(
-                f"a Torsor can only be combined with a Torsor; got {type(other).__name__}."
-            )
-
     def __add__(self, other):
         if isinstance(other, Vector | Point):
             raise ArgumentTypeError(
@@ -173,7 +167,6 @@ class Torsor:
             )
         if not isinstance(other, Torsor):
             return NotImplemented
-        self._check_combinable(other)
         return type(self)._new(
             self._resultant + other._resultant,
             self._moment + other.moment_at(self._point),
