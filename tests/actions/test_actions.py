@@ -141,3 +141,24 @@ def test_cylindrical_joint_allows_rotation_and_sliding():
     assert s.coordinates == (q, z)
     with pytest.raises(ValueError, match="Spherical at O_R0: the relative motion"):
         rm.System(galilean=R0).connect(R0, body, rm.joints.Spherical(at=R0.origin))
+
+
+def test_bodies_sharing_a_name_are_kept_apart():
+    """Regression: the system's caches were keyed by body name, so two bodies both named
+    "bar" shared their partial kinematic torsors. The double pendulum must not depend on the
+    names chosen."""
+    def mass_matrix(name1, name2):
+        q1, q2 = rm.coordinates("q1 q2")
+        m, L = rm.constants("m L", positive=True)
+        R0 = rm.Frame("R0")
+        R1 = R0.rotated("R1", about=R0.k, angle=q1)
+        R2 = R0.rotated("R2", about=R0.k, angle=q2)
+        A = R0.origin.moved("A", L * R1.i)
+        b1 = rm.Body(name1, frame=R1, mass=m, centre=R0.origin.moved("G1", L / 2 * R1.i))
+        b2 = rm.Body(name2, frame=R2, mass=m, centre=A.moved("G2", L / 2 * R2.i))
+        s = rm.System(galilean=R0)
+        s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        s.connect(b1, b2, rm.joints.Pivot(at=A, axis=R0.k))
+        return s.equations_of_motion().mass_matrix
+
+    assert sp.simplify(mass_matrix("bar", "bar") - mass_matrix("bar1", "bar2")) == sp.zeros(2, 2)
