@@ -38,6 +38,12 @@ class Action:
 
     Subclasses implement :meth:`contributions`, the list of ``(solid, torsor)`` pairs the
     action exerts, and may implement :meth:`potential_energy` (ch. 11.3.3).
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> isinstance(gravity(Frame("R0").k), Action)
+    True
     """
 
     __slots__ = ()

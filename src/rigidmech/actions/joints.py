@@ -61,7 +61,14 @@ class Joint:
 
     A joint knows its local basis (u, v, w), its point of reduction, which of the six
     components (X, Y, Z along u, v, w for the resultant; L, M, N for the moment) are unknown
-    for a perfect connection, and how to check that two frames realise it.
+    for a perfect connection, and how to check that a relative motion is one it allows.
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> j = Pivot(at=Frame("R0").origin, axis=Frame("R0").k)
+    >>> isinstance(j, Joint), [str(e) for e in j.basis]
+    (True, ['i_R0', 'j_R0', 'k_R0'])
     """
 
     __slots__ = ("_at", "_axis", "_basis")

@@ -263,6 +263,17 @@ class Simulation:
     result : rigidmech.ode.OdeResult
     elapsed : float
         Wall time of the integration, seconds.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> x, v, k = sp.symbols("x x_dot k")
+    >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+    ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]),
+    ...     energy=(v**2 + k * x**2) / 2)
+    >>> sim = eqs.simulate(t=(0, 3), q0=[1.0], rtol=1e-10, atol=1e-12, k=4.0)
+    >>> bool(abs(sim.q[0, -1] - np.cos(6.0)) < 1e-8), sim.energy_drift() < 1e-9
+    (True, True)
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed")

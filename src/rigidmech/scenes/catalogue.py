@@ -26,7 +26,14 @@ __all__ = ["Scene", "Parameter", "Built", "get", "catalogue", "names"]
 
 
 class Parameter(NamedTuple):
-    """A constant of a scene: its symbol name, default value and meaning."""
+    """A constant of a scene: its symbol name, default value and meaning.
+
+    Examples
+    --------
+    >>> from rigidmech import scenes
+    >>> scenes.get("simple-pendulum").parameters[0].name
+    'm'
+    """
 
     name: str
     default: float
@@ -34,7 +41,15 @@ class Parameter(NamedTuple):
 
 
 class Built(NamedTuple):
-    """What a scene's builder returns: the system and its bodies (in connection order)."""
+    """What a scene's builder returns: the system and its bodies (in connection order).
+
+    Examples
+    --------
+    >>> from rigidmech import scenes
+    >>> built = scenes.get("double-pendulum").build()
+    >>> [b.name for b in built.bodies]
+    ['bar1', 'bar2']
+    """
 
     system: System
     bodies: tuple

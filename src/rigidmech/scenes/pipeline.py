@@ -66,6 +66,13 @@ class RunReport:
     """The outcome of :func:`run`: what was integrated, how long each stage took, and the
     result.
 
+    Examples
+    --------
+    >>> from rigidmech import scenes
+    >>> report = scenes.run("simple-pendulum", t_end=1.0)
+    >>> report.energy_drift < 1e-8
+    True
+
     Attributes
     ----------
     scene : Scene
@@ -288,6 +295,16 @@ def plot_simulation(sim: Simulation, path, *, title=None):
 
     Uses :class:`matplotlib.figure.Figure` directly (Agg canvas, no pyplot state): works
     headless and leaves the user's matplotlib backend alone.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from rigidmech import scenes
+    >>> report = scenes.run("spring-mass", t_end=1.0)
+    >>> path = os.path.join(tempfile.mkdtemp(), "spring.png")
+    >>> fig = plot_simulation(report.simulation, path)
+    >>> os.path.getsize(path) > 1000
+    True
     """
     from matplotlib.figure import Figure
 
