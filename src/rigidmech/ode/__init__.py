@@ -53,4 +53,4 @@ def __getattr__(name):
 from . import adaptive, extrapolation, radau, runge_kutta  # noqa: E402, F401, I001
 # --- part B (multistep, geometric) adds its import line here ----------------------------------
 from . import geometric, multistep, problems  # noqa: E402, F401, I001
-from . import rkn  # noqa: E402, F401, I001
+from . import adams, rkn  # noqa: E402, F401, I001

@@ -1,0 +1,534 @@
+r"""Adaptive Adams method: variable order and step, on Newton's backward differences (26.3).
+
+The book builds the multistep methods (26.3.2) on Newton's backward-difference interpolation
+polynomial of :math:`f` through equally spaced points; :mod:`~rigidmech.ode.multistep` uses them
+with a fixed step and order. This module makes them a general-purpose integrator,
+``method="adams"``, in the manner of Shampine and Gordon's code DE/STEP (*Computer Solution of
+Ordinary Differential Equations*, 1975) but with the step changed by *re-interpolation*
+instead of variable-coefficient formulas:
+
+* **Step.** A predictor-corrector pair in PECE mode (predict, evaluate, correct, evaluate),
+  two evaluations of :math:`f` per step. With the backward differences
+  :math:`\nabla^j f_n` (:math:`j = 0, \dots, k`) the predictor is Adams-Bashforth of order
+  :math:`k`,
+
+  .. math:: p = y_n + h\sum_{j=0}^{k-1}\gamma_j\nabla^j f_n ,
+
+  and the corrector adds the next term with the predicted :math:`f(t_{n+1}, p)`:
+  :math:`y_{n+1} = p + h\gamma_k\,\nabla^k f^{p}_{n+1}` (Adams-Moulton of order :math:`k+1`,
+  local extrapolation). The local error of order :math:`k` is estimated by
+  :math:`h(\gamma_{k-1}-\gamma_k)\|\nabla^k f^p_{n+1}\|` and must stay below 1 in the
+  weighted RMS norm of :mod:`~rigidmech.ode.adaptive` (weights ``atol + rtol |y_n|``).
+* **Order** :math:`k = 1, \dots, 12`, chosen from the estimates the differences give at orders
+  :math:`k-2, k-1, k, k+1` (the rules of DE/STEP): the integration starts at order 1 and, in its
+  first phase, raises the order and doubles the step at every step.
+* **Step size.** Kept constant as long as possible, which keeps the formulas' coefficients
+  constant (the book's equal spacing): doubled when the estimate is 2^(k+1) times below the
+  tolerance, reduced by a factor 0.5-0.9 when the estimate exceeds half of it, halved on a
+  rejected step. A change of step *re-samples* Newton's interpolation polynomial of :math:`f`
+  at the new spacing (:func:`resample_matrix`), an :math:`O(k^2)` operation made only then.
+* **Dense output** is the integral of the same interpolation polynomial over the step, adjusted
+  by a linear term so that it passes exactly through both ends of the step.
+
+Why not only Runge-Kutta: on smooth problems an Adams code of high order needs far fewer
+evaluations of :math:`f` than a Runge-Kutta pair at tight tolerances (two per step instead of
+twelve for DOP853); that is how LSODA, whose non-stiff half is such a code, beats DOP853 on the
+damped forced oscillator (``benchmarks/work_precision.py``). For one small trajectory the step is
+an unrolled plain-float function generated once per order and size (as in
+:mod:`~rigidmech.ode._floatpath`), so that the per-step cost in Python stays a few
+microseconds; batches and larger systems use numpy arrays with the same algorithm.
+
+Batches: with ``y0`` of shape ``(n, batch)`` every trajectory advances with the same step and
+order, chosen from the largest error estimates over the batch.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from rigidmech._core.errors import ArgumentError
+
+from . import _registry
+from ._driver import Recorder
+from ._floatpath import FLOAT_PATH_MAX_N
+from .multistep import adams_gamma
+
+__all__ = ["adams", "resample_matrix", "MAX_ORDER"]
+
+#: Highest order of the Adams formulas used (as in DE/STEP: beyond it the stability region of
+#: the PECE pair becomes too small to gain anything).
+MAX_ORDER = 12
+
+#: Up to this order a doubled step re-samples the interpolation polynomial; above it, the step
+#: is doubled only once 2k steps at constant spacing give every other value exactly.
+RESAMPLE_DOUBLING_MAX_ORDER = 4
+
+#: gamma_j of Adams-Bashforth and |gamma*_j| of Adams-Moulton, j = 0 .. MAX_ORDER + 1
+_G = [float(adams_gamma(j)) for j in range(MAX_ORDER + 2)]
+_GS = [abs(float(adams_gamma(j, implicit=True))) for j in range(MAX_ORDER + 2)]
+
+
+def _backward_difference_matrix(m):
+    """``Delta`` with ``Delta @ [v_0, v_1, ..., v_m] = [nabla^0 v_0, ..., nabla^m v_0]``."""
+    D = np.zeros((m + 1, m + 1))
+    for j in range(m + 1):
+        for i in range(j + 1):
+            D[j, i] = (-1) ** i * math.comb(j, i)
+    return D
+
+
+_DELTA = [_backward_difference_matrix(m) for m in range(MAX_ORDER + 2)]
+_DELTA_INV = [np.linalg.inv(m) for m in _DELTA]
+
+
+def _values(D):
+    """Values ``f_n, f_{n-1}, ...`` from the backward differences (rows of `D`)."""
+    return _DELTA_INV[len(D) - 1] @ D
+
+
+def resample_matrix(m: int, ratio: float) -> np.ndarray:
+    r"""Map the backward differences at spacing :math:`h` to those at spacing ``ratio * h``.
+
+    The differences :math:`\nabla^j f_n` (:math:`j = 0, \dots, m`) define Newton's backward
+    interpolation polynomial (book, 26.3.2)
+
+    .. math:: P(t_n + s h) = \sum_{j=0}^{m}\binom{s + j - 1}{j}\nabla^j f_n ;
+
+    sampled at :math:`t_n - i\,r h` (:math:`i = 0, \dots, m`) it gives new values whose backward
+    differences are the new :math:`\nabla^j f_n`. The map is linear; this is its matrix.
+
+    Parameters
+    ----------
+    m : int
+        Highest difference, ``0 <= m <= MAX_ORDER + 1``.
+    ratio : float
+        New step over old step, ``> 0``.
+
+    Returns
+    -------
+    ndarray, shape (m + 1, m + 1)
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> f = lambda t: 1.0 + 2.0 * t + 3.0 * t**2          # degree 2: resampling is exact
+    >>> def diffs(h):
+    ...     v = np.array([f(-i * h) for i in range(3)])
+    ...     return np.array([v[0], v[0] - v[1], v[0] - 2 * v[1] + v[2]])
+    >>> bool(np.allclose(resample_matrix(2, 0.5) @ diffs(0.2), diffs(0.1)))
+    True
+    """
+    s = -ratio * np.arange(m + 1, dtype=float)
+    B = np.ones((m + 1, m + 1))
+    for j in range(1, m + 1):  # binom(s + j - 1, j) = binom(s + j - 2, j - 1) (s + j - 1) / j
+        B[:, j] = B[:, j - 1] * (s + (j - 1)) / j
+    return _DELTA[m] @ B
+
+
+def _dense_table():
+    """``C[j]``: power coefficients in x (x**1 .. x**(j+1)) of ``c_j(x - 1) - c_j(-1)``.
+
+    ``c_j(theta) = int_0^theta binom(s + j - 1, j) ds``, so that over the step ending at
+    ``t_{n+1}``, ``y(t_{n+1} + theta h) = y_{n+1} + h sum_j c_j(theta) nabla^j f_{n+1}``
+    (``theta`` in [-1, 0], ``x = theta + 1``).
+    """
+    table = []
+    for j in range(MAX_ORDER + 2):
+        p = [Fraction(1)]  # binom(s + j - 1, j) as a polynomial in s, ascending
+        for i in range(j):
+            q = [Fraction(0)] * (len(p) + 1)
+            for d, a in enumerate(p):
+                q[d] += a * i
+                q[d + 1] += a
+            p = q
+        p = [a / math.factorial(j) for a in p]
+        c = [Fraction(0)] + [a / (d + 1) for d, a in enumerate(p)]  # integral from 0
+        # substitute theta = x - 1: sum_d c_d (x - 1)^d
+        out = [Fraction(0)] * len(c)
+        for d, a in enumerate(c):
+            for e in range(d + 1):
+                out[e] += a * math.comb(d, e) * (-1) ** (d - e)
+        table.append(np.array([float(a) for a in out[1:]]))  # drop the constant term
+    return table
+
+
+_DENSE = _dense_table()
+
+
+# --- the step ------------------------------------------------------------------------------
+#
+# One attempted step of order k from (t, y) with the differences D_0 .. D_{k+1} at spacing h:
+#   q_j = D_j + q_{j+1} (q_{k-1} = D_{k-1})       predicted differences at t + h
+#   p = y + h sum_{j<k} gamma_j D_j                 Adams-Bashforth predictor
+#   e = f(t + h, p) - q_0                           nabla^k f^p_{n+1}
+#   err = |h| (gamma_{k-1} - gamma_k) ||e||, erk = |h| |gamma*_k| ||e||,
+#   erkm1 = |h| |gamma*_{k-1}| ||q_{k-1} + e||, erkm2 = |h| |gamma*_{k-2}| ||q_{k-2} + e||
+# and, if err <= 1:
+#   y_new = p + h gamma_k e;  e2 = f(t + h, y_new) - q_0
+#   D'_j = q_j + e2 (j < k), D'_k = e2, D'_{k+1} = e2 - D_k,
+#   erkp1 = |h| |gamma*_{k+1}| ||D'_{k+1}||
+# The attempt never modifies its inputs: a rejected step leaves the differences as they were.
+
+
+def _float_kernel_source(k, n):
+    """Source of the unrolled plain-float step of order `k` for `n` equations."""
+    r = range(n)
+    rn = 1.0 / math.sqrt(n)
+    L = [f"def adams_step_{k}_{n}(fun, t, h, ah, y, D, rtol, atols):"]
+    L.append(f"    {', '.join(f'y{i}' for i in r)}, = y")
+    L.append(f"    {', '.join(f'D{j}_{i}' for j in range(k + 2) for i in r)}, = D")
+    L.append(f"    {', '.join(f'at{i}' for i in r)}, = atols")
+    for i in r:  # predicted differences (q_{k-1} is D_{k-1})
+        L.append(f"    q{k - 1}_{i} = D{k - 1}_{i}")
+        for j in range(k - 2, -1, -1):
+            L.append(f"    q{j}_{i} = D{j}_{i} + q{j + 1}_{i}")
+        terms = " + ".join(f"{_G[j]!r}*D{j}_{i}" for j in range(k))
+        L.append(f"    p{i} = y{i} + h*({terms})")
+    ps = ", ".join(f"p{i}" for i in r)
+    L.append(f"    {', '.join(f'f{i}' for i in r)}, = _tolist(fun(t, _arr([{ps}])))")
+    for i in r:
+        L.append(f"    e{i} = f{i} - q0_{i}")
+        L.append(f"    w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
+        L.append(f"    a{i} = e{i}*w{i}")
+    L.append("    sk = ah*_sqrt(" + " + ".join(f"a{i}*a{i}" for i in r) + ")")
+    L.append(f"    err = {(_G[k - 1] - _G[k]) * rn!r}*sk")
+    L.append(f"    erk = {_GS[k] * rn!r}*sk")
+    for m, name in ((1, "erkm1"), (2, "erkm2")):
+        if k > m:
+            for i in r:
+                L.append(f"    a{i} = (q{k - m}_{i} + e{i})*w{i}")
+            s = " + ".join(f"a{i}*a{i}" for i in r)
+            L.append(f"    {name} = {_GS[k - m] * rn!r}*ah*_sqrt({s})")
+        else:
+            L.append(f"    {name} = 0.0")
+    L.append("    if not err <= 1.0:")
+    L.append("        return None, None, err, erk, erkm1, erkm2, 0.0")
+    L.append(f"    hg = h*{_G[k]!r}")
+    yn = ", ".join(f"p{i} + hg*e{i}" for i in r)
+    L.append(f"    yn = [{yn}]")
+    L.append(f"    {', '.join(f'c{i}' for i in r)}, = _tolist(fun(t, _arr(yn)))")
+    for i in r:
+        L.append(f"    c{i} -= q0_{i}")
+        L.append(f"    x{i} = c{i} - D{k}_{i}")
+    for i in r:
+        L.append(f"    a{i} = x{i}*w{i}")
+    s = " + ".join(f"a{i}*a{i}" for i in r)
+    L.append(f"    erkp1 = {_GS[k + 1] * rn!r}*ah*_sqrt({s})")
+    new = [f"q{j}_{i} + c{i}" for j in range(k) for i in r]
+    new += [f"c{i}" for i in r] + [f"x{i}" for i in r]
+    L.append(f"    return yn, [{', '.join(new)}], err, erk, erkm1, erkm2, erkp1")
+    return "\n".join(L)
+
+
+_FLOAT_KERNELS = {}
+
+
+def _float_kernel(k, n):
+    """The plain-float step of order `k` for `n` equations (generated once, then cached)."""
+    key = (k, n)
+    if key not in _FLOAT_KERNELS:
+        ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, "_sqrt": math.sqrt}
+        src = _float_kernel_source(k, n)
+        code = compile(src, f"<rigidmech.ode adams order {k}, {n} equations>", "exec")
+        exec(code, ns)  # noqa: S102
+        _FLOAT_KERNELS[key] = ns[f"adams_step_{k}_{n}"]
+    return _FLOAT_KERNELS[key]
+
+
+def _array_step(k, call, norm, t, h, ah, y, D, rtol, atol):
+    """The same step on arrays (batches, larger systems): `D` of shape (k + 2, N)."""
+    q = np.cumsum(D[k - 1::-1], axis=0)[::-1]  # q_j = sum_{m=j}^{k-1} D_m, j = 0..k-1
+    p = y + h * (np.asarray(_G[:k]) @ D[:k])
+    e = call(t, p) - q[0]
+    w = 1.0 / (atol + rtol * np.abs(y))
+    sk = ah * norm(e * w)
+    err = (_G[k - 1] - _G[k]) * sk
+    erk = _GS[k] * sk
+    erkm1 = _GS[k - 1] * ah * norm((q[k - 1] + e) * w) if k >= 2 else 0.0
+    erkm2 = _GS[k - 2] * ah * norm((q[k - 2] + e) * w) if k >= 3 else 0.0
+    if not err <= 1.0:
+        return None, None, err, erk, erkm1, erkm2, 0.0
+    y_new = p + (h * _G[k]) * e
+    c = call(t, y_new) - q[0]
+    Dn = np.empty_like(D)
+    Dn[:k] = q + c
+    Dn[k] = c
+    Dn[k + 1] = c - D[k]
+    erkp1 = _GS[k + 1] * ah * norm(Dn[k + 1] * w)
+    return y_new, Dn, err, erk, erkm1, erkm2, erkp1
+
+
+# --- the driver ----------------------------------------------------------------------------
+
+
+def _check_max_order(max_order):
+    if isinstance(max_order, bool) or not isinstance(max_order, int | np.integer) or not (
+        1 <= max_order <= MAX_ORDER
+    ):
+        raise ArgumentError(
+            f"`max_order` must be an int in 1..{MAX_ORDER}; got {max_order!r}."
+        )
+    return int(max_order)
+
+
+def _dense_coefficients(y_old, y_new, D, k, h):
+    """Power-form coefficients ``Q`` (``y(x) = y_old + sum_m Q[m] x**(m+1)``) of one step."""
+    Q = np.zeros((MAX_ORDER + 1, y_old.size))  # one shape for every step, whatever k
+    for j in range(k + 1):
+        Q[: j + 1] += np.multiply.outer(_DENSE[j], h * D[j])
+    # the integrated polynomial anchored at y_new, moved to pass through y_old at x = 0:
+    # y(x) = y_old + x (y_new - y_old - sum(Q)) + sum_m Q[m] x^(m+1)
+    Q[0] += (y_new - y_old) - Q.sum(axis=0)
+    return Q
+
+
+def _lazy_dense(y_old, y_new, D, k, h):
+    """A zero-argument callable computing :func:`_dense_coefficients` when needed."""
+    return lambda: _dense_coefficients(y_old, y_new, D, k, h)
+
+
+def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
+          max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
+          max_order=MAX_ORDER):
+    """Adaptive Adams-Bashforth-Moulton (PECE), variable order 1-12 and step, dense output.
+
+    Called through :func:`rigidmech.ode.solve` (``method="adams"``), which validates the
+    arguments; see its parameters. `max_order` (int, 1..12, default 12) caps the order.
+
+    Returns
+    -------
+    OdeResult
+        ``stats`` holds ``"order_changes"``, ``"step_changes"`` (re-interpolations) and
+        ``"max_order_used"``.
+
+    Notes
+    -----
+    See the module docstring for the algorithm. The first step is Shampine and Gordon's
+    ``0.25 / sqrt(||f(t0, y0)||)`` (weighted norm), bounded by the interval, `max_step` and
+    `first_step`; the first phase then doubles it at every step while raising the order.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rigidmech import ode
+    >>> osc = lambda t, y: np.array([y[1], -y[0]])
+    >>> r = ode.solve(osc, (0.0, 20.0), [1.0, 0.0], method="adams", rtol=1e-12, atol=1e-14)
+    >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-10), r.status
+    (True, 0)
+    """
+    max_order = _check_max_order(max_order)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        return _integrate(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                          max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                          events=events, max_order=max_order)
+
+
+#: cache of re-sampling matrices for the usual ratios (doubling, halving, 0.6 ... 0.9)
+_RESAMPLE = {}
+
+
+def _resample_cached(k, ratio):
+    key = (k, ratio)
+    T = _RESAMPLE.get(key)
+    if T is None:
+        T = resample_matrix(k, ratio)
+        if len(_RESAMPLE) < 512:
+            _RESAMPLE[key] = T
+    return T
+
+
+def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
+               dense_output, events, max_order):
+    t0, t_end = (float(v) for v in t_span)
+    direction = 1.0 if t_end > t0 else -1.0
+    shape = y0.shape
+    batch = len(shape) == 2
+    N = y0.size
+    y = y0.reshape(-1).astype(float)
+    f_raw = fun(t0, y.reshape(shape).copy())
+    floats = (not batch and N <= FLOAT_PATH_MAX_N and type(f_raw) is np.ndarray
+              and f_raw.shape == shape and f_raw.dtype == np.float64)
+    f0 = np.array(f_raw, dtype=float).reshape(-1)
+    nfev = 1
+    rec = Recorder(t0, y, shape, dense_output, events, "power")
+    if not np.isfinite(f0).all():
+        rec.fail("The right-hand side is not finite", t0, y)
+        return rec.result("adams", nfev, 0)
+    atol_arr = np.broadcast_to(np.asarray(atol, dtype=float), shape).reshape(-1).copy()
+    if batch:
+        def norm(v):
+            v = v.reshape(shape)
+            return float(np.sqrt(np.max(np.mean(v * v, axis=0))))
+
+        def call(t, v):
+            return np.array(fun(t, v.reshape(shape)), dtype=float).reshape(-1)
+    else:
+        def norm(v):
+            return math.sqrt(float(np.dot(v, v)) / N)
+
+        def call(t, v):
+            return np.array(fun(t, v), dtype=float)
+
+    # Shampine and Gordon's first step: 0.25 / sqrt(||f0||) when the interval is longer
+    s0 = norm(f0 / (atol_arr + rtol * np.abs(y)))
+    h_abs = abs(t_end - t0) if first_step is None else float(first_step)
+    if first_step is None and 16.0 * s0 * h_abs * h_abs > 1.0:
+        h_abs = 0.25 / math.sqrt(s0)
+    h = direction * min(h_abs, max_step, abs(t_end - t0))
+
+    # state: order k and the differences D_0 .. D_{k+1} at spacing h (D_{k+1}: 0 if unknown),
+    # a flat list of floats (plain-float path) or a (k + 2, N) array
+    k = 1
+    D = np.zeros((3, N))
+    D[0] = f0
+    if floats:
+        D = D.reshape(-1).tolist()
+        y = y.tolist()
+        atols = atol_arr.tolist()
+    # values of f at the current spacing since the last change, oldest first: doubling the
+    # step takes every other one (re-sampling would extrapolate the polynomial backwards over
+    # twice its span, which amplifies its error about 2**k times)
+    history = [f0.tolist() if floats else f0]
+    t = t0
+    ns = 0  # steps since the last change of step size
+    phase1 = True
+    naccpt = nrej = n_order = n_resample = 0
+    kmax_used = 1
+    want_dense = rec.cs is not None or events is not None
+    ts_append, ys_append = rec.ts.append, rec.ys.append
+    tiny = 4.0 * np.finfo(float).eps
+
+    def resample(D, k, ratio):
+        """The differences at the new spacing (k + 2 rows; D_{k+1} unknown: 0); the history of
+        ``f`` restarts with the re-sampled values."""
+        rows = np.asarray(D, dtype=float).reshape(-1, N)
+        out = np.zeros((k + 2, N))
+        out[: k + 1] = _resample_cached(k, ratio) @ rows[: k + 1]
+        history[:] = list(_values(out[: k + 1]))[::-1]  # oldest first
+        return out.reshape(-1).tolist() if floats else out
+
+    def double(k):
+        """The differences at twice the spacing, from every other value of the history."""
+        vals = np.array(history[-1: -2 * k - 2: -2], dtype=float)  # f_n, f_{n-2}, ...
+        out = np.zeros((k + 2, N))
+        out[: k + 1] = _DELTA[k] @ vals
+        history[:] = list(vals[::-1])
+        return out.reshape(-1).tolist() if floats else out
+
+    while direction * (t - t_end) < 0:
+        if naccpt >= max_steps:
+            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
+                     t, np.array(y))
+            break
+        if direction * (t + h - t_end) > 0:  # last step: end exactly at t_end
+            D = resample(D, k, (t_end - t) / h)
+            n_resample += 1
+            h = t_end - t
+            ns = 0
+        ifail = 0
+        while True:
+            ah = abs(h)
+            if ah <= tiny * abs(t) or ah == 0.0 or ah != ah:  # step size underflow (or nan)
+                y_new = None
+                break
+            t_new = t + h
+            if floats:
+                out = _float_kernel(k, N)(fun, t_new, h, ah, y, D, rtol, atols)
+            else:
+                out = _array_step(k, call, norm, t_new, h, ah, y, D, rtol, atol_arr)
+            y_new, D_new, err, erk, erkm1, erkm2, erkp1 = out
+            knew = k  # lower the order? (DE/STEP, block 2)
+            if k > 2:
+                if max(erkm1, erkm2) <= erk:
+                    knew = k - 1
+            elif k == 2 and erkm1 <= 0.5 * erk:
+                knew = 1
+            if y_new is not None:
+                nfev += 2
+                break
+            # rejected: halve the step (from the third failure on, at order 1)
+            nfev += 1
+            nrej += 1
+            phase1 = False
+            ifail += 1
+            ratio = 0.5
+            if ifail > 3 and 0.5 < 0.25 * erk:
+                ratio = math.sqrt(0.5 / erk)
+            if ifail >= 3:
+                knew = 1
+            if not math.isfinite(err):
+                ratio, knew = 0.25, 1
+            k = knew
+            D = resample(D, k, ratio)
+            n_resample += 1
+            h = h * ratio
+            ns = 0
+        if y_new is None:
+            rec.fail("The step size fell below the resolution of t (step size underflow)",
+                     t, np.array(y))
+            break
+        if not (math.isfinite(sum(y_new)) if floats else np.isfinite(y_new).all()):
+            rec.fail("The state became non-finite", t_new, np.array(y_new))
+            break
+        naccpt += 1
+        ns += 1
+        # the order of the next step (DE/STEP, block 4)
+        k_old = k
+        if knew == k - 1 or k == max_order:
+            phase1 = False
+        if phase1:
+            k, erk = k + 1, erkp1
+        elif knew == k - 1:
+            k, erk = k - 1, erkm1
+        elif k + 1 <= ns:
+            if k == 1:
+                if erkp1 < 0.5 * erk and max_order > 1:
+                    k, erk = 2, erkp1
+            elif erkm1 <= min(erk, erkp1):
+                k, erk = k - 1, erkm1
+            elif erkp1 < erk and k < max_order:
+                k, erk = k + 1, erkp1
+        if want_dense:
+            y_rec = np.array(y_new) if floats else y_new
+            coeffs = _lazy_dense(np.array(y), y_rec, np.array(D_new).reshape(-1, N), k_old, h)
+            if rec.accept(t_new, y_rec, coeffs):
+                break
+        else:  # the lists of the plain-float path are fresh and never modified
+            ts_append(t_new)
+            ys_append(y_new)
+        t = t_new
+        y = y_new
+        history.append(D_new[:N] if floats else D_new[0])  # f_{n+1} = nabla^0 f_{n+1}
+        if len(history) > 4 * MAX_ORDER:
+            del history[: -2 * MAX_ORDER - 2]
+        if k == k_old:
+            D = D_new
+        elif k > k_old:  # one more difference, unknown
+            n_order += 1
+            kmax_used = max(kmax_used, k)
+            D = D_new + [0.0] * N if floats else np.vstack([D_new, np.zeros((1, N))])
+        else:
+            n_order += 1
+            D = D_new[: (k + 2) * N] if floats else D_new[: k + 2]
+        # the step size of the next step (DE/STEP, block 4), at most max_step; the ratios of
+        # a reduction are rounded down to tenths so that their matrices are cached
+        if (phase1 or 0.5 >= erk * 2.0 ** (k + 1)) and 2.0 * abs(h) <= max_step and (
+                k <= RESAMPLE_DOUBLING_MAX_ORDER or ns >= 2 * k):
+            ratio = 2.0
+        elif 0.5 >= erk:
+            ratio = 1.0
+        else:
+            ratio = max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
+        if ratio != 1.0:
+            D = double(k) if ratio == 2.0 and ns >= 2 * k else resample(D, k, ratio)
+            n_resample += 1
+            h = h * ratio
+            ns = 0
+    stats = {"order_changes": n_order, "step_changes": n_resample, "max_order_used": kmax_used}
+    return rec.result("adams", nfev, nrej, stats)
+
+
+_registry.register("adams", adams, kind="adaptive")
