@@ -43,6 +43,7 @@ OURS_ADAPTIVE = {
     "dop853": ("dop853", {}),
     "dop853-pi": ("dop853", {"step_control": "pi"}),
     "gbs": ("gbs", {}),
+    "adams": ("adams", {}),
     "radau": ("radau", {}),
 }
 #: our Runge-Kutta-Nystrom pairs (separable problems only: q'' = a(t, q)), called directly

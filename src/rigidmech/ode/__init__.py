@@ -9,6 +9,8 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * adaptive, with dense output, events and stiffness detection: ``"dopri5"`` (alias
   ``"rk45"``) and ``"dop853"``;
 * extrapolation (Gragg-Bulirsch-Stoer, the book's Romberg idea, ch. 26.2.3): ``"gbs"``;
+* multistep, adaptive in order and step (Adams PECE on backward differences, ch. 26.3):
+  ``"adams"``;
 * stiff: ``"radau"`` (Radau IIA, order 5);
 * multistep (Adams) and geometric (symplectic, for ``q'' = a(t, q)``) methods of
   :mod:`rigidmech.ode.multistep` and :mod:`rigidmech.ode.geometric`.
