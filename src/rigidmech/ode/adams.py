@@ -24,9 +24,14 @@ instead of variable-coefficient formulas:
   first phase, raises the order and doubles the step at every step.
 * **Step size.** Kept constant as long as possible, which keeps the formulas' coefficients
   constant (the book's equal spacing): doubled when the estimate is 2^(k+1) times below the
-  tolerance, reduced by a factor 0.5-0.9 when the estimate exceeds half of it, halved on a
-  rejected step. A change of step *re-samples* Newton's interpolation polynomial of :math:`f`
-  at the new spacing (:func:`resample_matrix`), an :math:`O(k^2)` operation made only then.
+  tolerance, reduced by a factor 0.5-0.9 (rounded down to tenths) when the estimate exceeds
+  half of it, halved on a rejected step. A reduction *re-samples* Newton's interpolation
+  polynomial of :math:`f` at the new spacing (:func:`resample_matrix`), an :math:`O(k^2)`
+  operation made only then. Above order 4 a doubling waits until 2k steps at constant spacing
+  have given every other value of :math:`f` exactly, because re-sampling would extrapolate the
+  polynomial backwards over twice its span. (Measured against re-sampled doublings at every
+  order: those take fewer evaluations at a given ``rtol`` but reach larger errors, and miss
+  the tolerance on the large-amplitude pendulum and the Arenstorf orbit at rtol 1e-11.)
 * **Dense output** is the integral of the same interpolation polynomial over the step, adjusted
   by a linear term so that it passes exactly through both ends of the step.
 
@@ -35,8 +40,9 @@ evaluations of :math:`f` than a Runge-Kutta pair at tight tolerances (two per st
 twelve for DOP853); that is how LSODA, whose non-stiff half is such a code, beats DOP853 on the
 damped forced oscillator (``benchmarks/work_precision.py``). For one small trajectory the step is
 an unrolled plain-float function generated once per order and size (as in
-:mod:`~rigidmech.ode._floatpath`), so that the per-step cost in Python stays a few
-microseconds; batches and larger systems use numpy arrays with the same algorithm.
+:mod:`~rigidmech.ode._floatpath`); batches and larger systems use numpy arrays with the same
+algorithm. Measured on the damped oscillator: about half of LSODA's evaluations, but about
+4.5 us of Python per evaluation against 2 us for ``dop853`` (docs, performance page).
 
 Batches: with ``y0`` of shape ``(n, batch)`` every trajectory advances with the same step and
 order, chosen from the largest error estimates over the batch.
