@@ -332,17 +332,18 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
                           events=events, max_order=max_order)
 
 
-#: cache of re-sampling matrices for the usual ratios (doubling, halving, 0.6 ... 0.9)
+#: cache of re-sampling matrices for the usual ratios: 0.25, 0.5 ... 0.9, 2 (the ratios of a
+#: reduction are rounded down to tenths for that); other ratios (the last step) are not kept
 _RESAMPLE = {}
+_USUAL_RATIOS = frozenset([0.25, 0.5, 0.6, 0.7, 0.8, 0.9, 2.0])
 
 
 def _resample_cached(k, ratio):
-    key = (k, ratio)
-    T = _RESAMPLE.get(key)
+    if ratio not in _USUAL_RATIOS:
+        return resample_matrix(k, ratio)
+    T = _RESAMPLE.get((k, ratio))
     if T is None:
-        T = resample_matrix(k, ratio)
-        if len(_RESAMPLE) < 512:
-            _RESAMPLE[key] = T
+        T = _RESAMPLE[(k, ratio)] = resample_matrix(k, ratio)
     return T
 
 

@@ -123,6 +123,26 @@ def _use_float_path(shape, fun, t0, y0):
     return ok, f0
 
 
+def _next_step(err, h_abs, err_old, rejected, exponent, pi, pi_alpha, pi_beta):
+    """The step-size controller of both paths: ``(h_abs, err_old, accepted)`` after an attempt
+    with error norm `err` (accepted if ``err < 1``; nan or inf shrink as much as allowed)."""
+    if err < 1.0:
+        if err == 0.0:
+            factor = MAX_FACTOR
+        elif pi:
+            factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
+        else:
+            factor = min(MAX_FACTOR, SAFETY * err**exponent)
+        if rejected:
+            factor = min(1.0, factor)
+        if pi:
+            err_old = max(err, PI_ERR_FLOOR)
+        return h_abs * factor, err_old, True
+    if math.isfinite(err):
+        return h_abs * max(MIN_FACTOR, SAFETY * err**exponent), err_old, False
+    return h_abs * MIN_FACTOR, err_old, False
+
+
 def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
                dense_output, events, nstiff, f0=None, step_control="i"):
     t0, t_end = t_span
@@ -220,25 +240,10 @@ def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_s
                 e = dot(pair.E, K[: s + 1])
                 e /= scale
                 err = h_abs * prob.norm(e)
-            if err < 1.0:
-                if err == 0.0:
-                    factor = MAX_FACTOR
-                elif pi:
-                    factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
-                else:
-                    factor = min(MAX_FACTOR, SAFETY * err**exponent)
-                if rejected:
-                    factor = min(1.0, factor)
-                if pi:
-                    err_old = max(err, PI_ERR_FLOOR)
-                h_abs *= factor
-                accepted = True
+            h_abs, err_old, accepted = _next_step(err, h_abs, err_old, rejected, exponent, pi,
+                                                  pi_alpha, pi_beta)
+            if accepted:
                 break
-            # rejected (err >= 1, or nan/inf: shrink as much as allowed)
-            if err == err and err != math.inf:
-                h_abs *= max(MIN_FACTOR, SAFETY * err**exponent)
-            else:
-                h_abs *= MIN_FACTOR
             rejected = True
             nrej += 1
         if not accepted:
@@ -332,24 +337,10 @@ def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step,
                 err = h_abs * s5 / sqrt(den * N) if den > 0 else (0.0 if den == 0 else den)
             else:
                 err = h_abs * sqrt(out[3] / N)
-            if err < 1.0:
-                if err == 0.0:
-                    factor = MAX_FACTOR
-                elif pi:
-                    factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
-                else:
-                    factor = min(MAX_FACTOR, SAFETY * err**exponent)
-                if rejected:
-                    factor = min(1.0, factor)
-                if pi:
-                    err_old = max(err, PI_ERR_FLOOR)
-                h_abs *= factor
-                accepted = True
+            h_abs, err_old, accepted = _next_step(err, h_abs, err_old, rejected, exponent, pi,
+                                                  pi_alpha, pi_beta)
+            if accepted:
                 break
-            if isfinite(err):
-                h_abs *= max(MIN_FACTOR, SAFETY * err**exponent)
-            else:
-                h_abs *= MIN_FACTOR
             rejected = True
             nrej += 1
         if not accepted:
