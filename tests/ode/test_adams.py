@@ -153,6 +153,38 @@ def test_numpy_path_agrees_with_the_float_path(monkeypatch):
     assert_allclose(r_np.y[:, -1], kepler_exact(6.0, 0.6), atol=1e-7)
 
 
+@pytest.mark.parametrize(
+    "problem", [P.damped_oscillator(), P.kepler(0.6, orbits=2), P.arenstorf(orbits=1)],
+    ids=lambda p: p.name,
+)
+def test_runs_take_the_drivers_decisions(problem, monkeypatch):
+    # a plain-float run changes the order itself and leaves at the first change of spacing;
+    # forced to return after every step (``single``), the driver takes every decision with
+    # _lower_order / _next_order / _next_ratio instead: the integration must be the same,
+    # step for step, bit for bit
+    kw = dict(method="adams", rtol=1e-10, atol=1e-13)
+    run = A._float_run(len(problem.y0))
+    calls = {False: 0, True: 0}
+
+    def counted(force_single):
+        def call(*args):
+            args = list(args)
+            args[9] = args[9] or force_single  # single
+            calls[force_single] += 1
+            return run(*args)
+        return lambda n: call
+
+    monkeypatch.setattr(A, "_float_run", counted(False))
+    r = ode.solve(problem.fun, problem.t_span, problem.y0, **kw)
+    monkeypatch.setattr(A, "_float_run", counted(True))
+    s = ode.solve(problem.fun, problem.t_span, problem.y0, **kw)
+    assert calls[True] >= s.nsteps  # one call a step at least
+    assert calls[False] < 0.5 * r.nsteps  # free runs go on for several steps a call
+    assert (r.nfev, r.nsteps, r.nrejected, r.stats) == (s.nfev, s.nsteps, s.nrejected, s.stats)
+    assert_allclose(s.t, r.t, rtol=0, atol=0)
+    assert_allclose(s.y, r.y, rtol=0, atol=0)
+
+
 def test_results_are_fresh_arrays():
     r = ode.solve(oscillator_rhs, (0.0, 1.0), [1.0, 0.0], method="adams")
     y_end = r.y[:, -1].copy()

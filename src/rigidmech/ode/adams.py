@@ -38,11 +38,15 @@ instead of variable-coefficient formulas:
 Why not only Runge-Kutta: on smooth problems an Adams code of high order needs far fewer
 evaluations of :math:`f` than a Runge-Kutta pair at tight tolerances (two per step instead of
 twelve for DOP853); that is how LSODA, whose non-stiff half is such a code, beats DOP853 on the
-damped forced oscillator (``benchmarks/work_precision.py``). For one small trajectory the step is
-an unrolled plain-float function generated once per order and size (as in
-:mod:`~rigidmech.ode._floatpath`); batches and larger systems use numpy arrays with the same
-algorithm. Measured on the damped oscillator: about half of LSODA's evaluations, but about
-4.5 us of Python per evaluation against 2 us for ``dop853`` (docs, performance page).
+damped forced oscillator (``benchmarks/work_precision.py``). For one small trajectory the
+integration goes by *runs*: one generated plain-float function per system size, every order
+unrolled in it, which takes steps at constant spacing and changes the order itself, and
+returns to the driver only when the spacing must change (re-sampling, doubling), at a
+rejection or before the last step (as in :mod:`~rigidmech.ode._floatpath`); batches and larger
+systems use numpy arrays with the same algorithm, a step at a time. Measured on the damped
+oscillator: 55-65 % of LSODA's evaluations at equal error, about 3.3 us of Python per
+evaluation (LSODA 3.9 us, ``dop853`` 2 us), of which 1.4 us are the call of ``fun`` and its
+ndarray round trip (docs, performance page).
 
 Batches: with ``y0`` of shape ``(n, batch)`` every trajectory advances with the same step and
 order, chosen from the largest error estimates over the batch.
@@ -173,98 +177,224 @@ _DENSE = _dense_table()
 #   err = |h| (gamma_{k-1} - gamma_k) ||e||, erk = |h| |gamma*_k| ||e||,
 #   erkm1 = |h| |gamma*_{k-1}| ||q_{k-1} + e||, erkm2 = |h| |gamma*_{k-2}| ||q_{k-2} + e||
 # and, if err <= 1:
-#   y_new = p + h gamma_k e;  e2 = f(t + h, y_new) - q_0
-#   D'_j = q_j + e2 (j < k), D'_k = e2, D'_{k+1} = e2 - D_k,
+#   y_new = p + h gamma_k e;  c = f(t + h, y_new) - q_0
+#   D'_j = q_j + c (j < k), D'_k = c, D'_{k+1} = c - D_k,
 #   erkp1 = |h| |gamma*_{k+1}| ||D'_{k+1}||
-# The attempt never modifies its inputs: a rejected step leaves the differences as they were.
+# A rejected attempt leaves the differences as they were.
+#
+# A *run* repeats such steps at constant spacing, changing the order by the driver's rules
+# (`_lower_order`, `_next_order`) as it goes, for as long as `_next_ratio` keeps the spacing.
+# It returns at the first step after which the spacing would change (before changing the
+# order: the driver takes that decision whole), at a rejection, before a step reaching
+# `t_stop`, after `limit` steps, or after one step if `single`. It returns
+#   (code, t, y, D, k, ns, nacc, n_order, k_max, err, erk, erkm1, erkm2, erkp1)
+# with code RUN_STOPPED (no decision needed), RUN_REJECTED (the state is the last accepted
+# one), RUN_DECIDE (the last accepted step needs the driver's decisions) or RUN_NONFINITE
+# (t and y are the failed step's); nacc counts the steps the run accepted, n_order its
+# changes of order, k_max the highest order it reached, ns the steps since the last change of
+# spacing. Every accepted step is passed to ``ts_append``, ``ys_append`` (t and a fresh y) and
+# ``hist_append`` (f at the new point).
+
+RUN_STOPPED, RUN_REJECTED, RUN_DECIDE, RUN_NONFINITE = 0, 1, 2, 3
 
 
-def _float_kernel_source(k, n):
-    """Source of the unrolled plain-float step of order `k` for `n` equations."""
+def _float_run_source(n):
+    """Source of the plain-float run for `n` equations: every order unrolled, one function.
+
+    Why generated code: for a few equations the cost of an Adams step is Python's, not the
+    arithmetic's. With every difference a local variable, unrolled for each order, and the
+    order changed inside the run, a step costs about as much as the two calls of ``fun``
+    (damped oscillator, docs' performance page); loops over lists of differences, or a return
+    to the driver at every change of order, cost several times more. The error estimates are
+    kept squared inside the run (no square roots; the comparisons are the same).
+    """
     r = range(n)
-    rn = 1.0 / math.sqrt(n)
-    L = [f"def adams_step_{k}_{n}(fun, t, h, ah, y, D, rtol, atols):"]
-    L.append(f"    {', '.join(f'y{i}' for i in r)}, = y")
-    L.append(f"    {', '.join(f'D{j}_{i}' for j in range(k + 2) for i in r)}, = D")
-    L.append(f"    {', '.join(f'at{i}' for i in r)}, = atols")
-    for i in r:  # predicted differences (q_{k-1} is D_{k-1})
-        L.append(f"    q{k - 1}_{i} = D{k - 1}_{i}")
-        for j in range(k - 2, -1, -1):
-            L.append(f"    q{j}_{i} = D{j}_{i} + q{j + 1}_{i}")
-        terms = " + ".join(f"{_G[j]!r}*D{j}_{i}" for j in range(k))
-        L.append(f"    p{i} = y{i} + h*({terms})")
-    ps = ", ".join(f"p{i}" for i in r)
-    L.append(f"    {', '.join(f'f{i}' for i in r)}, = _tolist(fun(t, _arr([{ps}])))")
-    for i in r:
-        L.append(f"    e{i} = f{i} - q0_{i}")
-        L.append(f"    w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
-        L.append(f"    a{i} = e{i}*w{i}")
-    L.append("    sk = ah*_sqrt(" + " + ".join(f"a{i}*a{i}" for i in r) + ")")
-    L.append(f"    err = {(_G[k - 1] - _G[k]) * rn!r}*sk")
-    L.append(f"    erk = {_GS[k] * rn!r}*sk")
-    for m, name in ((1, "erkm1"), (2, "erkm2")):
-        if k > m:
-            for i in r:
-                L.append(f"    a{i} = (q{k - m}_{i} + e{i})*w{i}")
-            s = " + ".join(f"a{i}*a{i}" for i in r)
-            L.append(f"    {name} = {_GS[k - m] * rn!r}*ah*_sqrt({s})")
+    B = "        "
+    rows = ", ".join(f"D{j}_{i}" for j in range(MAX_ORDER + 2) for i in r)
+    ys = ", ".join(f"y{i}" for i in r)
+    est = "_sqrt(err), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"
+    state = "y, [" + rows + f"][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu"
+    L = [
+        f"def adams_run_{n}(fun, t, h, y, D, k, ns, limit, t_stop, single, kmax, rtol, atols,"
+        " max_step, ts_append, ys_append, hist_append):",
+        f"    {ys}, = y",
+        f"    {rows}, = D + _ZEROS[len(D):]",
+        f"    {', '.join(f'at{i}' for i in r)}, = atols",
+        "    h2 = h*h",
+        "    double_ok = 4.0*h2 <= max_step*max_step",
+        "    nacc = nord = kmaxu = 0",
+        "    erkm1 = erkm2 = erkp1 = 0.0",
+        "    while True:",
+        "        t_new = t + h",
+        "        if (t_new - t_stop)*h >= 0.0 or nacc >= limit:",
+        f"            return 0, t, {state}, 0.0, 0.0, 0.0, 0.0, 0.0",
+    ]
+
+    def body(k, ind):
+        def q(j, i):  # predicted difference q_j (q_{k-1} is D_{k-1} itself)
+            return f"D{k - 1}_{i}" if j == k - 1 else f"q{j}_{i}"
+
+        def sq(expr, c):  # c h^2 sum (v_i w_i)^2 = (|h| sqrt(c n) ||v||)^2, RMS norm
+            terms = " + ".join(f"(a{i} := ({expr(i)})*w{i})*a{i}" for i in r)
+            return f"{c / n!r}*h2*({terms})"
+
+        out = []
+
+        def put(line):
+            out.append(ind + line)
+
+        for i in r:
+            for j in range(k - 2, -1, -1):
+                put(f"q{j}_{i} = D{j}_{i} + {q(j + 1, i)}")
+            terms = " + ".join(("" if j == 0 else f"{_G[j]!r}*") + f"D{j}_{i}" for j in range(k))
+            put(f"p{i} = y{i} + h*({terms})")
+        put(f"{', '.join(f'f{i}' for i in r)}, = "
+            f"_tolist(fun(t_new, _arr([{', '.join(f'p{i}' for i in r)}])))")
+        for i in r:
+            put(f"e{i} = f{i} - {q(0, i)}")
+            put(f"w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
+        put(f"sk = {sq(lambda i: f'e{i}', 1.0)}")
+        put(f"err = {(_G[k - 1] - _G[k]) ** 2!r}*sk")
+        put(f"erk = {_GS[k] ** 2!r}*sk")
+        if k >= 2:
+            put(f"erkm1 = {sq(lambda i: f'{q(k - 1, i)} + e{i}', _GS[k - 1] ** 2)}")
+        if k >= 3:
+            put(f"erkm2 = {sq(lambda i: f'{q(k - 2, i)} + e{i}', _GS[k - 2] ** 2)}")
+        put("if not err <= 1.0:")
+        put(f"    return 1, t, {state}, {est}, 0.0")
+        for i in r:
+            put(f"yn{i} = p{i} + {_G[k]!r}*h*e{i}")
+        yn = ", ".join(f"yn{i}" for i in r)
+        put(f"yn = [{yn}]")
+        put(f"{', '.join(f'c{i}' for i in r)}, = _tolist(fun(t_new, _arr(yn)))")
+        put(f"if {' + '.join(f'0.0*yn{i}' for i in r)} != 0.0:  # inf or nan")
+        put(f"    return 3, t_new, yn, [{rows}][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu, "
+            f"{est}, 0.0")
+        for i in r:
+            put(f"c{i} = c{i} - {q(0, i)}")
+            put(f"D{k + 1}_{i} = c{i} - D{k}_{i}")
+            put(f"D{k}_{i} = c{i}")
+            for j in range(k - 1, -1, -1):
+                put(f"D{j}_{i} = {q(j, i)} + c{i}")
+        put("t = t_new")
+        put("y = yn")
+        put(f"{ys}, = {yn},")
+        put("ns += 1")
+        put("nacc += 1")
+        put("ts_append(t)")
+        put("ys_append(yn)")
+        put(f"hist_append([{', '.join(f'D0_{i}' for i in r)}])")
+        erkp1 = sq(lambda i: f"D{k + 1}_{i}", _GS[k + 1] ** 2)
+        decide = f"return 2, t, {state}, {est}, _sqrt(erkp1)"
+        put("if single:")
+        put(f"    erkp1 = {erkp1}")
+        put(f"    {decide}")
+
+        def choose(kk, e):  # next order kk with estimate e; leave the run if h would change
+            dn = 2 * kk if kk > RESAMPLE_DOUBLING_MAX_ORDER else 0
+            return [f"k2, e2 = {kk}, {e}",
+                    f"if not 0.25 >= e2 or (double_ok and 0.25 >= {4.0 ** (kk + 1)!r}*e2"
+                    + (f" and ns >= {dn}" if dn else "") + "):",
+                    f"    {decide}"]
+
+        # _lower_order, then _next_order (out of the first phase, which is `single`)
+        if k >= 3:
+            put("if erkm1 <= erk and erkm2 <= erk:")
+        elif k == 2:
+            put("if erkm1 <= 0.25*erk:")
+        if k >= 2:
+            for line in choose(k - 1, "erkm1"):
+                put("    " + line)
+            put(f"elif ns > {k}:")
         else:
-            L.append(f"    {name} = 0.0")
-    L.append("    if not err <= 1.0:")
-    L.append("        return None, None, err, erk, erkm1, erkm2, 0.0")
-    L.append(f"    hg = h*{_G[k]!r}")
-    yn = ", ".join(f"p{i} + hg*e{i}" for i in r)
-    L.append(f"    yn = [{yn}]")
-    L.append(f"    {', '.join(f'c{i}' for i in r)}, = _tolist(fun(t, _arr(yn)))")
-    for i in r:
-        L.append(f"    c{i} -= q0_{i}")
-        L.append(f"    x{i} = c{i} - D{k}_{i}")
-    for i in r:
-        L.append(f"    a{i} = x{i}*w{i}")
-    s = " + ".join(f"a{i}*a{i}" for i in r)
-    L.append(f"    erkp1 = {_GS[k + 1] * rn!r}*ah*_sqrt({s})")
-    new = [f"q{j}_{i} + c{i}" for j in range(k) for i in r]
-    new += [f"c{i}" for i in r] + [f"x{i}" for i in r]
-    L.append(f"    return yn, [{', '.join(new)}], err, erk, erkm1, erkm2, erkp1")
+            put(f"if ns > {k}:")
+        put(f"    erkp1 = {erkp1}")
+        if k == 1:
+            put("    if kmax > 1 and erkp1 < 0.25*erk:")
+            for line in choose(2, "erkp1"):
+                put("        " + line)
+            put("    else:")
+        else:
+            put("    if erkm1 <= erk and erkm1 <= erkp1:")
+            for line in choose(k - 1, "erkm1"):
+                put("        " + line)
+            put(f"    elif erkp1 < erk and kmax > {k}:")
+            for line in choose(k + 1, "erkp1"):
+                put("        " + line)
+            put("    else:")
+        for line in choose(k, "erk"):
+            put("        " + line)
+        put("else:")
+        for line in choose(k, "erk"):
+            put("    " + line)
+        put(f"if k2 != {k}:")
+        put("    nord += 1")
+        put("    k = k2")
+        if k < MAX_ORDER:
+            put(f"    if k2 > {k}:  # one more difference, unknown")
+            put(f"        {', '.join(f'D{k + 2}_{i}' for i in r)} = {', '.join('0.0' for i in r)}")
+            put("        if k2 > kmaxu:")
+            put("            kmaxu = k2")
+        return out
+
+    def tree(lo, hi, ind):
+        if lo == hi:
+            return body(lo, ind)
+        mid = (lo + hi) // 2
+        return ([f"{ind}if k <= {mid}:"] + tree(lo, mid, ind + "    ")
+                + [f"{ind}else:"] + tree(mid + 1, hi, ind + "    "))
+
+    L += tree(1, MAX_ORDER, B)
     return "\n".join(L)
 
 
-_FLOAT_KERNELS = {}
+_FLOAT_RUNS = {}
 
 
-def _float_kernel(k, n):
-    """The plain-float step of order `k` for `n` equations (generated once, then cached)."""
-    key = (k, n)
-    if key not in _FLOAT_KERNELS:
-        ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, "_sqrt": math.sqrt}
-        src = _float_kernel_source(k, n)
-        code = compile(src, f"<rigidmech.ode adams order {k}, {n} equations>", "exec")
+def _float_run(n):
+    """The plain-float run for `n` equations (generated once, then cached)."""
+    if n not in _FLOAT_RUNS:
+        ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, "_sqrt": math.sqrt,
+              "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}
+        src = _float_run_source(n)
+        code = compile(src, f"<rigidmech.ode adams, {n} equations>", "exec")
         exec(code, ns)  # noqa: S102
-        _FLOAT_KERNELS[key] = ns[f"adams_step_{k}_{n}"]
-    return _FLOAT_KERNELS[key]
+        _FLOAT_RUNS[n] = ns[f"adams_run_{n}"]
+    return _FLOAT_RUNS[n]
 
 
-def _array_step(k, call, norm, t, h, ah, y, D, rtol, atol):
-    """The same step on arrays (batches, larger systems): `D` of shape (k + 2, N)."""
+def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, hist_append):
+    """One step on arrays (batches, larger systems): `D` of shape (k + 2, N).
+
+    Returns after one attempt (as a ``single`` run), with the codes of the plain-float run.
+    """
+    ah = abs(h)
+    t_new = t + h
     q = np.cumsum(D[k - 1::-1], axis=0)[::-1]  # q_j = sum_{m=j}^{k-1} D_m, j = 0..k-1
     p = y + h * (np.asarray(_G[:k]) @ D[:k])
-    e = call(t, p) - q[0]
+    e = call(t_new, p) - q[0]
     w = 1.0 / (atol + rtol * np.abs(y))
     sk = ah * norm(e * w)
     err = (_G[k - 1] - _G[k]) * sk
     erk = _GS[k] * sk
     erkm1 = _GS[k - 1] * ah * norm((q[k - 1] + e) * w) if k >= 2 else 0.0
     erkm2 = _GS[k - 2] * ah * norm((q[k - 2] + e) * w) if k >= 3 else 0.0
+    est = (err, erk, erkm1, erkm2)
     if not err <= 1.0:
-        return None, None, err, erk, erkm1, erkm2, 0.0
+        return (RUN_REJECTED, t, y, D, k, ns, 0, 0, 0) + est + (0.0,)
     y_new = p + (h * _G[k]) * e
-    c = call(t, y_new) - q[0]
+    c = call(t_new, y_new) - q[0]
+    if not np.isfinite(y_new).all():
+        return (RUN_NONFINITE, t_new, y_new, D, k, ns, 0, 0, 0) + est + (0.0,)
     Dn = np.empty_like(D)
     Dn[:k] = q + c
     Dn[k] = c
     Dn[k + 1] = c - D[k]
     erkp1 = _GS[k + 1] * ah * norm(Dn[k + 1] * w)
-    return y_new, Dn, err, erk, erkm1, erkm2, erkp1
+    ts_append(t_new)
+    ys_append(y_new)
+    hist_append(Dn[0])
+    return (RUN_DECIDE, t_new, y_new, Dn, k, ns + 1, 1, 0, 0) + est + (erkp1,)
 
 
 # --- the driver ----------------------------------------------------------------------------
@@ -347,6 +477,55 @@ def _resample_cached(k, ratio):
     return T
 
 
+def _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order):
+    """Order of the next step after an accepted one, DE/STEP's block 4.
+
+    Returns ``(k_next, erk_next, phase1)``: the order, the error estimate at that order, and
+    whether the first phase (raising the order and doubling the step at every step) goes on.
+    `knew` is ``k - 1`` when the attempt's estimates asked for a lower order.
+    """
+    if knew == k - 1 or k == max_order:
+        phase1 = False
+    if phase1:
+        return k + 1, erkp1, True
+    if knew == k - 1:
+        return k - 1, erkm1, False
+    if k + 1 <= ns:
+        if k == 1:
+            if erkp1 < 0.5 * erk and max_order > 1:
+                return 2, erkp1, False
+        elif erkm1 <= min(erk, erkp1):
+            return k - 1, erkm1, False
+        elif erkp1 < erk and k < max_order:
+            return k + 1, erkp1, False
+    return k, erk, False
+
+
+def _lower_order(k, erk, erkm1, erkm2):
+    """The order the attempt's estimates ask for: ``k`` or ``k - 1`` (DE/STEP, block 2)."""
+    if k > 2:
+        return k - 1 if max(erkm1, erkm2) <= erk else k
+    if k == 2 and erkm1 <= 0.5 * erk:
+        return 1
+    return k
+
+
+def _next_ratio(k, erk, phase1, ns, h_abs, max_step):
+    """New spacing over old after an accepted step of order `k` (DE/STEP, block 4).
+
+    Doubled when the estimate is 2**(k+1) below half the tolerance (above order
+    RESAMPLE_DOUBLING_MAX_ORDER only once 2k steps at this spacing are known), kept while it
+    is below half, else reduced by 0.5..0.9 rounded down to tenths (their re-sampling matrices
+    are cached).
+    """
+    if ((phase1 or 0.5 >= erk * 2.0 ** (k + 1)) and 2.0 * h_abs <= max_step
+            and (k <= RESAMPLE_DOUBLING_MAX_ORDER or ns >= 2 * k)):
+        return 2.0
+    if 0.5 >= erk:
+        return 1.0
+    return max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
+
+
 def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
                dense_output, events, max_order):
     t0, t_end = (float(v) for v in t_span)
@@ -395,26 +574,33 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
         D = D.reshape(-1).tolist()
         y = y.tolist()
         atols = atol_arr.tolist()
-    # values of f at the current spacing since the last change, oldest first: doubling the
-    # step takes every other one (re-sampling would extrapolate the polynomial backwards over
-    # twice its span, which amplifies its error about 2**k times)
-    history = [f0.tolist() if floats else f0]
+    # values of f at the current spacing since its last change: doubling the step above order
+    # RESAMPLE_DOUBLING_MAX_ORDER takes every other one (re-sampling would extrapolate the
+    # polynomial backwards over twice its span, which amplifies its error about 2**k times)
+    history = [D[:N] if floats else f0]
     t = t0
     ns = 0  # steps since the last change of step size
     phase1 = True
     naccpt = nrej = n_order = n_resample = 0
     kmax_used = 1
     want_dense = rec.cs is not None or events is not None
-    ts_append, ys_append = rec.ts.append, rec.ys.append
+    if want_dense:  # the driver records every step itself, through rec.accept
+        def ts_append(v):
+            pass
+        ys_append = ts_append
+    else:  # the runs record their steps (the plain-float path's lists are fresh, never modified)
+        ts_append, ys_append = rec.ts.append, rec.ys.append
+    hist_append = history.append
     tiny = 4.0 * np.finfo(float).eps
+    far = direction * math.inf
+    run = _float_run(N) if floats else None
 
     def resample(D, k, ratio):
-        """The differences at the new spacing (k + 2 rows; D_{k+1} unknown: 0); the history of
-        ``f`` restarts with the re-sampled values."""
+        """The differences at the new spacing (k + 2 rows; D_{k+1} unknown: 0)."""
         rows = np.asarray(D, dtype=float).reshape(-1, N)
         out = np.zeros((k + 2, N))
         out[: k + 1] = _resample_cached(k, ratio) @ rows[: k + 1]
-        history[:] = list(_values(out[: k + 1]))[::-1]  # oldest first
+        history[:] = [history[-1]]  # f_n is unchanged; older values are at the old spacing
         return out.reshape(-1).tolist() if floats else out
 
     def double(k):
@@ -422,7 +608,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
         vals = np.array(history[-1: -2 * k - 2: -2], dtype=float)  # f_n, f_{n-2}, ...
         out = np.zeros((k + 2, N))
         out[: k + 1] = _DELTA[k] @ vals
-        history[:] = list(vals[::-1])
+        history[:] = [history[-1]]
         return out.reshape(-1).tolist() if floats else out
 
     while direction * (t - t_end) < 0:
@@ -430,31 +616,39 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
             rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
                      t, np.array(y))
             break
-        if direction * (t + h - t_end) > 0:  # last step: end exactly at t_end
-            D = resample(D, k, (t_end - t) / h)
-            n_resample += 1
-            h = t_end - t
-            ns = 0
+        single = phase1 or want_dense
+        if direction * (t + h - t_end) >= 0:  # last step: end exactly at t_end
+            if direction * (t + h - t_end) > 0:
+                D = resample(D, k, (t_end - t) / h)
+                n_resample += 1
+                h = t_end - t
+                ns = 0
+            single = True
+        y_old = y
         ifail = 0
         while True:
             ah = abs(h)
             if ah <= tiny * abs(t) or ah == 0.0 or ah != ah:  # step size underflow (or nan)
-                y_new = None
+                code = None
                 break
-            t_new = t + h
             if floats:
-                out = _float_kernel(k, N)(fun, t_new, h, ah, y, D, rtol, atols)
+                out = run(fun, t, h, y, D, k, ns, 1 if single else max_steps - naccpt,
+                          far if single else t_end, single, max_order, rtol, atols, max_step,
+                          ts_append, ys_append, hist_append)
             else:
-                out = _array_step(k, call, norm, t_new, h, ah, y, D, rtol, atol_arr)
-            y_new, D_new, err, erk, erkm1, erkm2, erkp1 = out
-            knew = k  # lower the order? (DE/STEP, block 2)
-            if k > 2:
-                if max(erkm1, erkm2) <= erk:
-                    knew = k - 1
-            elif k == 2 and erkm1 <= 0.5 * erk:
-                knew = 1
-            if y_new is not None:
-                nfev += 2
+                out = _array_run(k, call, norm, t, h, y, D, ns, rtol, atol_arr, ts_append,
+                                 ys_append, hist_append)
+            code, t, y, D, k, ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2, erkp1 = out
+            n_order += nord
+            kmax_used = max(kmax_used, kmaxu)
+            naccpt += nacc
+            nfev += 2 * nacc
+            if nacc:
+                ifail = 0
+                if len(history) > 4 * MAX_ORDER:
+                    del history[: -2 * MAX_ORDER - 1]
+            knew = _lower_order(k, erk, erkm1, erkm2)
+            if code != RUN_REJECTED:
                 break
             # rejected: halve the step (from the third failure on, at order 1)
             nfev += 1
@@ -473,62 +667,33 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
             n_resample += 1
             h = h * ratio
             ns = 0
-        if y_new is None:
+            y_old = y
+        if code is None:
             rec.fail("The step size fell below the resolution of t (step size underflow)",
                      t, np.array(y))
             break
-        if not (math.isfinite(sum(y_new)) if floats else np.isfinite(y_new).all()):
-            rec.fail("The state became non-finite", t_new, np.array(y_new))
+        if code == RUN_NONFINITE:
+            nfev += 2
+            rec.fail("The state became non-finite", t, np.array(y))
             break
-        naccpt += 1
-        ns += 1
-        # the order of the next step (DE/STEP, block 4)
-        k_old = k
-        if knew == k - 1 or k == max_order:
-            phase1 = False
-        if phase1:
-            k, erk = k + 1, erkp1
-        elif knew == k - 1:
-            k, erk = k - 1, erkm1
-        elif k + 1 <= ns:
-            if k == 1:
-                if erkp1 < 0.5 * erk and max_order > 1:
-                    k, erk = 2, erkp1
-            elif erkm1 <= min(erk, erkp1):
-                k, erk = k - 1, erkm1
-            elif erkp1 < erk and k < max_order:
-                k, erk = k + 1, erkp1
-        if want_dense:
-            y_rec = np.array(y_new) if floats else y_new
-            coeffs = _lazy_dense(np.array(y), y_rec, np.array(D_new).reshape(-1, N), k_old, h)
-            if rec.accept(t_new, y_rec, coeffs):
+        if code == RUN_STOPPED:  # before the last step, or at max_steps: see the loop's top
+            continue
+        # RUN_DECIDE: the last accepted step asks for the order and spacing of the next
+        if want_dense:  # a single step from (t - h, y_old)
+            y_rec = np.array(y) if floats else y
+            coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)
+            if rec.accept(t, y_rec, coeffs):
                 break
-        else:  # the lists of the plain-float path are fresh and never modified
-            ts_append(t_new)
-            ys_append(y_new)
-        t = t_new
-        y = y_new
-        history.append(D_new[:N] if floats else D_new[0])  # f_{n+1} = nabla^0 f_{n+1}
-        if len(history) > 4 * MAX_ORDER:
-            del history[: -2 * MAX_ORDER - 2]
-        if k == k_old:
-            D = D_new
-        elif k > k_old:  # one more difference, unknown
+        k_old = k
+        k, erk, phase1 = _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order)
+        if k > k_old:  # one more difference, unknown
             n_order += 1
             kmax_used = max(kmax_used, k)
-            D = D_new + [0.0] * N if floats else np.vstack([D_new, np.zeros((1, N))])
-        else:
+            D = D + [0.0] * N if floats else np.vstack([D, np.zeros((1, N))])
+        elif k < k_old:
             n_order += 1
-            D = D_new[: (k + 2) * N] if floats else D_new[: k + 2]
-        # the step size of the next step (DE/STEP, block 4), at most max_step; the ratios of
-        # a reduction are rounded down to tenths so that their matrices are cached
-        if (phase1 or 0.5 >= erk * 2.0 ** (k + 1)) and 2.0 * abs(h) <= max_step and (
-                k <= RESAMPLE_DOUBLING_MAX_ORDER or ns >= 2 * k):
-            ratio = 2.0
-        elif 0.5 >= erk:
-            ratio = 1.0
-        else:
-            ratio = max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
+            D = D[: (k + 2) * N] if floats else D[: k + 2]
+        ratio = _next_ratio(k, erk, phase1, ns, abs(h), max_step)
         if ratio != 1.0:
             D = double(k) if ratio == 2.0 and ns >= 2 * k else resample(D, k, ratio)
             n_resample += 1
