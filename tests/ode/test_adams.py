@@ -246,3 +246,66 @@ def test_max_order_caps_the_order(max_order):
                   max_order=max_order)
     assert r.success and r.stats["max_order_used"] <= max_order
     assert_allclose(r.y[:, -1], oscillator_exact(5.0), atol=1e-5)
+
+
+def _pece_step_matrix(k, z):
+    """Step of the order-k PECE pair on y' = lambda y (z = h lambda), state (y_n, hf_n ..)."""
+    Dk = A._DELTA[k - 1]  # nabla^j F_n = sum_i Dk[j, i] F_{n-i}
+    beta = np.asarray(A._G[:k]) @ Dk  # predictor: p = y + beta . F
+    alpha = np.ones(k) @ Dk  # predicted F_{n+1}: q_0 = alpha . F
+    p_row = np.concatenate([[1.0], beta])
+    y_row = (1.0 + A._G[k] * z) * p_row - A._G[k] * np.concatenate([[0.0], alpha])
+    M = np.zeros((k + 1, k + 1))
+    M[0], M[1] = y_row, z * y_row
+    M[np.arange(2, k + 1), np.arange(1, k)] = 1.0
+    return M
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4])
+def test_stiffness_borders_are_the_pece_stability_intervals(k):
+    def stable(x):
+        return max(abs(np.linalg.eigvals(_pece_step_matrix(k, -x)))) <= 1.0 + 1e-12
+
+    # stable on a fine grid up to the tabulated interval, unstable just beyond it
+    assert all(stable(x) for x in np.linspace(1e-3, A._PECE_REAL_INTERVAL[k] - 1e-3, 400))
+    assert not stable(A._PECE_REAL_INTERVAL[k] + 2e-3)
+    assert A._STIFF_BORDER[k] == pytest.approx(0.8 * A._PECE_REAL_INTERVAL[k])
+
+
+def _van_der_pol(t, y, mu=1000.0):
+    return np.array([y[1], mu * (1 - y[0] ** 2) * y[1] - y[0]])
+
+
+@pytest.mark.parametrize("numpy_path", [False, True])
+@pytest.mark.parametrize("rtol", [1e-3, 1e-6, 1e-9])
+def test_stiffness_warning_on_van_der_pol(rtol, numpy_path, monkeypatch):
+    if numpy_path:
+        monkeypatch.setattr(A, "FLOAT_PATH_MAX_N", 0)
+    with pytest.warns(ode.StiffnessWarning, match=r"stiff at t = .*'adams'.*radau") as w:
+        r = ode.solve(_van_der_pol, (0.0, 3.0), [2.0, 0.0], method="adams", rtol=rtol,
+                      atol=1e-3 * rtol)
+    assert r.status == 0  # a warning: the integration goes on
+    assert w[0].filename == __file__  # points at the user's call of solve
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ode.solve(_van_der_pol, (0.0, 3.0), [2.0, 0.0], method="adams", rtol=rtol, nstiff=0)
+
+
+def test_stiffness_warning_of_dop853_points_at_the_call():
+    with pytest.warns(ode.StiffnessWarning, match="'dop853'") as w:
+        ode.solve(_van_der_pol, (0.0, 3.0), [2.0, 0.0], method="dop853", rtol=1e-6)
+    assert w[0].filename == __file__
+
+
+@pytest.mark.parametrize(
+    "problem",
+    [P.damped_oscillator(), P.kepler(0.6, orbits=3), P.kepler(0.9, orbits=3),
+     P.pendulum(170.0, periods=3), P.arenstorf(orbits=1), P.free_rigid_body()],
+    ids=lambda p: p.name,
+)
+def test_no_stiffness_warning_on_non_stiff_problems(problem):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for rtol in (1e-3, 1e-6, 1e-9, 1e-12):
+            ode.solve(problem.fun, problem.t_span, problem.y0, method="adams", rtol=rtol,
+                      atol=1e-3 * rtol)

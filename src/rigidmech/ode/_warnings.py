@@ -1,6 +1,8 @@
 """Warnings of :mod:`rigidmech.ode`."""
 
-__all__ = ["StiffnessWarning"]
+import warnings
+
+__all__ = ["StiffnessWarning", "stiffness_count"]
 
 
 class StiffnessWarning(RuntimeWarning):
@@ -8,11 +10,36 @@ class StiffnessWarning(RuntimeWarning):
 
     Raised (as a warning) by ``"dopri5"``, ``"dop853"`` after Hairer's test (the estimate
     ``h |lambda|`` of the step times the dominant eigenvalue stays at the border of the
-    stability domain for 15 checks); the integration goes on, but ``method="radau"`` would need
-    far fewer steps.
+    stability domain for 15 checks) and by ``"adams"`` after the same count at orders 1-4;
+    the integration goes on, but ``method="radau"`` would need far fewer steps.
 
     Examples
     --------
     >>> issubclass(StiffnessWarning, RuntimeWarning)
     True
     """
+
+
+def stiffness_count(method, border, hlamb, t_new, iasti, nonsti, warned, stacklevel):
+    """One check of Hairer's stiffness detection (codes DOPRI5/DOP853): 15 checks with
+    ``h |lambda|`` beyond `border` (6 checks below in a row reset the count) warn once.
+
+    Returns the updated ``(iasti, nonsti, warned)``. `stacklevel` points the warning at the
+    user's call of :func:`rigidmech.ode.solve`.
+    """
+    if hlamb > border:
+        iasti, nonsti = iasti + 1, 0
+        if iasti == 15 and not warned:
+            warned = True
+            warnings.warn(
+                f"The problem seems to have become stiff at t = {t_new:.6g} "
+                f"(method {method!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
+                "use method='radau'.",
+                StiffnessWarning,
+                stacklevel=stacklevel,
+            )
+    else:
+        nonsti += 1
+        if nonsti == 6:
+            iasti = 0
+    return iasti, nonsti, warned

@@ -28,7 +28,6 @@ chosen from the largest error norm over the batch.
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 
@@ -37,7 +36,7 @@ from rigidmech._core.errors import ArgumentError
 from . import _registry, tableaux
 from ._driver import Problem, Recorder, initial_step
 from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
-from ._warnings import StiffnessWarning
+from ._warnings import stiffness_count
 
 __all__ = ["dopri5", "dop853"]
 
@@ -54,25 +53,10 @@ STEP_CONTROLS = ("i", "pi")
 
 
 def _stiffness_test(pair, hlamb, t_new, iasti, nonsti, warned):
-    """One step of Hairer's stiffness detection (DOPRI5/DOP853): 15 checks in a row with
-    h |lambda| beyond the stability border warn once; 6 checks below reset the count.
-    Returns the updated (iasti, nonsti, warned). Shared by the numpy and the float paths."""
-    if hlamb > pair.stiff_border:
-        iasti, nonsti = iasti + 1, 0
-        if iasti == 15 and not warned:
-            warned = True
-            warnings.warn(
-                f"The problem seems to have become stiff at t = {t_new:.6g} "
-                f"(method {pair.name!r}, h*|lambda| ~ {hlamb:.3g} for 15 checks): "
-                "use method='radau'.",
-                StiffnessWarning,
-                stacklevel=5,
-            )
-    else:
-        nonsti += 1
-        if nonsti == 6:
-            iasti = 0
-    return iasti, nonsti, warned
+    """One step of Hairer's stiffness detection for `pair` (shared by the numpy and the float
+    paths); see :func:`~rigidmech.ode._warnings.stiffness_count`."""
+    return stiffness_count(pair.name, pair.stiff_border, hlamb, t_new, iasti, nonsti, warned,
+                           stacklevel=6)
 
 
 class _Pair:
