@@ -94,6 +94,60 @@ def test_resample_matrix_is_exact_on_polynomials_of_degree_m(m, ratio):
                     rtol=1e-9, atol=1e-12)
 
 
+def _two_spacings(h_old, n_old, h, n):
+    """Past times, oldest first: n_old steps of h_old, then n steps of h, ending at t = 1."""
+    T = [1.0]
+    for _ in range(n):
+        T.insert(0, T[0] - h)
+    for _ in range(n_old):
+        T.insert(0, T[0] - h_old)
+    return T
+
+
+@pytest.mark.parametrize(
+    ("k", "T", "h_new"),
+    [
+        pytest.param(6, _two_spacings(0.1, 20, 0.05, 3), 0.1, id="doubling-after-halving"),
+        pytest.param(10, _two_spacings(0.05, 10, 0.1, 12), 0.2, id="doubling-uniform"),
+        pytest.param(8, _two_spacings(0.1, 12, 0.07, 4), 0.14, id="doubling-mixed"),
+        pytest.param(12, _two_spacings(0.1, 5, 0.1, 20), 0.07, id="reduction"),
+        pytest.param(9, _two_spacings(0.2, 10, 0.1, 3), 0.063, id="last-step"),
+        pytest.param(5, _two_spacings(0.05, 20, 0.1, 2), -0.1, id="backwards-grid"),
+    ],
+)
+def test_reinterpolation_is_exact_on_polynomials_of_degree_k(k, T, h_new):
+    if h_new < 0:  # an integration backwards in time: times decrease
+        T = [2.0 - x for x in T]
+    M, idx = A._reinterpolation_matrix(T, k, h_new)
+    assert len(set(idx)) == k + 1 and all(-len(T) <= i <= -1 for i in idx)
+    rng = np.random.default_rng(k)
+    c = rng.normal(size=k + 1)
+    f = np.polynomial.Polynomial(c)
+    grid = T[-1] - h_new * np.arange(k + 1)
+    expected = A._DELTA[k] @ f(grid)  # backward differences on the new grid
+    got = M @ f(np.array([T[i] for i in idx]))
+    assert_allclose(got, expected, rtol=0, atol=1e-9 * np.abs(f(grid)).max())
+    assert list(M[0]) == [1.0] + [0.0] * k  # the current value is kept exactly
+
+
+def test_reinterpolation_takes_every_other_value_of_a_uniform_past_when_doubling():
+    T = [0.1 * i for i in range(30)]
+    M, idx = A._reinterpolation_matrix(T, 7, 0.2)
+    assert idx == [-1, -3, -5, -7, -9, -11, -13, -15]
+    assert_allclose(M, A._DELTA[7], atol=1e-12)  # values already on the grid
+
+
+def test_reinterpolation_matrices_depend_on_the_pattern_alone():
+    T = _two_spacings(0.05, 10, 0.1, 12)
+    A._REINTERP.clear()
+    M1, idx1 = A._reinterpolation_matrix(T, 10, 0.2)
+    M2, idx2 = A._reinterpolation_matrix([x + 3.0 for x in T], 10, 0.2)  # shifted in time
+    assert M2 is M1 and idx2 == idx1  # one cached matrix for one pattern
+    A._REINTERP.clear()
+    M3, _ = A._reinterpolation_matrix([x + 3.0 for x in T], 10, 0.2)
+    assert_allclose(M3, M1, rtol=0, atol=0)  # computed from the key alone: bit for bit
+
+
 def test_values_invert_the_differences():
     v = np.arange(1.0, 6.0) ** 2
     assert_allclose(A._values(A._DELTA[4] @ v), v)
