@@ -363,3 +363,43 @@ def test_no_stiffness_warning_on_non_stiff_problems(problem):
         for rtol in (1e-3, 1e-6, 1e-9, 1e-12):
             ode.solve(problem.fun, problem.t_span, problem.y0, method="adams", rtol=rtol,
                       atol=1e-3 * rtol)
+
+
+def _n_link_pendulum(n):
+    """fun(t, y) of the planar n-link pendulum, derived and compiled by rigidmech (unit rods)."""
+    import sympy as sp
+
+    import rigidmech as rm
+
+    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
+    g = sp.Symbol("g", positive=True)
+    R0 = rm.Frame("R0")
+    frame, P, parent = R0, R0.origin, R0
+    system = rm.System(galilean=R0)
+    params = {"g": 9.81}
+    for i, q in enumerate(qs):
+        m, l = sp.symbols(f"m{i + 1} l{i + 1}", positive=True)
+        params |= {m.name: 1.0, l.name: 1.0}
+        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
+        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
+        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
+                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
+        system.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
+        P = P.moved(f"P{i + 1}", l * frame.i)
+        parent = body
+    system.act(rm.gravity(-g * R0.j))
+    return system.equations_of_motion().rhs(**params)
+
+
+def test_no_stiffness_warning_from_rounding_at_tight_tolerance():
+    # regression: at rtol 1e-13 the first steps of the 4-link pendulum have corrections e at
+    # the rounding level, and h rho = |df| / (gamma_k |e|) read as 2.8 (a false warning)
+    # until checks were limited to steps with an error estimate >= STIFF_MIN_ESTIMATE
+    fun = _n_link_pendulum(4)
+    y0 = np.concatenate([np.full(4, 0.6), np.zeros(4)])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = ode.solve(fun, (0.0, 4.0), y0, method="adams", rtol=1e-13, atol=1e-16)
+    d = ode.solve(fun, (0.0, 4.0), y0, method="dop853", rtol=1e-13, atol=1e-16)
+    assert_allclose(r.y[:, -1], d.y[:, -1], atol=1e-9)
+    assert r.nfev < 0.75 * d.nfev  # and the Adams code needs far fewer evaluations

@@ -92,6 +92,9 @@ HISTORY = 4 * MAX_ORDER + 1
 #: 0.8 times the real stability interval of the PECE pair of order k (k = 1 .. 4), the roots
 #: of its step on y' = lambda y (recomputed in the tests).
 STIFF_MAX_ORDER = 4
+#: ... and only steps whose error estimate is at least this fraction of the tolerance: below,
+#: the difference of the two evaluations is mostly rounding and h rho means nothing.
+STIFF_MIN_ESTIMATE = 1e-3
 _PECE_REAL_INTERVAL = {1: 2.0, 2: 2.4, 3: 1.935, 4: 1.411}
 _STIFF_BORDER = {k: 0.8 * v for k, v in _PECE_REAL_INTERVAL.items()}
 
@@ -544,8 +547,10 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     estimates the step times the local Lipschitz constant. A stiff problem holds the step at
     the border of stability and the order low: a check counts as stiff when the order is at
     most ``STIFF_MAX_ORDER`` (4) and :math:`h\rho` exceeds 0.8 times the real stability
-    interval of that order's PECE pair (2, 2.4, 1.94, 1.41 for orders 1-4); 15 such checks
-    (6 others in a row reset the count, as in Hairer's test) raise a
+    interval of that order's PECE pair (2, 2.4, 1.94, 1.41 for orders 1-4). Checks are made
+    where the step size may change, after the first phase, on steps whose error estimate is
+    at least ``STIFF_MIN_ESTIMATE`` (1e-3) of the tolerance (below, :math:`e` is mostly
+    rounding). 15 stiff checks (6 others in a row reset the count, as in Hairer's test) raise a
     :class:`~rigidmech.ode.StiffnessWarning`. Measured on Van der Pol (mu = 1000), Robertson's
     kinetics and a stiff linear equation: the warning comes after 20-160 checks at rtol 1e-3
     to 1e-12; never on the reference problems of :mod:`~rigidmech.ode.problems`.
@@ -799,7 +804,9 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
         if code == RUN_STOPPED:  # before the last step, or at max_steps: see the loop's top
             continue
         # RUN_DECIDE: the last accepted step asks for the order and spacing of the next
-        if nstiff:  # stiffness: h rho near the stability border at a low order
+        if nstiff and not phase1 and erk >= STIFF_MIN_ESTIMATE:
+            # stiffness: h rho near the stability border at a low order (not in the first
+            # phase, nor with an error estimate so small that e is mostly rounding)
             iasti, nonsti, warned = stiffness_count(
                 "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, hrho, t,
                 iasti, nonsti, warned, stacklevel=5)
