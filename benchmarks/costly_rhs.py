@@ -35,11 +35,12 @@ import warnings
 
 import numpy as np
 import scipy
-import sympy as sp
 from scipy.integrate import solve_ivp
 
-import rigidmech as rm
 from rigidmech import ode
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from derive import n_link_pendulum  # noqa: E402  (the sibling script's system)
 
 OURS = ("adams", "dop853", "dopri5")
 SCIPY = ("LSODA", "DOP853", "RK45")
@@ -47,30 +48,10 @@ LEVELS = (1e-6, 1e-8, 1e-10)
 
 
 def n_link_rhs(n):
-    """``fun(t, y)`` of the n-link pendulum, y = (q, u), derived and compiled by rigidmech.
-
-    As ``case_ours`` in ``derive.py``: uniform rods of masses m_i, lengths l_i on revolute
-    joints, relative angles q_i, gravity -g y; here m_i = l_i = 1, g = 9.81.
-    """
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
-    qs = qs if isinstance(qs, tuple) else (qs,)
-    g = sp.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    frame, P, parent = R0, R0.origin, R0
-    system = rm.System(galilean=R0)
-    params = {"g": 9.81}
-    for i, q in enumerate(qs):
-        m, l = sp.symbols(f"m{i + 1} l{i + 1}", positive=True)
-        params |= {m.name: 1.0, l.name: 1.0}
-        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
-        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
-        system.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
-        P = P.moved(f"P{i + 1}", l * frame.i)
-        parent = body
-    system.act(rm.gravity(-g * R0.j))
-    return system.equations_of_motion().rhs(**params)
+    """``fun(t, y)`` of the n-link pendulum of ``derive.py``, y = (q, u), derived and compiled
+    by rigidmech; m_i = l_i = 1, g = 9.81."""
+    params = {"g": 9.81} | {f"{s}{i}": 1.0 for i in range(1, n + 1) for s in "ml"}
+    return n_link_pendulum(n).equations_of_motion().rhs(**params)
 
 
 def main(argv=None):

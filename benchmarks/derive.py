@@ -157,14 +157,14 @@ def _best(func, budget=0.5, repeat=7):
     return min(timer.repeat(repeat=repeat, number=number)) / number
 
 
-def case_ours(n):
-    import numpy as np
+def n_link_pendulum(n):
+    """The planar n-link pendulum with rigidmech: uniform rods (masses m_i, lengths l_i) along
+    their frames' x axes, revolute joints, relative angles q_i, gravity -g y. Returns the
+    System (also used by ``costly_rhs.py``)."""
     import sympy as sp
 
     import rigidmech as rm
 
-    _preimport()
-    start = time.perf_counter()
     qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
     if not isinstance(qs, tuple):
         qs = (qs,)
@@ -182,7 +182,16 @@ def case_ours(n):
         P = P.moved(f"P{i + 1}", l * frame.i)
         parent = body
     system.act(rm.gravity(-g * R0.j))
-    eqs = system.equations_of_motion()
+    return system
+
+
+def case_ours(n):
+    import numpy as np
+    import sympy as sp
+
+    _preimport()
+    start = time.perf_counter()
+    eqs = n_link_pendulum(n).equations_of_motion()
     M, f = eqs.mass_matrix, eqs.forcing
     _emit(derive=time.perf_counter() - start)
 
