@@ -345,10 +345,20 @@ def test_stiffness_warning_on_van_der_pol(rtol, numpy_path, monkeypatch):
         ode.solve(_van_der_pol, (0.0, 3.0), [2.0, 0.0], method="adams", rtol=rtol, nstiff=0)
 
 
-def test_stiffness_warning_of_dop853_points_at_the_call():
-    with pytest.warns(ode.StiffnessWarning, match="'dop853'") as w:
-        ode.solve(_van_der_pol, (0.0, 3.0), [2.0, 0.0], method="dop853", rtol=1e-6)
-    assert w[0].filename == __file__
+def test_stiffness_warnings_point_at_the_users_call_direct_or_through_solve():
+    from rigidmech.ode.adams import adams
+    from rigidmech.ode.adaptive import dop853
+
+    y0 = np.array([2.0, 0.0])
+    calls = [
+        lambda: ode.solve(_van_der_pol, (0.0, 3.0), y0, method="dop853", rtol=1e-6),
+        lambda: dop853(_van_der_pol, (0.0, 3.0), y0, rtol=1e-6, atol=1e-9),
+        lambda: adams(_van_der_pol, (0.0, 3.0), y0, rtol=1e-6, atol=1e-9),
+    ]
+    for call in calls:
+        with pytest.warns(ode.StiffnessWarning) as w:
+            call()
+        assert w[0].filename == __file__
 
 
 @pytest.mark.parametrize(

@@ -813,7 +813,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
             # phase, nor with an error estimate so small that e is mostly rounding)
             iasti, nonsti, warned = stiffness_count(
                 "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, hrho, t,
-                iasti, nonsti, warned, stacklevel=5)
+                iasti, nonsti, warned)
         if want_dense:  # a single step from (t - h, y_old)
             y_rec = np.array(y) if floats else y
             coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)

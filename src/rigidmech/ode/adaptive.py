@@ -55,8 +55,7 @@ STEP_CONTROLS = ("i", "pi")
 def _stiffness_test(pair, hlamb, t_new, iasti, nonsti, warned):
     """One step of Hairer's stiffness detection for `pair` (shared by the numpy and the float
     paths); see :func:`~rigidmech.ode._warnings.stiffness_count`."""
-    return stiffness_count(pair.name, pair.stiff_border, hlamb, t_new, iasti, nonsti, warned,
-                           stacklevel=6)
+    return stiffness_count(pair.name, pair.stiff_border, hlamb, t_new, iasti, nonsti, warned)
 
 
 class _Pair:
