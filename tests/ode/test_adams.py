@@ -148,11 +148,6 @@ def test_reinterpolation_matrices_depend_on_the_pattern_alone():
     assert_allclose(M3, M1, rtol=0, atol=0)  # computed from the key alone: bit for bit
 
 
-def test_values_invert_the_differences():
-    v = np.arange(1.0, 6.0) ** 2
-    assert_allclose(A._values(A._DELTA[4] @ v), v)
-
-
 def test_dense_output_is_continuous_and_accurate():
     r = ode.solve(oscillator_rhs, (0.0, 10.0), [1.0, 0.0], method="adams", rtol=1e-10,
                   atol=1e-13, dense_output=True)

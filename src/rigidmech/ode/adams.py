@@ -117,12 +117,6 @@ def _backward_difference_matrix(m):
 
 
 _DELTA = [_backward_difference_matrix(m) for m in range(MAX_ORDER + 2)]
-_DELTA_INV = [np.linalg.inv(m) for m in _DELTA]
-
-
-def _values(D):
-    """Values ``f_n, f_{n-1}, ...`` from the backward differences (rows of `D`)."""
-    return _DELTA_INV[len(D) - 1] @ D
 
 
 def resample_matrix(m: int, ratio: float) -> np.ndarray:
@@ -257,7 +251,8 @@ _DENSE = _dense_table()
 #   q_j = D_j + q_{j+1} (q_{k-1} = D_{k-1})       predicted differences at t + h
 #   p = y + h sum_{j<k} gamma_j D_j                 Adams-Bashforth predictor
 #   e = f(t + h, p) - q_0                           nabla^k f^p_{n+1}
-#   err = |h| (gamma_{k-1} - gamma_k) ||e||, erk = |h| |gamma*_k| ||e||,
+#   err = |h| (gamma_{k-1} - gamma_k) ||e|| = erk = |h| |gamma*_k| ||e||  (gamma*_k =
+#   gamma_k - gamma_{k-1}: the error of order k is the estimate at order k, one number),
 #   erkm1 = |h| |gamma*_{k-1}| ||q_{k-1} + e||, erkm2 = |h| |gamma*_{k-2}| ||q_{k-2} + e||
 # and, if err <= 1:
 #   y_new = p + h gamma_k e;  c = f(t + h, y_new) - q_0
@@ -308,7 +303,7 @@ def _float_run_source(n):
     B = "        "
     rows = ", ".join(f"D{j}_{i}" for j in range(MAX_ORDER + 2) for i in r)
     ys = ", ".join(f"y{i}" for i in r)
-    est = "_sqrt(err), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"
+    est = "_sqrt(erk), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"  # err = erk
     state = "y, [" + rows + f"][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu"
     L = [
         f"def adams_run_{n}(fun, t, h, y, D, k, ns, limit, t_stop, single, kmax, rtol, atols,"
@@ -323,7 +318,7 @@ def _float_run_source(n):
         "    while True:",
         "        t_new = t + h",
         "        if (t_new - t_stop)*h >= 0.0 or nacc >= limit:",
-        f"            return 0, t, {state}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0",
+        f"            return {RUN_STOPPED}, t, {state}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0",
     ]
 
     def body(k, ind):
@@ -349,23 +344,21 @@ def _float_run_source(n):
         for i in r:
             put(f"e{i} = f{i} - {q(0, i)}")
             put(f"w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
-        put(f"sk = {sq(lambda i: f'e{i}', 1.0)}")
-        put(f"err = {(_G[k - 1] - _G[k]) ** 2!r}*sk")
-        put(f"erk = {_GS[k] ** 2!r}*sk")
+        put(f"erk = {sq(lambda i: f'e{i}', _GS[k] ** 2)}")  # also the step's error: err
         if k >= 2:
             put(f"erkm1 = {sq(lambda i: f'{q(k - 1, i)} + e{i}', _GS[k - 1] ** 2)}")
         if k >= 3:
             put(f"erkm2 = {sq(lambda i: f'{q(k - 2, i)} + e{i}', _GS[k - 2] ** 2)}")
-        put("if not err <= 1.0:")
-        put(f"    return 1, t, {state}, {est}, 0.0, 0.0")
+        put("if not erk <= 1.0:")
+        put(f"    return {RUN_REJECTED}, t, {state}, {est}, 0.0, 0.0")
         for i in r:
             put(f"yn{i} = p{i} + {_G[k]!r}*h*e{i}")
         yn = ", ".join(f"yn{i}" for i in r)
         put(f"yn = [{yn}]")
         put(f"{', '.join(f'c{i}' for i in r)}, = _tolist(fun(t_new, _arr(yn)))")
         put(f"if {' + '.join(f'0.0*yn{i}' for i in r)} != 0.0:  # inf or nan")
-        put(f"    return 3, t_new, yn, [{rows}][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu, "
-            f"{est}, 0.0, 0.0")
+        put(f"    return {RUN_NONFINITE}, t_new, yn, [{rows}][:(k + 2)*{n}], k, ns, nacc, "
+            f"nord, kmaxu, {est}, 0.0, 0.0")
         for i in r:
             put(f"c{i} = c{i} - {q(0, i)}")
             put(f"D{k + 1}_{i} = c{i} - D{k}_{i}")
@@ -381,9 +374,11 @@ def _float_run_source(n):
         put("ys_append(yn)")
         put(f"hist_append([{', '.join(f'D0_{i}' for i in r)}])")
         erkp1 = sq(lambda i: f"D{k + 1}_{i}", _GS[k + 1] ** 2)
-        hrho = (f"_hrho(({', '.join(f'c{i} - e{i}' for i in r)},), "
-                f"({', '.join(f'e{i}' for i in r)},), {_G[k]!r})")
-        decide = f"return 2, t, {state}, {est}, _sqrt(erkp1), {hrho}"
+        hrho = "0.0"  # the stiffness test looks at low orders only
+        if k <= STIFF_MAX_ORDER:
+            hrho = (f"_hrho(({', '.join(f'c{i} - e{i}' for i in r)},), "
+                    f"({', '.join(f'e{i}' for i in r)},), {_G[k]!r})")
+        decide = f"return {RUN_DECIDE}, t, {state}, {est}, _sqrt(erkp1), {hrho}"
         put("if single:")
         put(f"    erkp1 = {erkp1}")
         put(f"    {decide}")
@@ -472,9 +467,7 @@ def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, 
     p = y + h * (np.asarray(_G[:k]) @ D[:k])
     e = call(t_new, p) - q[0]
     w = 1.0 / (atol + rtol * np.abs(y))
-    sk = ah * norm(e * w)
-    err = (_G[k - 1] - _G[k]) * sk
-    erk = _GS[k] * sk
+    erk = err = _GS[k] * ah * norm(e * w)  # err = erk (see "the step" above)
     erkm1 = _GS[k - 1] * ah * norm((q[k - 1] + e) * w) if k >= 2 else 0.0
     erkm2 = _GS[k - 2] * ah * norm((q[k - 2] + e) * w) if k >= 3 else 0.0
     est = (err, erk, erkm1, erkm2)
@@ -492,7 +485,7 @@ def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, 
     ts_append(t_new)
     ys_append(y_new)
     hist_append(Dn[0])
-    hrho = _hrho(c - e, e, _G[k])
+    hrho = _hrho(c - e, e, _G[k]) if k <= STIFF_MAX_ORDER else 0.0
     return (RUN_DECIDE, t_new, y_new, Dn, k, ns + 1, 1, 0, 0) + est + (erkp1, hrho)
 
 
