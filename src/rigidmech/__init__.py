@@ -7,6 +7,7 @@ dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 
 from . import actions, inertia, ode, scenes
 from . import actions as joints
+from ._core.version import __version__ as __version__
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
@@ -45,8 +46,6 @@ from .vectors import (
     mixed,
     t,
 )
-
-__version__ = "0.1.0"
 
 __all__ = [
     "Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
