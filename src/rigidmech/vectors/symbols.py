@@ -3,6 +3,10 @@
 The parameters of situation of a mechanical system (the book's name for generalized
 coordinates) are functions of time. rigidmech represents them as sympy undefined functions
 applied to the time symbol :data:`t`, so that sympy's differentiation applies the chain rule.
+
+:data:`t` is sympy's own time symbol, ``sympy.physics.mechanics.dynamicsymbols._t``: the
+``dynamicsymbols`` of :mod:`sympy.physics.mechanics` are parameters of situation of rigidmech
+too, and expressions of either library mix freely.
 """
 
 from __future__ import annotations
@@ -15,8 +19,9 @@ from .._core.errors import ArgumentError, ArgumentTypeError
 
 __all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative"]
 
-#: The time variable shared by every time-dependent quantity of rigidmech.
-t = sp.Symbol("t", real=True)
+#: The time variable shared by every time-dependent quantity of rigidmech: ``Symbol("t")``,
+#: the same symbol as ``sympy.physics.mechanics.dynamicsymbols._t``.
+t = sp.Symbol("t")
 
 
 def _split_names(names, argument):
@@ -92,6 +97,9 @@ def is_coordinate(expr) -> bool:
     True
     >>> is_coordinate(t)
     False
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> is_coordinate(dynamicsymbols("q"))
+    True
     """
     return isinstance(expr, sp.core.function.AppliedUndef) and expr.args == (t,)
 
