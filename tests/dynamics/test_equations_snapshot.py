@@ -98,6 +98,30 @@ def test_chain_coordinates_in_the_order_of_the_bodies():
     assert s.coordinates == (q1, q2)
 
 
+def test_declared_order_wins_over_the_structure():
+    theta, x = rm.coordinates("theta x")  # the pendulum's angle declared first
+    R0 = rm.Frame("R0")
+    P = R0.point("P", x, 0, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=theta, origin=P)
+    cart = rm.Body("cart", frame=R0.translated("Rc", P), mass=1, centre=P)
+    rod = rm.Body("rod", frame=R1, mass=1, centre=P.moved("G", R1.i))
+    s = rm.System(galilean=R0)
+    s.add(cart)
+    s.connect(cart, rod, rm.joints.Pivot(at=P, axis=R0.k))
+    assert s.coordinates == (theta, x)
+
+
+def test_dynamicsymbols_free_body_position_then_orientation():
+    from sympy.physics.mechanics import dynamicsymbols
+
+    x, y, z, psi, theta, phi = dynamicsymbols("x y z psi theta phi")
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, z)
+    s = rm.System(galilean=R0)
+    s.add(rm.Body("b", frame=R0.euler("R", psi, theta, phi, origin=G), mass=1, centre=G))
+    assert s.coordinates == (x, y, z, psi, theta, phi)
+
+
 # -- 4. q0 and u0 by name --------------------------------------------------------------------------
 def test_initial_state_by_name_falls_freely():
     system, (x, y, z, psi, theta, phi) = free_body()

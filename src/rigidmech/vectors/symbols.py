@@ -12,12 +12,14 @@ too, and expressions of either library mix freely.
 from __future__ import annotations
 
 from functools import lru_cache
+from itertools import count
 
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative"]
+__all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative",
+           "declared_order"]
 
 #: The time variable shared by every time-dependent quantity of rigidmech: ``Symbol("t")``,
 #: the same symbol as ``sympy.physics.mechanics.dynamicsymbols._t``.
@@ -59,7 +61,32 @@ def coordinates(names):
     """
     parts = _split_names(names, "names")
     out = tuple(sp.Function(n, real=True)(t) for n in parts)
+    for q in out:  # the latest declaration of a name sets its rank (see declared_order)
+        _DECLARED[q] = next(_RANKS)
     return out[0] if len(out) == 1 else out
+
+
+# Rank of each parameter of situation in the order of declaration by `coordinates`.
+_DECLARED: dict = {}
+_RANKS = count()
+
+
+def declared_order(coordinates) -> tuple:
+    """Sort parameters of situation in the order they were declared with
+    :func:`coordinates`: by call, then by position in the call. A name declared again takes
+    the rank of its latest declaration. Functions of time not made by :func:`coordinates`
+    (``sympy.physics.mechanics.dynamicsymbols``) come after, in their given order.
+
+    Examples
+    --------
+    >>> theta, x = coordinates("theta x")
+    >>> psi = coordinates("psi")
+    >>> declared_order([psi, x, theta])
+    (theta(t), x(t), psi(t))
+    """
+    given = list(coordinates)
+    ranked = sorted((q for q in given if q in _DECLARED), key=_DECLARED.__getitem__)
+    return tuple(ranked + [q for q in given if q not in _DECLARED])
 
 
 def constants(names, **assumptions):
