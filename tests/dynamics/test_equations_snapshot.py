@@ -47,7 +47,7 @@ def pendulum():
     return system, bar, R0, q
 
 
-# -- 3. snapshot -----------------------------------------------------------------------------------
+# -- 3. snapshot --
 def test_equations_are_a_snapshot_of_the_system():
     system, bar, R0, q = pendulum()
     eqs = system.equations_of_motion()
@@ -70,7 +70,7 @@ def test_energy_of_equations_is_taken_when_they_are_derived():
     assert sp.simplify(eqs.energy - expected) == 0
 
 
-# -- 4. order of the coordinates -------------------------------------------------------------------
+# -- 4. order of the coordinates --
 def test_free_body_coordinates_position_then_orientation():
     system, coords = free_body()
     assert system.coordinates == coords
@@ -122,7 +122,7 @@ def test_dynamicsymbols_free_body_position_then_orientation():
     assert s.coordinates == (x, y, z, psi, theta, phi)
 
 
-# -- 4. q0 and u0 by name --------------------------------------------------------------------------
+# -- 4. q0 and u0 by name --
 def test_initial_state_by_name_falls_freely():
     system, (x, y, z, psi, theta, phi) = free_body()
     eqs = system.equations_of_motion()
@@ -147,7 +147,7 @@ def test_initial_state_names_must_be_coordinates():
         eqs.simulate(t=(0, 1), q0={"theta": 0.7}, u0={"xdot": 1.0}, **values)
 
 
-# -- 4. parameters that dropped out ----------------------------------------------------------------
+# -- 4. parameters that dropped out --
 def test_parameters_that_dropped_out_are_accepted_with_a_note():
     system, *_ = pendulum()
     eqs = system.equations_of_motion()
@@ -166,3 +166,20 @@ def test_unknown_parameters_are_still_refused():
     values = {"C": 0.5, "L": 1.0, "g": 9.81, "m": 2.0}
     with pytest.raises(ArgumentError, match=r"unknown parameters \['mass'\]"):
         eqs.rhs(mass=3.0, **values)
+
+
+def test_a_scene_parameter_that_dropped_out_is_noted_not_refused():
+    """The pipeline behind the command line's --param: the scene passes all its parameters,
+    one of which (A, a moment of inertia about an axis the bar never turns about) drops out."""
+    from rigidmech import scenes
+
+    def builder():
+        system, bar, _, _ = pendulum()
+        return scenes.Built(system=system, bodies=(bar,))
+
+    scene = scenes.Scene("bar", "bar on a pivot", "ch. 22", coordinates=("q",),
+                         parameters=[(p, 1.0, p) for p in ("A", "B", "C", "L", "g", "m")],
+                         q0=(0.3,), builder=builder, t_end=0.1)
+    report = scenes.run(scene, params={"A": 2.0})
+    assert any("A, B" in note for note in report.simulation.notes)
+    assert "note: parameters A, B do not enter the equations" in report.summary()

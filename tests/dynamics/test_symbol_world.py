@@ -49,7 +49,7 @@ def slider(force):
     return system, x, m
 
 
-# -- results accept the user's q(t) ---------------------------------------------------------------
+# -- results accept the user's q(t) --
 def test_forcing_substitutes_the_users_coordinate():
     q = rm.coordinates("q")
     system, _, _, (m, L, g) = pendulum(q)
@@ -106,7 +106,7 @@ def test_printing_tells_the_coordinate_from_a_symbol():
     assert not eqs.forcing.has(sp.Symbol("q", real=True))
 
 
-# -- evaluation along a motion ---------------------------------------------------------------------
+# -- evaluation along a motion --
 def test_simulation_evaluates_expressions_of_the_users_coordinates():
     q = rm.coordinates("q")
     system, _, _, (m, L, g) = pendulum(q)
@@ -123,7 +123,7 @@ def test_simulation_evaluates_expressions_of_the_users_coordinates():
     assert_allclose(acc, -3 * 9.81 * np.sin(sim.q[0]) / (2 * 1.5), rtol=1e-12)
 
 
-# -- sympy.physics.mechanics dynamicsymbols ---------------------------------------------------------
+# -- sympy.physics.mechanics dynamicsymbols --
 def test_time_is_sympys_dynamicsymbols_time():
     assert rm.t == me.dynamicsymbols._t
 
@@ -140,7 +140,7 @@ def test_dynamicsymbols_are_coordinates():
                     rtol=1e-14)
 
 
-# -- specified inputs ------------------------------------------------------------------------------
+# -- specified inputs --
 def test_a_function_of_time_is_an_input():
     F = sp.Function("F")(rm.t)
     system, x, m = slider(F)
@@ -182,3 +182,37 @@ def test_an_input_derivative_is_refused_clearly():
     eqs = slider(F.diff(rm.t))[0].equations_of_motion()
     with pytest.raises(CompilationError, match="Derivative"):
         eqs.rhs(m=1.0, F=np.sin)
+
+
+# -- equations written by hand -----------------------------------------------------------------
+def test_equations_given_with_stand_in_symbols_are_rewritten_with_the_coordinates():
+    x = rm.coordinates("x")
+    xs, vs, k, c = sp.symbols("x_s v_s k c")
+    eqs = rm.EquationsOfMotion(coordinates=(x,), q=(xs,), u=(vs,),
+                               mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-k * xs - c * vs]]),
+                               energy=(vs**2 + k * xs**2) / 2)
+    xd = x.diff(rm.t)
+    assert eqs.forcing == sp.Matrix([[-k * x - c * xd]])
+    assert eqs.energy == (xd**2 + k * x**2) / 2
+    assert eqs.q == (x,) and eqs.u == (xd,) and eqs.parameters == (c, k)
+    # plain-symbol coordinates stay plain symbols, with their rates named by u
+    eqs = rm.EquationsOfMotion(coordinates=(xs,), u=(vs,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-k * xs]]))
+    assert eqs.names == ("x_s",)
+    assert_allclose(eqs.rhs(k=4.0)(0.0, np.array([1.0, 0.5])), [0.5, -4.0], rtol=1e-15)
+    with pytest.raises(ArgumentError, match="`u` must name the rates"):
+        rm.EquationsOfMotion(coordinates=(xs,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                             forcing=sp.ImmutableMatrix([[-k * xs]]))
+
+
+def test_evaluate_names_what_it_has_no_value_for():
+    q = rm.coordinates("q")
+    system, _, _, (m, L, g) = pendulum(q)
+    sim = system.equations_of_motion().simulate(t=(0.0, 0.1), q0=[0.4], n_output=3,
+                                                m=1.0, L=1.0, g=9.81)
+    h = sp.Symbol("h")
+    with pytest.raises(ArgumentError, match=r"\['h'\]"):
+        sim.evaluate(m * g * h)
+    with pytest.raises(CompilationError, match=r"G\(t\)"):
+        sim.evaluate(sp.Function("G")(rm.t))

@@ -115,7 +115,9 @@ class RunReport:
         return equations_text(self.equations, pretty=pretty)
 
     def summary(self, *, pretty: bool = False) -> str:
-        """Several lines for a terminal: scene, equations, settings, energy drift, timings."""
+        """Several lines for a terminal: scene, equations, settings, energy drift, timings,
+        and the notes of the simulation (values given for constants that dropped out of the
+        equations, ignored)."""
         sc = self.scene
         coords = ", ".join(sc.coordinates)
         params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
@@ -138,6 +140,7 @@ class RunReport:
             f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
             f"steps), energy {ms['energy']:.1f} ms",
         ]
+        lines.extend(f"note: {note}" for note in self.simulation.notes)
         if self.plot_path is not None:
             lines.append(f"plot written to {self.plot_path}")
         return "\n".join(lines)

@@ -27,8 +27,7 @@ from .reference_change import (
     common_axis_map,
     common_origin_map,
 )
-from .symbols import constants, coordinates, is_coordinate, t, time_derivative
-from .symbols import declared_order
+from .symbols import constants, coordinates, declared_order, is_coordinate, t, time_derivative
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
 __all__ = [
