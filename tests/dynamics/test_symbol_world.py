@@ -123,6 +123,25 @@ def test_simulation_evaluates_expressions_of_the_users_coordinates():
     assert_allclose(acc, -3 * 9.81 * np.sin(sim.q[0]) / (2 * 1.5), rtol=1e-12)
 
 
+def test_connection_components_evaluate_along_the_motion():
+    """A perfect pivot transmits no moment about its axis (ch. 13.2.2): N, written with q''
+    among others, vanishes once q'' solves the equations of motion; the resultant is
+    m a(G) - m g (ch. 18.2) with a(G) from the closed form of a point at L/2 on the bar."""
+    q = rm.coordinates("q")
+    system, bar, R0, (m, L, g) = pendulum(q)
+    sim = system.equations_of_motion().simulate(t=(0.0, 2.0), q0=[1.0], n_output=9,
+                                                m=2.0, L=1.5, g=9.81)
+    comps = system.connection_components(R0, bar)
+    assert_allclose(sim.evaluate(comps["N"]), 0.0, atol=1e-12)
+    qq, w = sim.q[0], sim.u[0]
+    a = -3 * 9.81 * np.sin(qq) / (2 * 1.5)
+    # a(G) = (L/2)(q'' j1 - q'^2 i1) with i1 = (cos q, sin q), j1 = (-sin q, cos q)
+    ax = 0.75 * (-a * np.sin(qq) - w**2 * np.cos(qq))
+    ay = 0.75 * (a * np.cos(qq) - w**2 * np.sin(qq))
+    resultant = sim.evaluate(system.connection_action(R0, bar).resultant.components(R0))
+    assert_allclose(resultant[:2, 0], [2.0 * ax - 2.0 * 9.81, 2.0 * ay], atol=1e-10)
+
+
 # -- sympy.physics.mechanics dynamicsymbols --
 def test_time_is_sympys_dynamicsymbols_time():
     assert rm.t == me.dynamicsymbols._t
