@@ -155,7 +155,21 @@ class EquationsOfMotion:
     @property
     def names(self) -> tuple:
         """The names of the coordinates (``"q"`` for q(t)): the keys of ``q0`` and ``u0`` in
-        :meth:`simulate`."""
+        :meth:`simulate`.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> x, y = rm.coordinates("x y")
+        >>> eqs = EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+        ...                         forcing=sp.Matrix([-x, -y]))
+        >>> eqs.names
+        ('x', 'y')
+        >>> sim = eqs.simulate(t=(0, 1), q0={"y": 1.0}, n_output=3)
+        >>> sim.q[:, 0].tolist()
+        [0.0, 1.0]
+        """
         return tuple(_name(q) for q in self._coordinates)
 
     @property
