@@ -235,3 +235,12 @@ def test_evaluate_names_what_it_has_no_value_for():
         sim.evaluate(m * g * h)
     with pytest.raises(CompilationError, match=r"G\(t\)"):
         sim.evaluate(sp.Function("G")(rm.t))
+
+
+def test_a_value_that_is_not_a_number_is_named():
+    F = sp.Function("F")(rm.t)
+    eqs = slider(F)[0].equations_of_motion()
+    with pytest.raises(TypeError, match="parameter `m` must be a real number"):
+        eqs.rhs(m=np.cos, F=1.0)
+    with pytest.raises(TypeError, match="input `F` must be a real number or a callable"):
+        eqs.rhs(m=1.0, F="strong")

@@ -312,11 +312,18 @@ class EquationsOfMotion:
             raise ArgumentError(
                 f"unknown parameters {unknown}; the equations depend on "
                 f"{[p.name for p in self._params] + input_names}.")
-        values = [float(params[p.name]) for p in self._params]
-        inputs = []
-        for w in input_names:
-            v = params[w]
-            inputs.append(v if callable(v) else float(v))
+        def number(name, kind):
+            try:
+                return float(params[name])
+            except (TypeError, ValueError):
+                raise ArgumentTypeError(
+                    f"the value of {kind} `{name}` must be a real number"
+                    f"{' or a callable of t' if kind == 'input' else ''}; got "
+                    f"{params[name]!r}.") from None
+
+        values = [number(p.name, "parameter") for p in self._params]
+        inputs = [params[w] if callable(params[w]) else number(w, "input")
+                  for w in input_names]
         notes = ()
         if dropped:
             notes = (f"parameters {', '.join(dropped)} do not enter the equations of motion "
