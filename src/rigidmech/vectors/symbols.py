@@ -75,7 +75,9 @@ def declared_order(coordinates) -> tuple:
     """Sort parameters of situation in the order they were declared with
     :func:`coordinates`: by call, then by position in the call. A name declared again takes
     the rank of its latest declaration. Functions of time not made by :func:`coordinates`
-    (``sympy.physics.mechanics.dynamicsymbols``) come after, in their given order.
+    (``sympy.physics.mechanics.dynamicsymbols``) come after, in their given order. The
+    ranks are shared by the whole session: to fix the order of a model whatever else was
+    declared, give it explicitly (``System(coordinates=...)``).
 
     Examples
     --------
