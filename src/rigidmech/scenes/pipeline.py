@@ -44,13 +44,14 @@ def equations_text(eqs: EquationsOfMotion, *, pretty: bool = False) -> str:
     >>> print(equations_text(eqs))
     (L**2*m/3)*theta_ddot = -L*g*m*sin(theta)/2
     """
-    acc = [sp.Symbol(s.name.removesuffix("_dot") + "_ddot", real=True) for s in eqs.u]
-    M, f = eqs.mass_matrix, eqs.forcing
+    # q(t), q'(t) printed q, q_dot (reading only)
+    display = eqs.display_rule()
+    M, f = eqs.mass_matrix.xreplace(display), eqs.forcing.xreplace(display)
+    acc = [sp.Symbol(name + "_ddot", real=True) for name in eqs.names]
     n = len(acc)
     if pretty:  # dotted letters in 2-D: theta1_dot -> thetadot1, shown with a dot above
-        names = [re.fullmatch(r"(.*?)(\d*)", s.name.removesuffix("_dot")).groups()
-                 for s in eqs.u]
-        rule = {u: sp.Symbol(f"{a}dot{d}", real=True)
+        names = [re.fullmatch(r"(.*?)(\d*)", name).groups() for name in eqs.names]
+        rule = {display[u]: sp.Symbol(f"{a}dot{d}", real=True)
                 for u, (a, d) in zip(eqs.u, names, strict=True)}
         acc = [sp.Symbol(f"{a}ddot{d}", real=True) for a, d in names]
         M, f = M.xreplace(rule), f.xreplace(rule)
@@ -115,7 +116,9 @@ class RunReport:
         return equations_text(self.equations, pretty=pretty)
 
     def summary(self, *, pretty: bool = False) -> str:
-        """Several lines for a terminal: scene, equations, settings, energy drift, timings."""
+        """Several lines for a terminal: scene, equations, settings, energy drift, timings,
+        and the notes of the simulation (values given for constants that dropped out of the
+        equations, ignored)."""
         sc = self.scene
         coords = ", ".join(sc.coordinates)
         params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
@@ -138,6 +141,7 @@ class RunReport:
             f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
             f"steps), energy {ms['energy']:.1f} ms",
         ]
+        lines.extend(f"note: {note}" for note in self.simulation.notes)
         if self.plot_path is not None:
             lines.append(f"plot written to {self.plot_path}")
         return "\n".join(lines)
@@ -373,8 +377,8 @@ def plot_simulation(sim: Simulation, path, *, title=None):
     has_energy = eqs.energy is not None
     fig = Figure(figsize=(7, 5.5 if has_energy else 3.5))
     axes = fig.subplots(2 if has_energy else 1, 1, sharex=True, squeeze=False)[:, 0]
-    for i, q in enumerate(eqs.q):
-        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(q)}$")
+    for i, name in enumerate(eqs.names):
+        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
     axes[0].set_ylabel("parameters of situation")
     axes[0].legend(loc="upper right")
     axes[0].grid(True, alpha=0.3)
