@@ -1,11 +1,5 @@
 """Part II of the book, kinematics (ch. 6-10): solids, kinematic torsors, composition."""
 
-from .solid import KinematicTorsor, Solid, kinematic_torsor
-
-__all__ = ["KinematicTorsor", "Solid", "kinematic_torsor"]
-from .composition import Composition, acceleration_composition, velocity_composition
-
-__all__ += ["Composition", "velocity_composition", "acceleration_composition"]
 from .central import (
     areal_constant,
     areal_velocity,
@@ -13,9 +7,7 @@ from .central import (
     binet_speed_squared,
     is_central,
 )
-
-__all__ += ["areal_velocity", "areal_constant", "is_central", "binet_speed_squared",
-            "binet_acceleration"]
+from .composition import Composition, acceleration_composition, velocity_composition
 from .orbits import (
     HohmannTransfer,
     Orbit,
@@ -25,6 +17,11 @@ from .orbits import (
     kepler_elliptic,
     kepler_hyperbolic,
 )
+from .solid import KinematicTorsor, Solid, kinematic_torsor
 
+__all__ = ["KinematicTorsor", "Solid", "kinematic_torsor"]
+__all__ += ["Composition", "velocity_composition", "acceleration_composition"]
+__all__ += ["areal_velocity", "areal_constant", "is_central", "binet_speed_squared",
+            "binet_acceleration"]
 __all__ += ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
             "circular_speed", "escape_speed", "hohmann_transfer"]

@@ -2,5 +2,14 @@
 energy."""
 
 from .body import Body
+from .inertial import (
+    InertialActions,
+    coriolis_dynamic_torsor,
+    coriolis_inertial_torsor,
+    entrainment_dynamic_torsor,
+    entrainment_inertial_torsor,
+)
 
 __all__ = ["Body"]
+__all__ += ["entrainment_dynamic_torsor", "coriolis_dynamic_torsor",
+            "entrainment_inertial_torsor", "coriolis_inertial_torsor", "InertialActions"]
