@@ -2,7 +2,19 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
+from .gravitation import (
+    GRAVITATIONAL_CONSTANT,
+    Attractor,
+    NewtonAttraction,
+    SphericalBodyAttraction,
+    homogeneous_sphere,
+    point_mass,
+    spherical_shell,
+    surface_gravity,
+)
 from .joints import Cylindrical, Joint, Pivot, Prismatic, Spherical
 
 __all__ = ["Action", "Couple", "Force", "Gravity", "Spring", "gravity", "power", "Joint",
            "Pivot", "Prismatic", "Cylindrical", "Spherical"]
+__all__ += ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass", "homogeneous_sphere",
+            "spherical_shell", "NewtonAttraction", "SphericalBodyAttraction", "surface_gravity"]
