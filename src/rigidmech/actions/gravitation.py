@@ -1,7 +1,7 @@
 """Newton's attraction: point masses, spherical bodies, and gravity as its local
 approximation (book, ch. 12).
 
-Two point masses m1 at A and m2 at B attract each other (ch. 12.1):
+Two point masses m1 at A and m2 at B attract each other (ch. 12.1.1):
 
 .. math::
     \\mathbf{F}_{1\\to 2} = -\\mathcal{G}\\,\\frac{m_1 m_2}{AB^3}\\,\\mathbf{AB},\\qquad
@@ -20,7 +20,7 @@ spherical shell             0                           -G M / R
 ==========================  ==========================  ==================================
 
 and g(r) = G M / r^2, V(r) = -G M / r outside (r >= R) for all three. Near the surface the
-field is nearly uniform: gravity g = G M / R^2 (ch. 12.2), the :class:`~rigidmech.actions.Gravity`
+field is nearly uniform: gravity g = G M / R^2 (ch. 12.2.1), the :class:`~rigidmech.actions.Gravity`
 of the actions module.
 """
 
@@ -160,7 +160,7 @@ class Attractor:
         return -self.field_magnitude(r) / r * cp
 
     def local_gravity(self, at: Point, *, centre: Point) -> Gravity:
-        """The uniform field that approximates the attraction near ``at`` (ch. 12.2): the
+        """The uniform field that approximates the attraction near ``at`` (ch. 12.2.1): the
         :class:`Gravity` action of field g(P).
 
         Examples
@@ -232,7 +232,7 @@ def _massive(s, argument):
 
 class NewtonAttraction(Action):
     """Newton's mutual attraction of two bodies ``a`` and ``b`` treated as point masses (or
-    spherical bodies) at their mass centres (ch. 12.1).
+    spherical bodies) at their mass centres (ch. 12.1.1).
 
     The force on b is the slider {-G m_a m_b AB / AB^3}_B, the opposite one acts on a, and
     the potential energy is -G m_a m_b / AB.

@@ -1,5 +1,5 @@
 """Work of a force along a path and of an action along a motion; conservative fields and
-their potential energy (book, ch. 11.3, 20).
+their potential energy (book, ch. 11.3, 18.3).
 
 The work of a force F along the path C of its point of application, parametrised by s from
 s0 to s1, and the work of an action along a motion between t0 and t1 (the integral of its
@@ -80,7 +80,7 @@ def _field_components(field, frame, variables):
 def work_along_path(force: Vector, path, start, end, *, variables=None, method="auto",
                     parameter=None, frame=None):
     """The work of ``force`` along ``path`` between the parameter values ``start`` and ``end``
-    (ch. 11.3.2).
+    (ch. 11.3.4).
 
     Parameters
     ----------
@@ -166,7 +166,7 @@ def power_of(action: Action, solids, *, relative_to: Frame) -> sp.Expr:
 def work_along_motion(action, motion, *, start, end, trajectory=None, relative_to=None,
                       method="auto"):
     """The work of an action along a motion between the times ``start`` and ``end``: the
-    integral of its power (ch. 11.3.2, 20.1).
+    integral of its power (ch. 11.3.4, 18.3).
 
     Parameters
     ----------

@@ -2,14 +2,14 @@
 (book, ch. 8).
 
 The acceleration of a point M is central, of centre O fixed in the reference R, when
-OM ^ a(M/R) = 0 at every instant (ch. 8.1). Then the vector OM ^ v(M/R) is constant: the motion
+OM ^ a(M/R) = 0 at every instant (ch. 8.1.1). Then the vector OM ^ v(M/R) is constant: the motion
 is plane and obeys the law of areas. In polar coordinates (r, theta) in that plane,
 
 .. math::
     \\frac{dA}{dt} = \\tfrac12\\,r^2\\dot\\theta = \\tfrac12\\,C,\\qquad
-    C = r^2\\dot\\theta \\quad\\text{(areal constant, ch. 8.2)},
+    C = r^2\\dot\\theta \\quad\\text{(areal constant, ch. 8.1.3-8.1.4)},
 
-and with u = 1/r written as a function of theta Binet's formulas read (ch. 8.3)
+and with u = 1/r written as a function of theta Binet's formulas read (ch. 8.1.5-8.1.6)
 
 .. math::
     v^2 = C^2\\left(u^2 + \\left(\\frac{du}{d\\theta}\\right)^2\\right),\\qquad
@@ -39,7 +39,7 @@ def _check(point, centre, frame):
 
 
 def areal_velocity(point: Point, *, centre: Point, frame: Frame) -> Vector:
-    """The vector areal velocity (1/2) OM ^ v(M/R) of M about ``centre`` (ch. 8.2).
+    """The vector areal velocity (1/2) OM ^ v(M/R) of M about ``centre`` (ch. 8.1.3).
 
     Its magnitude is the rate dA/dt at which the radius OM sweeps area.
 
@@ -58,7 +58,7 @@ def areal_velocity(point: Point, *, centre: Point, frame: Frame) -> Vector:
 
 def areal_constant(point: Point, *, centre: Point, frame: Frame) -> Vector:
     """The vector C = OM ^ v(M/R) (twice the areal velocity; C = r^2 theta' in the plane
-    of the motion), constant when the acceleration is central (ch. 8.2).
+    of the motion), constant when the acceleration is central (ch. 8.1.3).
 
     Examples
     --------
@@ -75,7 +75,7 @@ def areal_constant(point: Point, *, centre: Point, frame: Frame) -> Vector:
 
 def is_central(point: Point, *, centre: Point, frame: Frame) -> bool:
     """Whether the acceleration of M relative to ``frame`` is central about ``centre``:
-    OM ^ a(M/R) simplifies to zero (ch. 8.1).
+    OM ^ a(M/R) simplifies to zero (ch. 8.1.1).
 
     Examples
     --------
@@ -105,7 +105,7 @@ def _u_theta(u, theta):
 
 
 def binet_speed_squared(u, theta: sp.Symbol, areal_constant) -> sp.Expr:
-    """Binet's first formula v^2 = C^2 (u^2 + (du/dtheta)^2), u = 1/r (ch. 8.3).
+    """Binet's first formula v^2 = C^2 (u^2 + (du/dtheta)^2), u = 1/r (ch. 8.1.5).
 
     Parameters
     ----------
@@ -129,7 +129,7 @@ def binet_speed_squared(u, theta: sp.Symbol, areal_constant) -> sp.Expr:
 
 def binet_acceleration(u, theta: sp.Symbol, areal_constant) -> sp.Expr:
     """Binet's second formula: the radial acceleration a_r = -C^2 u^2 (u + d^2u/dtheta^2) of a
-    motion with central acceleration (ch. 8.3); the orthoradial component is zero.
+    motion with central acceleration (ch. 8.1.5); the orthoradial component is zero.
 
     Examples
     --------

@@ -2,7 +2,7 @@
 
 A point M moves relative to a reference R1 = (O1; i1, j1, k1), which itself moves relative to
 R0 (often the Galilean reference). With omega = omega(R1/R0) and O1M the position of M in R1,
-the derivation formula gives (ch. 17.1.1-17.1.2)
+the derivation formula gives (ch. 17.1.2-17.1.3)
 
 .. math::
     \\mathbf{v}(M/R_0) = \\underbrace{\\mathbf{v}(M/R_1)}_{\\text{relative}}
@@ -183,7 +183,7 @@ def _relative_velocity(point, solid, relative_to):
 
 def velocity_composition(moving, *, relative_to: Frame, absolute: Frame,
                          at: Point | None = None) -> Composition:
-    """Composition of velocities: v(M/R0) = v(M/R1) + v_e(M) (ch. 17.1.1).
+    """Composition of velocities: v(M/R0) = v(M/R1) + v_e(M) (ch. 17.1.2).
 
     Parameters
     ----------
@@ -226,7 +226,7 @@ def velocity_composition(moving, *, relative_to: Frame, absolute: Frame,
 
 def acceleration_composition(moving, *, relative_to: Frame, absolute: Frame,
                              at: Point | None = None) -> Composition:
-    """Composition of accelerations: a(M/R0) = a(M/R1) + a_e(M) + a_c(M) (ch. 17.1.2).
+    """Composition of accelerations: a(M/R0) = a(M/R1) + a_e(M) + a_c(M) (ch. 17.1.3).
 
     Parameters
     ----------

@@ -1,9 +1,9 @@
 """Kepler orbits, numerically: the conic from a state, the state at a time, transfers
-(book, ch. 8.4 and the space problems of ch. 27).
+(book, ch. 8.2 and the space problems of ch. 27.3).
 
 A point moving under the central acceleration a = -mu OM / r^3 (Newton's attraction of a
 centre of gravitational parameter mu = G M, ch. 12) describes a conic with a focus at the
-centre (ch. 8.4). From one state (r0, v0) the invariants are
+centre (ch. 8.2). From one state (r0, v0) the invariants are
 
 .. math::
     \\mathbf{h} = \\mathbf{r}\\wedge\\mathbf{v},\\qquad
@@ -145,7 +145,7 @@ def kepler_hyperbolic(mean_anomaly, e):
 
 
 def circular_speed(mu, r) -> float:
-    """Speed sqrt(mu / r) on a circular orbit of radius r (ch. 8.4).
+    """Speed sqrt(mu / r) on a circular orbit of radius r (ch. 8.2).
 
     Examples
     --------
@@ -270,7 +270,7 @@ class Orbit:
 
     @property
     def angular_momentum(self) -> np.ndarray:
-        """The specific angular momentum h = r ^ v (the areal constant vector, ch. 8.2)."""
+        """The specific angular momentum h = r ^ v (the areal constant vector, ch. 8.1.3)."""
         return self._h
 
     @property
@@ -347,7 +347,7 @@ class Orbit:
         return self._tp
 
     def radius_at(self, true_anomaly):
-        """r = p / (1 + e cos nu), the polar equation of the conic (ch. 8.4).
+        """r = p / (1 + e cos nu), the polar equation of the conic (ch. 8.2).
 
         Examples
         --------
@@ -431,7 +431,7 @@ class Orbit:
 
 
 class HohmannTransfer:
-    """The Hohmann transfer between coplanar circular orbits of radii r1 and r2 (ch. 27).
+    """The Hohmann transfer between coplanar circular orbits of radii r1 and r2 (ch. 27.3).
 
     Attributes are read-only: ``r1``, ``r2``, ``mu``, ``semi_major_axis`` = (r1 + r2)/2,
     ``delta_v1``, ``delta_v2`` (speed changes at departure and arrival, positive when
@@ -489,7 +489,7 @@ class HohmannTransfer:
 
 
 def hohmann_transfer(mu, r1, r2) -> HohmannTransfer:
-    """The Hohmann transfer from the circle of radius r1 to that of radius r2 (ch. 27).
+    """The Hohmann transfer from the circle of radius r1 to that of radius r2 (ch. 27.3).
 
     Examples
     --------

@@ -2,6 +2,7 @@
 energy."""
 
 from .body import Body
+from .earth import EARTH_RADIUS, EARTH_ROTATION_RATE, EarthReference, earth_reference
 from .inertial import (
     InertialActions,
     coriolis_dynamic_torsor,
@@ -13,3 +14,4 @@ from .inertial import (
 __all__ = ["Body"]
 __all__ += ["entrainment_dynamic_torsor", "coriolis_dynamic_torsor",
             "entrainment_inertial_torsor", "coriolis_inertial_torsor", "InertialActions"]
+__all__ += ["EARTH_ROTATION_RATE", "EARTH_RADIUS", "EarthReference", "earth_reference"]

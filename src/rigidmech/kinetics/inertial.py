@@ -1,8 +1,8 @@
-"""Inertial actions of entrainment and of Coriolis (book, ch. 17.2-17.3).
+"""Inertial actions of entrainment and of Coriolis (book, ch. 17.2, 19.1.1).
 
 A body S moves relative to a reference R1 which moves relative to a Galilean reference R0.
 Since a(M/R0) = a(M/R1) + a_e(M) + a_c(M) at every point (ch. 17.1), the dynamic torsors
-add up (ch. 17.2):
+add up (ch. 17.2.3):
 
 .. math::
     \\{\\mathcal{D}(S/R_0)\\} = \\{\\mathcal{D}(S/R_1)\\} + \\{\\mathcal{D}_e\\} +
@@ -13,7 +13,7 @@ add up (ch. 17.2):
     \\int_S \\mathbf{GM}\\wedge\\mathbf{a}_c\\,dm\\Big\\}_G,
 
 and the fundamental principle written in R1 holds with the inertial action torsors
-{F_ie} = -{D_e} and {F_ic} = -{D_c} added to the actions (ch. 17.3). For a rigid body of mass m,
+{F_ie} = -{D_e} and {F_ic} = -{D_c} added to the actions (ch. 19.1.1). For a rigid body of mass m,
 mass centre G and operator of inertia J_G, with omega = omega(R1/R0), omega' its derivative
 relative to R0 and Omega = omega(S/R1):
 
@@ -68,7 +68,7 @@ def _apply(body, w):
 def entrainment_dynamic_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
                                at: Point | None = None) -> Torsor:
     """{D_e} = {m a_e(G) ; J_G(omega') + omega ^ J_G(omega)}_G, the dynamic torsor of the
-    entrainment accelerations (ch. 17.2).
+    entrainment accelerations (ch. 17.2.1).
 
     Parameters
     ----------
@@ -105,7 +105,7 @@ def entrainment_dynamic_torsor(body: Body, *, relative_to: Frame, absolute: Fram
 def coriolis_dynamic_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
                             at: Point | None = None) -> Torsor:
     """{D_c} = {2 m omega ^ v(G/R1) ; 2 Omega ^ J_G(omega) - tr(J_G) Omega ^ omega}_G, the
-    dynamic torsor of the Coriolis accelerations (ch. 17.2), omega = omega(R1/R0),
+    dynamic torsor of the Coriolis accelerations (ch. 17.2.2), omega = omega(R1/R0),
     Omega = omega(S/R1).
 
     Examples
@@ -140,7 +140,7 @@ def coriolis_dynamic_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
 
 def entrainment_inertial_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
                                 at: Point | None = None) -> Torsor:
-    """{F_ie} = -{D_e}: the inertial action torsor of entrainment on ``body`` (ch. 17.3).
+    """{F_ie} = -{D_e}: the inertial action torsor of entrainment on ``body`` (ch. 19.1.1).
 
     Examples
     --------
@@ -156,7 +156,7 @@ def entrainment_inertial_torsor(body: Body, *, relative_to: Frame, absolute: Fra
 
 def coriolis_inertial_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
                              at: Point | None = None) -> Torsor:
-    """{F_ic} = -{D_c}: the inertial action torsor of Coriolis on ``body`` (ch. 17.3).
+    """{F_ic} = -{D_c}: the inertial action torsor of Coriolis on ``body`` (ch. 19.1.1).
 
     Examples
     --------
@@ -175,7 +175,7 @@ def coriolis_inertial_torsor(body: Body, *, relative_to: Frame, absolute: Frame,
 class InertialActions(Action):
     """The inertial actions of entrainment and Coriolis on every massive body, for the
     fundamental principle written in a reference ``reference`` moving relative to the
-    Galilean ``galilean`` (ch. 17.3, 19).
+    Galilean ``galilean`` (ch. 19.1.1).
 
     Its :meth:`contributions` are the pairs (body, {F_ie} + {F_ic}), reduced at each mass
     centre; bodies without mass receive none.
