@@ -165,6 +165,9 @@ def test_bad_input():
         point_mass("a b c (")
     with pytest.raises(ArgumentError, match="`r` must be > 0 for a point mass"):
         point_mass(1).potential(0)
+    with pytest.raises(ArgumentError, match="`r` must be > 0 for a point mass"):
+        point_mass(1).field_magnitude(0)
+    assert homogeneous_sphere(1, 1).field_magnitude(0) == 0
     with pytest.raises(ArgumentError, match="`kind` must be one of"):
         Attractor("cube", 1, 1)
     R0 = rm.Frame("R0")

@@ -58,7 +58,7 @@ def _scalar(x, argument, *, positive=False):
         raise ArgumentError(f"`{argument}` must be finite; got {value}.")
     if value.is_negative or (positive and value.is_zero):
         need = "> 0" if positive else ">= 0"
-        raise ArgumentError(f"`{argument}` must be {need}; got {value}.")
+        raise ArgumentError(f"`{argument}` must be {need}; got {x}.")
     return value
 
 
@@ -110,7 +110,11 @@ class Attractor:
         >>> spherical_shell(1, 2, G=1).field_magnitude(1), point_mass(4, G=1).field_magnitude(2)
         (0, 1)
         """
-        r = _scalar(r, "r", positive=True)
+        r = _scalar(r, "r")
+        if r.is_zero:
+            if self._kind == "point mass":
+                raise ArgumentError("`r` must be > 0 for a point mass; got 0.")
+            return sp.S.Zero
         outside = self.mu / r**2
         inside = (self.mu * r / self._radius**3 if self._kind == "homogeneous sphere"
                   else sp.S.Zero)
