@@ -10,7 +10,13 @@ from . import actions as joints
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
-from .kinematics import KinematicTorsor, Solid, kinematic_torsor
+from .kinematics import (
+    KinematicTorsor,
+    Solid,
+    acceleration_composition,
+    kinematic_torsor,
+    velocity_composition,
+)
 from .kinetics import Body
 from .lagrange import lagrange_equations
 from .torsors import (
@@ -61,3 +67,4 @@ __all__ = [
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
 ]
+__all__ += ["velocity_composition", "acceleration_composition"]
