@@ -213,6 +213,8 @@ def test_bad_input():
         escape_speed(1.0, 0.0)
     with pytest.raises(ArgumentError, match="`time` must be finite"):
         Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0).state_at(np.nan)
+    with pytest.raises(ArgumentError, match="`parabolic_tol` must be a number in"):
+        Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0, parabolic_tol=-1)
     o = Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0)
     assert "Orbit(" in repr(o)
     with pytest.raises(AttributeError):

@@ -116,8 +116,8 @@ class Composition:
                 and self._absolute_frame == other._absolute_frame)
 
     def __hash__(self):
-        return hash((self._kind, tuple(self), self._moving_frame._name,
-                     self._absolute_frame._name))
+        return hash((self._kind, tuple(self), self._moving_frame.name,
+                     self._absolute_frame.name))
 
     def __repr__(self):
         return (f"Composition({self._kind!r}, {self._moving_frame.name}/"

@@ -207,6 +207,9 @@ class Orbit:
 
     def __init__(self, position, velocity, *, mu, epoch=0.0, parabolic_tol=1e-12):
         mu = _positive(mu, "mu")
+        if not (isinstance(parabolic_tol, int | float) and 0 <= parabolic_tol < 1):
+            raise ArgumentError(f"`parabolic_tol` must be a number in [0, 1); got "
+                                f"{parabolic_tol!r}.")
         r0 = _vector3(position, "position")
         v0 = _vector3(velocity, "velocity")
         r = np.linalg.norm(r0)
