@@ -219,3 +219,27 @@ def test_bad_input():
     assert "Orbit(" in repr(o)
     with pytest.raises(AttributeError):
         o.eccentricity = 0.5
+
+
+@settings(max_examples=60)
+@given(r=st.tuples(*[st.floats(-3, 3)] * 3), v=st.tuples(*[st.floats(-1.5, 1.5)] * 3),
+       t=st.floats(-20, 20))
+def test_state_at_conserves_energy_and_angular_momentum(r, v, t):
+    """Along the Kepler motion the specific energy and r ^ v are invariant (ch. 8.1.4,
+    8.2.3), and the conic found again from the propagated state is the same (to 1e-9)."""
+    r, v = np.array(r), np.array(v)
+    rn = np.linalg.norm(r)
+    h = np.cross(r, v)
+    if rn < 0.1 or np.linalg.norm(h) < 0.05 * rn * max(np.linalg.norm(v), 1.0):
+        return  # too close to the centre or nearly radial: outside the tested domain
+    o = Orbit(r, v, mu=1.0)
+    if o.is_bound and o.eccentricity > 0.99 or abs(o.eccentricity - 1) < 1e-3:
+        return  # the near-parabolic band is tested separately
+    r1, v1 = o.state_at(t)
+    assert_allclose(v1 @ v1 / 2 - 1 / np.linalg.norm(r1), o.specific_energy, rtol=1e-9,
+                    atol=1e-10)
+    assert_allclose(np.cross(r1, v1), o.angular_momentum, rtol=1e-9, atol=1e-10)
+    o1 = Orbit(r1, v1, mu=1.0, epoch=t)
+    assert_allclose(o1.eccentricity_vector, o.eccentricity_vector, rtol=1e-8, atol=1e-9)
+    r2, _ = o1.state_at(0.0)
+    assert_allclose(r2, r, rtol=1e-8, atol=1e-8 * max(1.0, rn))
