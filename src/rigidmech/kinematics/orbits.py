@@ -87,7 +87,7 @@ def _check_e(e, low, high, argument="e"):
 def kepler_elliptic(mean_anomaly, e):
     """The eccentric anomaly E solving Kepler's equation E - e sin E = M, 0 <= e < 1.
 
-    Newton's method started at min(|M| + e, pi) on the reduced anomaly |M| in [0, pi], where
+    Newton's method started at min(abs(M) + e, pi) on the reduced anomaly abs(M) in [0, pi], where
     the function is convex and increasing: the iterates decrease monotonically to the root for
     every e < 1 (no divergence near e = 1). Broadcasts over arrays.
 
@@ -123,7 +123,7 @@ def kepler_elliptic(mean_anomaly, e):
 def kepler_hyperbolic(mean_anomaly, e):
     """The hyperbolic anomaly H solving e sinh H - H = M, e > 1.
 
-    Newton's method started at asinh(|M| / (e - 1)), where the (convex, increasing) function is
+    Newton's method started at asinh(abs(M) / (e - 1)), where the (convex, increasing) function is
     non-negative: the iterates decrease monotonically to the root. Broadcasts over arrays.
 
     Examples
@@ -178,7 +178,7 @@ class Orbit:
     epoch : float, optional
         The time t0 of the state (default 0).
     parabolic_tol : float, optional
-        |e - 1| below which the conic is treated as a parabola (default 1e-12).
+        abs(e - 1) below which the conic is treated as a parabola (default 1e-12).
 
     Raises
     ------
@@ -318,7 +318,7 @@ class Orbit:
 
     @property
     def normal(self) -> np.ndarray:
-        """Unit normal h / |h| to the plane of the orbit."""
+        """Unit normal h / norm(h) to the plane of the orbit."""
         return np.cross(self._P, self._Q)
 
     @property
@@ -478,7 +478,7 @@ class HohmannTransfer:
 
     @property
     def total_delta_v(self) -> float:
-        """|delta_v1| + |delta_v2|."""
+        """abs(delta_v1) + abs(delta_v2)."""
         return abs(self.delta_v1) + abs(self.delta_v2)
 
     @property
