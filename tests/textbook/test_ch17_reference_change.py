@@ -184,3 +184,65 @@ def test_latitude_out_of_range():
         earth_reference(latitude=-math.pi)
     with pytest.raises(ArgumentError, match="`radius` must be > 0"):
         earth_reference(latitude=0.5, radius=-1)
+
+
+def test_pendulum_in_an_accelerating_wagon():
+    """A rod pendulum (mass m, length L, pivot O1 at one end, axis j1) in a wagon R1 moving
+    with the constant acceleration A i0 relative to R0 (ch. 19.1.1): in R1 the moment about
+    the pivot axis of {D(S/R1)} equals that of the weight and of the inertial actions
+    (entrainment -m A i0; Coriolis zero for a translating R1). Relative equilibrium:
+    tan(theta_e) = A / g; small oscillations about it at w^2 = 3 sqrt(g^2 + A^2) / (2 L)."""
+    th = rm.coordinates("theta")
+    m, L, g, A = sp.symbols("m L g A", positive=True)
+    R0 = rm.Frame("R0")  # k0 upwards
+    R1 = R0.translated("R1", R0.point("W", A * t**2 / 2, 0, 0))
+    R2 = R1.rotated("R2", about=R1.j, angle=th)
+    G = R1.origin.moved("G", -L / 2 * R2.k)
+    rod = rm.Body("rod", frame=R2, mass=m, centre=G,
+                  inertia=rm.inertia.rod(m, L, axis=R2.k, centre=G))
+    O1 = R1.origin
+    kw = {"relative_to": R1, "absolute": R0}
+    Fe = entrainment_inertial_torsor(rod, **kw)
+    Fc = coriolis_inertial_torsor(rod, **kw)
+    assert Fe.resultant.equals(-m * A * R0.i) and Fc.resultant.is_zero
+    actions = rm.slider(-m * g * R0.k, G) + Fe + Fc
+    eq = (rod.dynamic_torsor(R1).moment_at(O1) - actions.moment_at(O1)).dot(R1.j)
+    thdd = sp.solve(eq, th.diff(t, 2))[0]
+    x = sp.Symbol("x")
+    f = sp.simplify(thdd.subs(th.diff(t), 0).subs(th, x))
+    th_e = sp.atan(A / g)
+    assert sp.simplify(f.subs(x, th_e)) == 0
+    w2 = sp.simplify(-sp.diff(f, x).subs(x, th_e))
+    assert sp.simplify(w2 - 3 * sp.sqrt(g**2 + A**2) / (2 * L)) == 0
+
+
+def test_foucault_pendulum_precession_rate():
+    """A pendulum of small amplitude (natural rate w0) at latitude lambda: the horizontal
+    equations of relative motion, x'' = -w0^2 x + (Coriolis)_x, y'' = -w0^2 y +
+    (Coriolis)_y, with the Coriolis inertial force of rigidmech (the centrifugal part is in
+    the apparent gravity), integrated by DOP853 (rtol 1e-12): the plane of oscillation turns
+    clockwise at Omega sin(lambda) (ch. 19). An exaggerated Omega = 0.02 rad/s makes the
+    turn visible in 40 s; the rate is exact for this linear model (z = x + i y =
+    exp(-i Omega sin(lambda) t) w with w oscillating in a fixed plane): rtol 1e-6."""
+    lam, W, w0 = math.radians(48.85), 0.02, 3.0
+    E = earth_reference(latitude=lam, rate=W)
+    x, y = rm.coordinates("x y")
+    bob = rm.Body("bob", frame=E.frame.translated("Rb", E.frame.point("B", x, y, 0)), mass=1)
+    Fc = coriolis_inertial_torsor(bob, relative_to=E.frame, absolute=E.geocentric).resultant
+    cx, cy, _ = (sp.N(c) for c in Fc.components(E.frame))
+    X = sp.symbols("X0:4")
+    rule = {x.diff(t): X[2], y.diff(t): X[3], x: X[0], y: X[1]}
+    fx = sp.lambdify(X, cx.xreplace(rule), "math")
+    fy = sp.lambdify(X, cy.xreplace(rule), "math")
+
+    def rhs(_, s):
+        return [s[2], s[3], -w0**2 * s[0] + fx(*s), -w0**2 * s[1] + fy(*s)]
+
+    turning = lambda _, s: s[0] * s[2] + s[1] * s[3]  # noqa: E731  d|z|^2/dt = 0
+    turning.direction = -1  # maxima of |z|
+    sol = solve_ivp(rhs, (0, 40), [1.0, 0, 0, 0], method="DOP853", rtol=1e-12, atol=1e-14,
+                    events=turning)
+    t_max = sol.t_events[0]
+    angles = np.unwrap(2 * np.arctan2(sol.y_events[0][:, 1], sol.y_events[0][:, 0])) / 2
+    rate = np.polyfit(t_max, angles, 1)[0]
+    assert_allclose(rate, -W * math.sin(lam), rtol=1e-6)
