@@ -60,6 +60,12 @@ def test_kepler_bad_eccentricity():
         kepler_elliptic(1.0, 1.2)
     with pytest.raises(ArgumentError, match=r"`e` must lie in \(1.0, inf\)"):
         kepler_hyperbolic(1.0, 0.5)
+    with pytest.raises(ArgumentError, match="`mean_anomaly` must be finite"):
+        kepler_elliptic(np.nan, 0.5)
+    with pytest.raises(ArgumentError, match="`mean_anomaly` must be finite"):
+        kepler_hyperbolic([1.0, np.inf], 2.0)
+    with pytest.raises(ArgumentError, match=r"`e` must lie in \(1.0, inf\)"):
+        kepler_hyperbolic(1.0, np.inf)
 
 
 def _rhs(mu):

@@ -75,13 +75,16 @@ def _newton(f, fprime, x0, what):
                          "iterations.")
 
 
-def _check_e(e, low, high, argument="e"):
+def _check_e_M(e, low, high, mean_anomaly):
     e = np.asarray(e, dtype=float)
-    bad = ~((e >= low) & (e < high)) if high != np.inf else ~(e > low)
-    if np.any(bad) or not np.all(np.isfinite(e)):
+    bad = ~((e >= low) & (e < high)) if high != np.inf else ~((e > low) & np.isfinite(e))
+    if np.any(bad):
         span = f"[{low}, {high})" if high != np.inf else f"({low}, inf)"
-        raise ArgumentError(f"`{argument}` must lie in {span}; got {e[bad] if e.ndim else e}.")
-    return e
+        raise ArgumentError(f"`e` must lie in {span}; got {e[bad] if e.ndim else e}.")
+    M = np.asarray(mean_anomaly, dtype=float)
+    if not np.all(np.isfinite(M)):
+        raise ArgumentError(f"`mean_anomaly` must be finite; got {mean_anomaly}.")
+    return e, M
 
 
 def kepler_elliptic(mean_anomaly, e):
@@ -108,8 +111,7 @@ def kepler_elliptic(mean_anomaly, e):
     >>> round(float(E - 0.5 * np.sin(E)), 12)
     1.0
     """
-    e = _check_e(e, 0.0, 1.0)
-    M = np.asarray(mean_anomaly, dtype=float)
+    e, M = _check_e_M(e, 0.0, 1.0, mean_anomaly)
     turns = np.round(M / (2 * np.pi))
     Mr = M - 2 * np.pi * turns  # in [-pi, pi]
     s = np.where(Mr < 0, -1.0, 1.0)
@@ -132,10 +134,7 @@ def kepler_hyperbolic(mean_anomaly, e):
     >>> round(float(1.5 * np.sinh(H) - H), 12)
     2.0
     """
-    e = _check_e(e, 1.0, np.inf)
-    M = np.asarray(mean_anomaly, dtype=float)
-    if not np.all(np.isfinite(M)):
-        raise ArgumentError(f"`mean_anomaly` must be finite; got {M}.")
+    e, M = _check_e_M(e, 1.0, np.inf, mean_anomaly)
     s = np.where(M < 0, -1.0, 1.0)
     m = np.abs(M)
     H = _newton(lambda H: e * np.sinh(H) - H - m, lambda H: e * np.cosh(H) - 1,
@@ -245,7 +244,6 @@ class Orbit:
         for a in (self._r0, self._v0, self._h, self._e_vec, self._P, self._Q):
             a.setflags(write=False)
 
-    # --- elements -------------------------------------------------------------------------
     @property
     def mu(self) -> float:
         """Gravitational parameter mu."""
@@ -361,7 +359,6 @@ class Orbit:
         out = self._p / (1 + self._e * np.cos(nu))
         return float(out) if out.ndim == 0 else out
 
-    # --- time -----------------------------------------------------------------------------
     def _time_since_periapsis(self, nu):
         e, mu, p = self._e, self._mu, self._p
         if self._kind == "parabola":
