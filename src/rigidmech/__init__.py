@@ -11,7 +11,13 @@ from ._core.version import __version__ as __version__
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
-from .kinematics import KinematicTorsor, Solid, kinematic_torsor
+from .kinematics import (
+    KinematicTorsor,
+    Solid,
+    acceleration_composition,
+    kinematic_torsor,
+    velocity_composition,
+)
 from .kinetics import Body
 from .lagrange import lagrange_equations
 from .torsors import (
@@ -60,3 +66,4 @@ __all__ = [
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
 ]
+__all__ += ["velocity_composition", "acceleration_composition"]
