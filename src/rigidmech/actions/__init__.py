@@ -2,7 +2,9 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
+from .contact_laws import Contact, Coulomb, PivotingResistance, RollingResistance
 from .joints import Cylindrical, Joint, Pivot, Prismatic, Spherical
 
 __all__ = ["Action", "Couple", "Force", "Gravity", "Spring", "gravity", "power", "Joint",
            "Pivot", "Prismatic", "Cylindrical", "Spherical"]
+__all__ += ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]
