@@ -44,6 +44,8 @@ __all__ = ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]
 
 
 def _coefficient(value, argument, what="a number >= 0"):
+    if isinstance(value, str | bool):
+        raise ArgumentTypeError(f"`{argument}` must be {what}; got {value!r}.")
     try:
         v = sp.sympify(value)
     except (sp.SympifyError, TypeError):

@@ -1,4 +1,12 @@
-"""Statics of rigid bodies and cables (book, ch. 14)."""
+"""Statics of rigid bodies and of cables (book, ch. 14).
+
+* :mod:`~rigidmech.statics.equilibrium`: :class:`Statics`, the equilibrium of a body or a set
+  of bodies at rest (unknown connection actions, hyperstaticity, mechanisms);
+* :mod:`~rigidmech.statics.limits`: limiting equilibrium with friction (where sliding,
+  tipping, rolling or lift-off starts, and which comes first);
+* :mod:`~rigidmech.statics.cables`: heavy cables (catenary), cables under a load uniform
+  along the horizontal (parabola), ropes and belts on rough cylinders (capstan).
+"""
 
 from .cables import (
     Catenary,
@@ -8,6 +16,8 @@ from .cables import (
     hoisting_force,
     holding_force,
 )
+from .equilibrium import Equilibrium, EquilibriumError, Statics
+from .limits import Limit, limiting_equilibrium
 
 __all__ = ["Catenary", "ParabolicCable", "capstan_ratio", "holding_force", "hoisting_force",
-           "belt_slip_torque"]
+           "belt_slip_torque", "Statics", "Equilibrium", "EquilibriumError", "limiting_equilibrium", "Limit"]

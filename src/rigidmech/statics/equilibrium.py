@@ -1,0 +1,431 @@
+"""Equilibrium of a rigid body or a set of rigid bodies at rest (book, ch. 14.2).
+
+The law of statics (ch. 14.2.1-14.2.2): a set of bodies is at rest in a Galilean reference
+only if, for each body S, the torsor of the actions exerted on S by everything else is zero,
+
+.. math:: \\{\\mathcal{A}(\\bar S\\to S)\\} = \\{0\\}
+          \\iff \\mathbf{R}(\\bar S\\to S) = \\mathbf{0},\\quad
+          \\mathbf{M}_O(\\bar S\\to S) = \\mathbf{0},
+
+six scalar equations per body, linear in the unknown components of the connection actions
+(ch. 13.2). :class:`Statics` collects the bodies, their connections (the joints of
+:mod:`rigidmech.actions.joints`, the contacts of :mod:`rigidmech.actions.contact_laws`, or
+anything with an ``action_torsor(label)``), the given actions (forces, couples, gravity,
+springs, distributed loads) and writes these equations; :meth:`Statics.solve` solves them:
+
+* the **rank** r of the equations in the n unknowns; the **degree of hyperstaticity**
+  h = n - r and the unknowns that remain undetermined (ch. 13.2, 14.2);
+* the **conditions** the given actions must satisfy: combinations of the equations that no
+  unknown enters. A system with such equations is a **mechanism** for a general load; with
+  numbers that violate them there is no equilibrium and :class:`EquilibriumError` is raised,
+  naming the equations; with symbols they are reported (``Equilibrium.conditions``), and a
+  load made unknown (``solve(unknowns=[P])``) is the one that holds the mechanism at rest.
+
+The path is symbolic (``sympy``: independent equations by row reduction, then
+``sympy.linsolve``) when symbols remain, numeric (``numpy``: rank and null space by SVD,
+least squares) when only numbers do.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError, RigidmechError
+from ..actions import Action
+from ..kinematics import Solid
+from ..torsors import Torsor, torsor_of_field
+from ..vectors import Frame
+
+__all__ = ["Statics", "Equilibrium", "EquilibriumError"]
+
+_COMPONENTS = ("resultant along i", "resultant along j", "resultant along k",
+               "moment about i", "moment about j", "moment about k")
+
+
+class EquilibriumError(RigidmechError, ValueError):
+    """The equations of statics have no solution: the given actions cannot be balanced.
+
+    Examples
+    --------
+    >>> issubclass(EquilibriumError, ValueError)
+    True
+    """
+
+
+def _check_body(s, argument):
+    if not isinstance(s, Solid | Frame):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a Body (or a Frame for the fixed ground); got "
+            f"{type(s).__name__}.")
+
+
+class Statics:
+    """Bodies at rest in the reference ``reference``, their connections and loads (ch. 14).
+
+    Parameters
+    ----------
+    reference : Frame
+        The Galilean reference (the ground). Frames given as an end of a connection are fixed:
+        no equation is written for them.
+
+    Examples
+    --------
+    A beam of length L on a pivot at A and a roller at B, a load F at x = c:
+
+    >>> import rigidmech as rm
+    >>> from rigidmech.actions import Contact, Force, Pivot
+    >>> L, c, F = rm.constants("L c F", positive=True)
+    >>> R0 = rm.Frame("R0"); A = R0.origin; B = R0.point("B", L, 0, 0)
+    >>> beam = rm.Body("beam", frame=R0)
+    >>> st = Statics(R0)
+    >>> st.connect(R0, beam, Pivot(at=A, axis=R0.k), label="A")
+    >>> st.connect(R0, beam, Contact(at=B, normal=R0.j), label="B")
+    >>> st.act(Force(on=beam, vector=-F * R0.j, at=R0.point("C", c, 0, 0)))
+    >>> eq = st.solve()
+    >>> eq.values[sp.Symbol("N_B", real=True)], eq.hyperstaticity
+    (F*c/L, 0)
+    """
+
+    __slots__ = ("_reference", "_bodies", "_connections", "_loads", "_labels")
+
+    def __init__(self, reference: Frame):
+        if not isinstance(reference, Frame):
+            raise ArgumentTypeError(
+                f"`reference` must be a Frame; got {type(reference).__name__}.")
+        self._reference = reference
+        self._bodies: list = []
+        self._connections: list = []      # (first, second, connection, label, torsor, unknowns)
+        self._loads: list = []            # (body, torsor)
+        self._labels: set = set()
+
+    reference = property(lambda self: self._reference, doc="The reference (ground).")
+
+    def _add_body(self, s):
+        if isinstance(s, Solid) and s not in self._bodies:
+            self._bodies.append(s)
+
+    @property
+    def bodies(self) -> tuple:
+        """The bodies whose equilibrium is written, in the order they appeared."""
+        return tuple(self._bodies)
+
+    def add(self, body) -> None:
+        """Add a body that no connection mentions yet (a free body under loads only).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> st = Statics(rm.Frame("R0")); st.add(rm.Body("S", frame=st.reference))
+        >>> [b.name for b in st.bodies]
+        ['S']
+        """
+        if not isinstance(body, Solid):
+            raise ArgumentTypeError(f"`body` must be a Body; got {type(body).__name__}.")
+        self._add_body(body)
+
+    def connect(self, first, second, connection, *, label: str | None = None) -> None:
+        """Connect ``second`` to ``first``; the connection's action torsor is the action of
+        ``first`` on ``second`` (``second`` receives it, ``first`` its opposite, ch. 14.2.3).
+
+        Parameters
+        ----------
+        first, second : Body or Frame
+            The two ends; a Frame is fixed (the ground).
+        connection : Joint, Contact or any object with ``action_torsor(label)``
+            returning ``(Torsor, unknowns)``.
+        label : str, optional
+            Suffix of the unknowns' names (default: ``"12"``-style from the connection's
+            rank).
+        """
+        _check_body(first, "first")
+        _check_body(second, "second")
+        if first is second:
+            raise ArgumentError(f"`first` and `second` must differ; got {first!r} twice.")
+        if not callable(getattr(connection, "action_torsor", None)):
+            raise ArgumentTypeError(
+                "`connection` must have an action_torsor(label) method (a joint or a "
+                f"Contact); got {type(connection).__name__}.")
+        label = str(len(self._connections) + 1) if label is None else str(label)
+        if label in self._labels:
+            raise ArgumentError(f"`label` must be unique; {label!r} is already used.")
+        self._labels.add(label)
+        torsor, unknowns = connection.action_torsor(label)
+        for s in (first, second):
+            self._add_body(s)
+        self._connections.append((first, second, connection, label, torsor, tuple(unknowns)))
+
+    def act(self, action: Action) -> None:
+        """Add a given action (:class:`~rigidmech.actions.Force`, ``Couple``, ``gravity``,
+        ``Spring``): its torsors on the bodies are asked when the equations are written."""
+        if not isinstance(action, Action):
+            raise ArgumentTypeError(
+                f"`action` must be an Action (Force, Couple, gravity, Spring); got "
+                f"{type(action).__name__}. Use load(body, torsor) for a torsor.")
+        self._loads.append((None, action))
+
+    def load(self, body, torsor: Torsor) -> None:
+        """Add the action torsor ``torsor`` exerted on ``body``."""
+        if not isinstance(body, Solid):
+            raise ArgumentTypeError(f"`body` must be a Body; got {type(body).__name__}.")
+        if not isinstance(torsor, Torsor):
+            raise ArgumentTypeError(f"`torsor` must be a Torsor; got {type(torsor).__name__}.")
+        self._add_body(body)
+        self._loads.append((body, torsor))
+
+    def distributed_load(self, body, density, domain) -> Torsor:
+        """Add a distributed load, a field of sliders of ``density`` (force per unit length,
+        area or volume) over ``domain`` (:class:`~rigidmech.torsors.Domain`), reduced by
+        :func:`~rigidmech.torsors.torsor_of_field` (ch. 5.3.2); returns its torsor."""
+        T = torsor_of_field(density, domain)
+        self.load(body, T)
+        return T
+
+    @property
+    def unknowns(self) -> tuple:
+        """The unknown components of the connection actions, connection by connection."""
+        return tuple(u for c in self._connections for u in c[5])
+
+    def contact_conditions(self) -> list:
+        """The inequalities of the contacts' laws, ``(kind, label, expr)`` with expr >= 0."""
+        out = []
+        for _, _, conn, label, _, _ in self._connections:
+            if callable(getattr(conn, "conditions", None)):
+                out += [(kind, label, e) for kind, e in conn.conditions(label)]
+        return out
+
+    def torsors_on(self, body) -> list:
+        """Every action torsor exerted on ``body``: connection actions (with unknowns) and
+        given actions."""
+        out = []
+        for first, second, _, _, T, _ in self._connections:
+            if second is body:
+                out.append(T)
+            elif first is body:
+                out.append(-T)
+        for b, item in self._loads:
+            if b is None:
+                out += [T for s, T in item.contributions(list(self._bodies)) if s is body]
+            elif b is body:
+                out.append(item)
+        return out
+
+    def equations(self) -> list:
+        """The equations of statics ``(body, component, expression = 0)``: the six components,
+        in the reference's basis, of the sum of the torsors on each body reduced at the
+        reference's origin (ch. 14.2)."""
+        O, R0 = self._reference.origin, self._reference
+        rows = []
+        for body in self._bodies:
+            total = sum(self.torsors_on(body), Torsor.zero(O)).at(O)
+            comps = list(total.resultant.components(R0)) + list(total.moment.components(R0))
+            rows += [(body, name, sp.expand(c)) for name, c in zip(_COMPONENTS, comps,
+                                                                  strict=True)]
+        return rows
+
+    def solve(self, values=None, *, unknowns=(), method: str = "auto") -> Equilibrium:
+        """Solve the equations of statics for the connection unknowns (and ``unknowns``).
+
+        Parameters
+        ----------
+        values : dict, optional
+            Numbers for symbols (masses, lengths, loads) substituted first.
+        unknowns : sequence of sympy.Symbol
+            Further unknowns, e.g. the load that holds a mechanism at rest.
+        method : {"auto", "symbolic", "numeric"}
+            "auto": numeric when no symbol remains but the unknowns.
+
+        Returns
+        -------
+        Equilibrium
+
+        Raises
+        ------
+        EquilibriumError
+            If numbers violate an equation that no unknown enters (no equilibrium).
+        """
+        if method not in ("auto", "symbolic", "numeric"):
+            raise ArgumentError(
+                f"`method` must be 'auto', 'symbolic' or 'numeric'; got {method!r}.")
+        xs = list(self.unknowns)
+        for u in unknowns:
+            if not isinstance(u, sp.Symbol):
+                raise ArgumentTypeError(f"`unknowns` must hold sympy Symbols; got {u!r}.")
+            if u not in xs:
+                xs.append(u)
+        if not xs:
+            raise ArgumentError("`unknowns`: the problem has no unknown; connect bodies or "
+                                "name the unknown loads.")
+        rows = self.equations()
+        subs = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+        exprs = [e.xreplace(subs) if subs else e for _, _, e in rows]
+        try:
+            A, b = sp.linear_eq_to_matrix(exprs, xs)
+        except sp.polys.polyerrors.PolyNonlinearError as exc:
+            raise ArgumentError(
+                f"`unknowns` must enter the equations linearly; got {exc}.") from None
+        names = [f"{body.name}: {comp}" for body, comp, _ in rows]
+        keep = [i for i in range(A.rows) if any(A[i, j] != 0 for j in range(A.cols))
+                or b[i] != 0]
+        A, b = A.extract(keep, list(range(A.cols))), b.extract(keep, [0])
+        names = [names[i] for i in keep]
+        free = (A.free_symbols | b.free_symbols) - set(xs)
+        numeric = method == "numeric" or (method == "auto" and not free)
+        if numeric and free:
+            raise ArgumentError(f"`values` must give numbers for {sorted(free, key=str)} for "
+                                "the numeric method.")
+        solver = _solve_numeric if numeric else _solve_symbolic
+        return Equilibrium(self, xs, subs, *solver(A, b, xs, names))
+
+
+def _solve_symbolic(A, b, xs, names):
+    def zero(e):
+        return sp.simplify(e).is_zero
+
+    _, pivots = A.T.rref(iszerofunc=zero)
+    rows = list(pivots)
+    sub_A = A.extract(rows, list(range(A.cols)))
+    sub_b = b.extract(rows, [0])
+    (sol,) = sp.linsolve((sub_A, sub_b), xs)
+    full = {x: sp.simplify(v) for x, v in zip(xs, sol, strict=True)}
+    frees = set(xs) & set().union(*(v.free_symbols for v in full.values()))
+    conditions = []
+    for i in range(A.rows):
+        if i in rows:
+            continue
+        residual = sp.simplify((A.row(i) * sp.Matrix(list(sol)))[0] - b[i])
+        if residual != 0:
+            if residual.is_number:
+                raise EquilibriumError(
+                    f"no equilibrium: the equation '{names[i]}' reduces to {residual} = 0 "
+                    "whatever the connection actions; the given actions cannot be balanced "
+                    "(a mechanism, or a missing connection).")
+            conditions.append((names[i], residual))
+    return full, frees, len(rows), conditions
+
+
+def _solve_numeric(A, b, xs, names):
+    An = np.array(A.tolist(), dtype=float)
+    bn = np.array(b.tolist(), dtype=float).reshape(-1)
+    n = len(xs)
+    if An.size == 0:
+        return {x: 0.0 for x in xs}, set(xs), 0, []
+    scale = max(np.abs(An).max(), 1e-300)
+    _, _, piv = scipy.linalg.qr(An.T, pivoting=True, mode="economic")
+    s = np.linalg.svd(An, compute_uv=False)
+    tol = max(An.shape) * np.finfo(float).eps * 1e3 * scale
+    r = int(np.sum(s > tol))
+    rows = sorted(piv[:r])
+    x, *_ = np.linalg.lstsq(An[rows], bn[rows], rcond=None)
+    bscale = max(np.abs(bn).max(), np.abs(An).max() * np.abs(x).max() if n else 0, 1e-300)
+    bad = []
+    for i in range(An.shape[0]):
+        if i not in rows:
+            res = float(An[i] @ x - bn[i])
+            if abs(res) > 1e-9 * bscale:
+                bad.append(f"'{names[i]}' (off by {res:.6g})")
+    if bad:
+        raise EquilibriumError(
+            "no equilibrium: the given actions cannot be balanced by the connections; the "
+            f"equations {', '.join(bad)} cannot be satisfied whatever the unknowns "
+            "(a mechanism, or a missing connection).")
+    if r < n:
+        null = scipy.linalg.null_space(An[rows]) if r else np.eye(n)
+        frees = {xs[j] for j in range(n) if np.abs(null[j]).max() > 1e-9}
+    else:
+        frees = set()
+    return {xv: float(v) for xv, v in zip(xs, x, strict=True)}, frees, r, []
+
+
+class Equilibrium:
+    """The solution of a statics problem (see :meth:`Statics.solve`).
+
+    Attributes
+    ----------
+    values : dict
+        Value of each *determined* unknown (symbolic or float).
+    undetermined : tuple
+        The unknowns the equations of statics leave free (hyperstatic system).
+    hyperstaticity : int
+        Degree of hyperstaticity h = (number of unknowns) - rank.
+    rank : int
+        Rank of the equations in the unknowns.
+    conditions : tuple
+        ``(equation, expression)``: what the given actions must satisfy (= 0) for the
+        equilibrium to exist; non-empty for a mechanism under a general symbolic load.
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> from rigidmech.actions import Contact, Force
+    >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+    >>> st = Statics(R0)
+    >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+    >>> st.act(Force(on=box, vector=-10 * R0.j, at=R0.point("G", 0, 1, 0)))
+    >>> print(st.solve())
+    Equilibrium of 1 body: 1 unknown, rank 1, isostatic
+      N_A = 10.0
+    """
+
+    __slots__ = ("_statics", "_unknowns", "_subs", "_full", "_free", "_rank", "_conditions")
+
+    def __init__(self, statics, unknowns, subs, full, free, rank, conditions):
+        self._statics, self._unknowns, self._subs = statics, tuple(unknowns), subs
+        self._full, self._free, self._rank = full, free, rank
+        self._conditions = tuple(conditions)
+
+    unknowns = property(lambda self: self._unknowns, doc="All the unknowns solved for.")
+    rank = property(lambda self: self._rank, doc="Rank of the equations.")
+    conditions = property(lambda self: self._conditions,
+                          doc="Conditions on the given actions (mechanism).")
+
+    @property
+    def values(self) -> dict:
+        """Values of the determined unknowns."""
+        return {x: v for x, v in self._full.items() if x not in self._free}
+
+    @property
+    def undetermined(self) -> tuple:
+        """The unknowns left undetermined by statics (in the order of the unknowns)."""
+        return tuple(x for x in self._unknowns if x in self._free)
+
+    @property
+    def hyperstaticity(self) -> int:
+        """Degree of hyperstaticity: number of unknowns minus rank."""
+        return len(self._unknowns) - self._rank
+
+    @property
+    def is_mechanism(self) -> bool:
+        """True if the equilibrium requires conditions on the given actions."""
+        return bool(self._conditions)
+
+    def solution(self) -> dict:
+        """One solution for every unknown: the undetermined ones are free symbols
+        (symbolic path) or take the least-norm values (numeric path)."""
+        return dict(self._full)
+
+    def residual(self, body) -> Torsor:
+        """Sum of all the action torsors on ``body`` at the solution (zero at equilibrium)."""
+        O = self._statics.reference.origin
+        sub = {**self._subs, **self._full}
+        total = sum(self._statics.torsors_on(body), Torsor.zero(O)).at(O)
+        return total.applyfunc(lambda e: sp.sympify(e).xreplace(sub))
+
+    def __str__(self):
+        nb = len(self._statics.bodies)
+        kind = ("isostatic" if self.hyperstaticity == 0
+                else f"hyperstatic of degree {self.hyperstaticity}")
+        lines = [f"Equilibrium of {nb} bod{'y' if nb == 1 else 'ies'}: "
+                 f"{len(self._unknowns)} unknown{'s' * (len(self._unknowns) != 1)}, "
+                 f"rank {self._rank}, {kind}"]
+        lines += [f"  {x} = {v}" for x, v in self.values.items()]
+        if self._free:
+            lines.append("  undetermined: " + ", ".join(str(x) for x in self.undetermined))
+        for name, expr in self._conditions:
+            lines.append(f"  condition ({name}): {expr} = 0")
+        return "\n".join(lines)
+
+    def __repr__(self):
+        return (f"Equilibrium(unknowns={len(self._unknowns)}, rank={self._rank}, "
+                f"hyperstaticity={self.hyperstaticity}, conditions={len(self._conditions)})")
