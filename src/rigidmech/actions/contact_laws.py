@@ -303,7 +303,7 @@ class Contact:
         Unit tangent t (perpendicular to n) along which friction may act; needed with
         ``friction``. The planar contact of the book's plane problems.
     friction : Coulomb, optional
-        Without it the contact is frictionless (T = 0).
+        Without it (or with f_s = 0) the contact is frictionless: T = 0, no unknown T.
     rolling : number, optional
         Rolling-resistance coefficient delta (a length); the rolling couple is along
         ``rolling_axis`` r.
@@ -347,6 +347,8 @@ class Contact:
                                 "which the friction force acts; got None.")
         if tangent is not None:
             _check_vector(tangent, "tangent")
+        if friction is not None and friction.static.is_zero:
+            friction = None                   # f_s = 0: frictionless, no tangential unknown
         self._tangent, self._friction = tangent, friction
         if rolling is not None and footprint is not None:
             raise ArgumentError("give at most one of `rolling` and `footprint`; got both.")

@@ -289,7 +289,8 @@ def _solve_symbolic(A, b, xs, names):
     sub_b = b.extract(rows, [0])
     (sol,) = sp.linsolve((sub_A, sub_b), xs)
     full = {x: sp.simplify(v) for x, v in zip(xs, sol, strict=True)}
-    frees = set(xs) & set().union(*(v.free_symbols for v in full.values()))
+    params = set(xs) & set().union(*(v.free_symbols for v in full.values()))
+    frees = {x for x, v in full.items() if v.free_symbols & params}
     conditions = []
     for i in range(A.rows):
         if i in rows:
