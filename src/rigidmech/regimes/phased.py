@@ -347,7 +347,8 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
         if res.status == 1:
             fired = min((i for i in range(len(guards)) if len(res.t_events[i])
                          and res.t_events[i][-1] == t_end), default=None)
-        phases.append(Phase(regime.name, t, t_end, tuple(y), tuple(y_end),
+        phases.append(Phase(regime.name, t, t_end, tuple(float(v) for v in y),
+                            tuple(float(v) for v in y_end),
                             None if fired is None else guards[fired].name, res))
         if fired is None:
             break
