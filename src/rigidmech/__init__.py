@@ -5,14 +5,15 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, inertia, ode, scenes
+from . import actions, inertia, ode, regimes, scenes, statics
 from . import actions as joints
-from .actions import Couple, Force, Spring, gravity, power
+from .actions import Contact, Coulomb, Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
 from .kinematics import KinematicTorsor, Solid, kinematic_torsor
 from .kinetics import Body
 from .lagrange import lagrange_equations
+from .statics import Catenary, Statics
 from .torsors import (
     Domain,
     Resolution,
@@ -61,3 +62,4 @@ __all__ = [
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
 ]
+__all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]

@@ -20,4 +20,5 @@ from .equilibrium import Equilibrium, EquilibriumError, Statics
 from .limits import Limit, limiting_equilibrium
 
 __all__ = ["Catenary", "ParabolicCable", "capstan_ratio", "holding_force", "hoisting_force",
-           "belt_slip_torque", "Statics", "Equilibrium", "EquilibriumError", "limiting_equilibrium", "Limit"]
+           "belt_slip_torque", "Statics", "Equilibrium", "EquilibriumError",
+           "limiting_equilibrium", "Limit"]
