@@ -22,6 +22,7 @@ from .. import ode
 from .._core.errors import NumericalError, RigidmechError, SceneError
 from .catalogue import catalogue, get, names
 from .pipeline import run
+from .regime_scenes import regime_scene_names, run_regime_scene
 
 __all__ = ["main", "DEFAULT_SCENE"]
 
@@ -118,6 +119,9 @@ def _list_scenes(out):
 
 
 def _run(args, out):
+    if args.name in regime_scene_names():  # motions with regime changes print their phases
+        _run_regimes(args, out)
+        return
     get(args.name)  # unknown scene: fail before anything else
     params = {}
     for name, value in args.param:
@@ -128,6 +132,21 @@ def _run(args, out):
                  method=args.method, rtol=args.rtol, atol=args.atol, step=args.step,
                  plot=args.plot)
     print(report.summary(pretty=args.pretty), file=out)
+
+
+def _run_regimes(args, out):
+    for option in ("method", "step", "atol"):
+        if getattr(args, option) is not None:
+            raise SceneError(f"--{option} is not an option of the regime scene {args.name!r} "
+                             "(integrated phase by phase with dop853).")
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    report = run_regime_scene(args.name, t_end=args.t_end, params=params, q0=args.q0,
+                              u0=args.u0, plot=args.plot)
+    print(report.summary(), file=out)
 
 
 def main(argv=None) -> int:
