@@ -295,3 +295,20 @@ def test_numeric_and_symbolic_routes_agree_on_the_beam():
     for x, v in num.values.items():
         assert math.isclose(v, float(sym.values[x].subs(vals)), rel_tol=1e-12, abs_tol=1e-12)
     np.testing.assert_allclose(num.values[S("N_B")], 100 * 1 / 4 + 20 * 4 / 2, rtol=1e-12)
+
+
+def test_limit_that_is_not_reached_in_the_interval():
+    # the box of the cases above is pushed at most by P = 3 < f W = 4 < W a / h = 5
+    P = sp.Symbol("P", real=True)
+    R0 = rm.Frame("R0")
+    box = rm.Body("box", frame=R0)
+    st_ = Statics(R0)
+    st_.connect(R0, box, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                 friction=Coulomb(0.4), footprint=0.5, rolling_axis=R0.k),
+                label="floor")
+    st_.act(Force(on=box, vector=-10.0 * R0.j, at=R0.point("G", 0, 0.5, 0)))
+    st_.act(Force(on=box, vector=P * R0.i, at=R0.point("H", -0.5, 1.0, 0)))
+    lim = limiting_equilibrium(st_, P, (0.0, 3.0), samples=20)
+    assert lim.value is None and lim.kinds == () and lim.by_kind == {"sliding": None,
+                                                                       "tipping": None}
+    assert str(lim) == "the equilibrium holds for every P of the interval"

@@ -58,16 +58,23 @@ class Limit:
     See :func:`limiting_equilibrium`.
     """
 
-    __slots__ = ("parameter", "value", "kinds", "contacts", "by_kind")
+    __slots__ = ("_parameter", "_value", "_kinds", "_contacts", "_by_kind")
 
     def __init__(self, parameter, value, kinds, contacts, by_kind):
-        self.parameter, self.value = parameter, value
-        self.kinds, self.contacts, self.by_kind = tuple(kinds), tuple(contacts), dict(by_kind)
+        self._parameter, self._value = parameter, value
+        self._kinds, self._contacts, self._by_kind = tuple(kinds), tuple(contacts), dict(by_kind)
+
+    parameter = property(lambda self: self._parameter, doc="The parameter that varies.")
+    value = property(lambda self: self._value, doc="Where the equilibrium breaks first.")
+    kinds = property(lambda self: self._kinds, doc="What breaks first.")
+    contacts = property(lambda self: self._contacts, doc="The contacts at their limit.")
+    by_kind = property(lambda self: dict(self._by_kind),
+                       doc="Limit of each kind of law alone (a fresh dict).")
 
     def __str__(self):
-        if self.value is None:
-            return f"the equilibrium holds for every {self.parameter} of the interval"
-        others = ", ".join(f"{k} at {v:.12g}" for k, v in self.by_kind.items()
+        if self._value is None:
+            return f"the equilibrium holds for every {self._parameter} of the interval"
+        others = ", ".join(f"{k} at {v:.12g}" for k, v in self._by_kind.items()
                            if v is not None and k not in self.kinds)
         text = (f"{' and '.join(self.kinds)} starts at {self.parameter} = {self.value:.12g} "
                 f"(contacts {', '.join(self.contacts)})")
