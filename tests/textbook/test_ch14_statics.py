@@ -309,6 +309,6 @@ def test_limit_that_is_not_reached_in_the_interval():
     st_.act(Force(on=box, vector=-10.0 * R0.j, at=R0.point("G", 0, 0.5, 0)))
     st_.act(Force(on=box, vector=P * R0.i, at=R0.point("H", -0.5, 1.0, 0)))
     lim = limiting_equilibrium(st_, P, (0.0, 3.0), samples=20)
-    assert lim.value is None and lim.kinds == () and lim.by_kind == {"sliding": None,
-                                                                       "tipping": None}
+    assert lim.value is None and lim.kinds == ()
+    assert lim.by_kind == {"sliding": None, "tipping": None, "lift-off": None}
     assert str(lim) == "the equilibrium holds for every P of the interval"
