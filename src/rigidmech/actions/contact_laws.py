@@ -83,9 +83,9 @@ class Coulomb:
     Parameters
     ----------
     static : number or sympy expression
-        f_s >= 0, the bound of |T|/N while the contact sticks.
+        f_s >= 0, the bound of ``|T|/N`` while the contact sticks.
     kinetic : number or sympy expression, optional
-        f_k >= 0, the ratio |T|/N while it slides (default f_s). f_k > f_s is refused.
+        f_k >= 0, the ratio ``|T|/N`` while it slides (default f_s). f_k > f_s is refused.
 
     Raises
     ------
@@ -141,7 +141,7 @@ class Coulomb:
     def in_cone(self, action, normal: Vector, *, rtol: float = 1e-12) -> bool:
         """Whether the resultant of ``action`` (a Torsor or a Vector) lies inside the friction
         cone of axis ``normal`` (unit, pointing into the body acted on): N >= 0 and
-        |T| <= f_s N, with a relative tolerance ``rtol`` on |R|.
+        ``|T| <= f_s N``, with a relative tolerance ``rtol`` on ``|R|``.
 
         Raises
         ------
@@ -172,7 +172,7 @@ class Coulomb:
         return N >= -tol and max(T2, 0.0) ** 0.5 <= f * N + tol
 
     def sliding_action(self, normal_force, sliding_velocity: Vector, at: Point) -> Torsor:
-        """The tangential action while sliding: the slider {-f_k N v_s/|v_s| ; 0} at the
+        """The tangential action while sliding: the slider ``{-f_k N v_s/|v_s| ; 0}`` at the
         contact point ``at`` (ch. 13.1.2).
 
         Raises
@@ -234,8 +234,8 @@ class _Resistance:
 
 class RollingResistance(_Resistance):
     """Resistance to rolling of coefficient delta, a length (ch. 13.1.3): while the body
-    rolls with the rolling rotation omega_r the couple is -delta N omega_r/|omega_r|, and
-    |M_r| <= delta N otherwise.
+    rolls with the rolling rotation omega_r the couple is ``-delta N omega_r/|omega_r|``, and
+    ``|M_r| <= delta N`` otherwise.
 
     Examples
     --------
@@ -258,7 +258,7 @@ class RollingResistance(_Resistance):
 
 class PivotingResistance(_Resistance):
     """Resistance to pivoting (spinning) of coefficient eta, a length (ch. 13.1.3): the couple
-    about the normal opposes the pivoting rotation with |M_p| = eta N, bounded by it otherwise.
+    about the normal opposes the pivoting rotation with ``|M_p| = eta N``, bounded by it otherwise.
 
     Examples
     --------
@@ -310,7 +310,7 @@ class Contact:
     footprint : number, optional
         Half-width a of a flat base centred on I (a box on a floor, seen in its plane): the
         contact pressure may move its resultant anywhere on the base, i.e. a couple
-        |M_r| <= a N about ``rolling_axis``; when it reaches a N the body **tips** about an
+        ``|M_r| <= a N`` about ``rolling_axis``; when it reaches a N the body **tips** about an
         edge of the base. Mathematically a rolling resistance of coefficient a.
     rolling_axis : Vector, optional
         Unit axis r of the rolling couple (perpendicular to n), needed with ``rolling`` or

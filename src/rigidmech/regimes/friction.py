@@ -63,7 +63,7 @@ def coulomb_oscillator(*, mass, stiffness, friction: Coulomb, normal_force, x0, 
 
     Regimes ``"slide+"`` (x' > 0: m x'' = -k x - f_k N), ``"slide-"`` (x' < 0:
     m x'' = -k x + f_k N) and ``"stick"`` (at rest). When the velocity vanishes the mass
-    sticks if the spring force is within the static bound, |k x| <= f_s N, otherwise it
+    sticks if the spring force is within the static bound, ``|k x| <= f_s N``, otherwise it
     slides back.
 
     Notes
@@ -71,7 +71,7 @@ def coulomb_oscillator(*, mass, stiffness, friction: Coulomb, normal_force, x0, 
     Each half-cycle lasts pi/omega, omega = sqrt(k/m), and is a half-oscillation about
     x = -+ f_k N/k: the amplitude decreases by 2 f_k N / k per half-cycle, 4 f_k N / k per
     cycle, linearly (not exponentially as with viscous damping); the mass stops at the first
-    turning point where |x| <= f_s N / k.
+    turning point where ``|x| <= f_s N / k``.
 
     Examples
     --------
@@ -177,7 +177,7 @@ def block_on_wagon(*, acceleration, friction: Coulomb, g=9.81, t_end, rtol=1e-12
     the wagon's frame, with the inertial force of entrainment -m a(t).) State
     y = (x_r, x_r'), the position of the block relative to the wagon.
 
-    Regimes ``"stick"`` (while |a(t)| <= f_s g), ``"slide+"`` / ``"slide-"`` (relative
+    Regimes ``"stick"`` (while ``|a(t)| <= f_s g``), ``"slide+"`` / ``"slide-"`` (relative
     velocity > 0 or < 0: x_r'' = -a(t) -+ f_k g).
 
     Examples

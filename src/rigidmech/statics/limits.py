@@ -3,8 +3,8 @@
 
 A body held by contacts (:class:`~rigidmech.actions.contact_laws.Contact`) is at rest while
 the equations of statics have a solution that satisfies the laws of every contact: N >= 0
-(one-sided contact), |T| <= f_s N (Coulomb), |M_r| <= delta N (rolling resistance, or a flat
-base of half-width a: tipping), |M_p| <= eta N (pivoting). With one tangent per contact these
+(one-sided contact), ``|T| <= f_s N`` (Coulomb), ``|M_r| <= delta N`` (rolling resistance, or a flat
+base of half-width a: tipping), ``|M_p| <= eta N`` (pivoting). With one tangent per contact these
 laws are linear inequalities, so the existence of an equilibrium at a given value of a
 parameter p (a load, an angle) is a linear feasibility problem. Its **margin**
 
