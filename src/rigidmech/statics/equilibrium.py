@@ -136,8 +136,17 @@ class Statics:
         connection : Joint, Contact or any object with ``action_torsor(label)``
             returning ``(Torsor, unknowns)``.
         label : str, optional
-            Suffix of the unknowns' names (default: ``"12"``-style from the connection's
-            rank).
+            Suffix of the unknowns' names (default: the connection's rank, ``"1"``, ...).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.unknowns
+        (N_A,)
         """
         _check_body(first, "first")
         _check_body(second, "second")
@@ -158,7 +167,19 @@ class Statics:
 
     def act(self, action: Action) -> None:
         """Add a given action (:class:`~rigidmech.actions.Force`, ``Couple``, ``gravity``,
-        ``Spring``): its torsors on the bodies are asked when the equations are written."""
+        ``Spring``): its torsors on the bodies are asked when the equations are written.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.act(Force(on=box, vector=-3 * R0.j, at=R0.origin))
+        >>> st.solve().values
+        {N_A: 3.0}
+        """
         if not isinstance(action, Action):
             raise ArgumentTypeError(
                 f"`action` must be an Action (Force, Couple, gravity, Spring); got "
@@ -166,7 +187,19 @@ class Statics:
         self._loads.append((None, action))
 
     def load(self, body, torsor: Torsor) -> None:
-        """Add the action torsor ``torsor`` exerted on ``body``."""
+        """Add the action torsor ``torsor`` exerted on ``body``.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.load(box, rm.slider(-2 * R0.j, R0.origin))
+        >>> st.solve().values
+        {N_A: 2.0}
+        """
         if not isinstance(body, Solid):
             raise ArgumentTypeError(f"`body` must be a Body; got {type(body).__name__}.")
         if not isinstance(torsor, Torsor):
@@ -177,18 +210,54 @@ class Statics:
     def distributed_load(self, body, density, domain) -> Torsor:
         """Add a distributed load, a field of sliders of ``density`` (force per unit length,
         area or volume) over ``domain`` (:class:`~rigidmech.torsors.Domain`), reduced by
-        :func:`~rigidmech.torsors.torsor_of_field` (ch. 5.3.2); returns its torsor."""
+        :func:`~rigidmech.torsors.torsor_of_field` (ch. 5.3.2); returns its torsor.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> import sympy as sp
+        >>> from rigidmech.torsors import Domain
+        >>> x = sp.Symbol("x")
+        >>> st.distributed_load(box, -5 * R0.j, Domain(R0, x * R0.i, (x, 0, 2)))
+        Torsor(resultant=-10*R0.j, moment=-10*R0.k, at=O_R0)
+        """
         T = torsor_of_field(density, domain)
         self.load(body, T)
         return T
 
     @property
     def unknowns(self) -> tuple:
-        """The unknown components of the connection actions, connection by connection."""
+        """The unknown components of the connection actions, connection by connection.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> from rigidmech.actions import Pivot
+        >>> st.connect(R0, box, Pivot(at=R0.origin, axis=R0.k), label="O")
+        >>> st.unknowns
+        (X_O, Y_O, Z_O, L_O, M_O)
+        """
         return tuple(u for c in self._connections for u in c[5])
 
     def contact_conditions(self) -> list:
-        """The inequalities of the contacts' laws, ``(kind, label, expr)`` with expr >= 0."""
+        """The inequalities of the contacts' laws, ``(kind, label, expr)`` with expr >= 0.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.contact_conditions()
+        [('lift-off', 'A', N_A)]
+        """
         out = []
         for _, _, conn, label, _, _ in self._connections:
             if callable(getattr(conn, "conditions", None)):
@@ -197,7 +266,18 @@ class Statics:
 
     def torsors_on(self, body) -> list:
         """Every action torsor exerted on ``body``: connection actions (with unknowns) and
-        given actions."""
+        given actions.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.torsors_on(box)
+        [Torsor(resultant=N_A*R0.j, moment=0, at=O_R0)]
+        """
         out = []
         for first, second, _, _, T, _ in self._connections:
             if second is body:
@@ -214,7 +294,19 @@ class Statics:
     def equations(self) -> list:
         """The equations of statics ``(body, component, expression = 0)``: the six components,
         in the reference's basis, of the sum of the torsors on each body reduced at the
-        reference's origin (ch. 14.2)."""
+        reference's origin (ch. 14.2).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.act(Force(on=box, vector=-3 * R0.j, at=R0.origin))
+        >>> [(c, e) for _, c, e in st.equations() if e != 0]
+        [('resultant along j', N_A - 3)]
+        """
         O, R0 = self._reference.origin, self._reference
         rows = []
         for body in self._bodies:
@@ -244,6 +336,18 @@ class Statics:
         ------
         EquilibriumError
             If numbers violate an equation that no unknown enters (no equilibrium).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> W = rm.constants("W", positive=True)
+        >>> st.act(Force(on=box, vector=-W * R0.j, at=R0.origin))
+        >>> st.solve().values, st.solve(values={W: 2}).values
+        ({N_A: W}, {N_A: 2.0})
         """
         if method not in ("auto", "symbolic", "numeric"):
             raise ArgumentError(
@@ -383,31 +487,106 @@ class Equilibrium:
 
     @property
     def values(self) -> dict:
-        """Values of the determined unknowns."""
+        """Values of the determined unknowns.
+
+        Examples
+        --------
+        A bar on three supports: statics finds none of the three reactions alone.
+
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
+        >>> st = Statics(R0)
+        >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
+        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...                label=label)
+        >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
+        >>> eq = st.solve()
+        >>> eq.values, eq.undetermined, eq.hyperstaticity
+        ({}, (N_A, N_B, N_C), 1)
+        """
         return {x: v for x, v in self._full.items() if x not in self._free}
 
     @property
     def undetermined(self) -> tuple:
-        """The unknowns left undetermined by statics (in the order of the unknowns)."""
+        """The unknowns left undetermined by statics (in the order of the unknowns).
+
+        Examples
+        --------
+        See :attr:`values`.
+        """
         return tuple(x for x in self._unknowns if x in self._free)
 
     @property
     def hyperstaticity(self) -> int:
-        """Degree of hyperstaticity: number of unknowns minus rank."""
+        """Degree of hyperstaticity: number of unknowns minus rank.
+
+        Examples
+        --------
+        See :attr:`values`.
+        """
         return len(self._unknowns) - self._rank
 
     @property
     def is_mechanism(self) -> bool:
-        """True if the equilibrium requires conditions on the given actions."""
+        """True if the equilibrium requires conditions on the given actions.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Force, Pivot
+        >>> F = rm.constants("F", positive=True)
+        >>> R0 = rm.Frame("R0"); lever = rm.Body("lever", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, lever, Pivot(at=R0.origin, axis=R0.k), label="O")
+        >>> st.act(Force(on=lever, vector=-F * R0.j, at=R0.point("A", 1, 0, 0)))
+        >>> eq = st.solve()
+        >>> eq.is_mechanism, eq.conditions
+        (True, (('lever: moment about k', -F),))
+        """
         return bool(self._conditions)
 
     def solution(self) -> dict:
         """One solution for every unknown: the undetermined ones are free symbols
-        (symbolic path) or take the least-norm values (numeric path)."""
+        (symbolic path) or take the least-norm values (numeric path).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
+        >>> st = Statics(R0)
+        >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
+        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...                label=label)
+        >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
+        >>> eq = st.solve()
+        >>> {x: round(v, 12) for x, v in eq.solution().items()}      # least norm
+        {N_A: 2.0, N_B: 2.0, N_C: 2.0}
+        >>> st.solve(method="symbolic").solution()
+        {N_A: N_C, N_B: 6 - 2*N_C, N_C: N_C}
+        """
         return dict(self._full)
 
     def residual(self, body) -> Torsor:
-        """Sum of all the action torsors on ``body`` at the solution (zero at equilibrium)."""
+        """Sum of all the action torsors on ``body`` at the solution (zero at equilibrium).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Force
+        >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
+        >>> st = Statics(R0)
+        >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
+        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...                label=label)
+        >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
+        >>> eq = st.solve()
+        >>> R = eq.residual(bar)
+        >>> R.resultant.is_close(rm.Vector.zero(), atol=1e-12), R.moment.is_close(
+        ...     rm.Vector.zero(), atol=1e-12)
+        (True, True)
+        """
         O = self._statics.reference.origin
         sub = {**self._subs, **self._full}
         total = sum(self._statics.torsors_on(body), Torsor.zero(O)).at(O)
