@@ -3,6 +3,7 @@
 import math
 
 import matplotlib
+import matplotlib.pyplot
 import numpy as np
 import pytest
 
@@ -47,6 +48,7 @@ def test_motion_evaluates_prints_and_plots():
     assert m.t.shape[0] == m.y.shape[1]
     ax = m.plot(component=0, label="x")
     assert ax.get_ylabel() == "x" and len(ax.get_lines()) >= 4
+    matplotlib.pyplot.close("all")
 
 
 def test_bad_input():

@@ -83,11 +83,25 @@ class Guard:
     direction = property(lambda self: self._direction, doc="Direction of the crossings.")
 
     def next_regime(self, t, y):
-        """The regime that follows, from the state at the switch."""
+        """The regime that follows, from the state at the switch.
+
+        Examples
+        --------
+        >>> g = Guard("stops", lambda t, y: y[1], target=lambda t, y: "a" if y[0] > 0 else "b")
+        >>> g.next_regime(1.0, [2.0, 0.0])
+        'a'
+        """
         return self._target(t, y) if callable(self._target) else self._target
 
     def reset(self, t, y):
-        """The state the next phase starts from."""
+        """The state the next phase starts from.
+
+        Examples
+        --------
+        >>> g = Guard("stops", lambda t, y: y[1], reset=lambda t, y: [y[0], 0.0])
+        >>> g.reset(1.0, [2.0, 1e-17])
+        array([2., 0.])
+        """
         return np.array(self._reset(t, y) if self._reset else y, dtype=float)
 
     def __repr__(self):
@@ -128,7 +142,14 @@ class Regime:
     guards = property(lambda self: self._guards, doc="The guards that end the regime.")
 
     def rhs(self, t, y):
-        """dy/dt in this regime."""
+        """dy/dt in this regime.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> Regime("rest").rhs(0.0, np.array([1.0, 2.0]))
+        array([0., 0.])
+        """
         return np.zeros_like(y) if self._rhs is None else self._rhs(t, y)
 
     def __repr__(self):
@@ -174,7 +195,23 @@ class PhasedMotion:
 
     Examples
     --------
-    See :func:`integrate_phases`.
+    >>> import numpy as np
+    >>> fall = Regime("fall", lambda t, y: np.array([y[1], -10.0]),
+    ...               [Guard("lands", lambda t, y: y[0], target="rest", direction=-1,
+    ...                      reset=lambda t, y: [0.0, 0.0])])
+    >>> m = integrate_phases([fall, Regime("rest")], "fall", (0.0, 2.0), [5.0, 0.0])
+    >>> m.regimes, m.switch_times                    # lands at sqrt(2 h / g) = 1
+    (('fall', 'rest'), (1.0,))
+    >>> m.phases[0].ended_by, m(0.5).round(6)        # state at t = 0.5 from dense output
+    ('lands', array([ 3.75, -5.  ]))
+    >>> m.t[0], m.y.shape[0]
+    (np.float64(0.0), 2)
+    >>> ax = m.plot(component=0, label="height")     # matplotlib axes
+    >>> import matplotlib.pyplot as plt; plt.close("all")
+    >>> print(m.table())
+    phase  regime  start  end  ended by
+    1      fall    0      1    lands
+    2      rest    1      2    -
     """
 
     __slots__ = ("_phases", "_names")

@@ -128,7 +128,22 @@ class RegimeReport:
         self.t_end, self.motion, self.seconds = t_end, motion, seconds
 
     def summary(self) -> str:
-        """Lines for a terminal: scene, parameters, the table of phases, the final state."""
+        """Lines for a terminal: scene, parameters, the table of phases, the final state.
+
+        Examples
+        --------
+        >>> print(run_regime_scene("coulomb-oscillator", t_end=2.0).summary())
+        ... # doctest: +ELLIPSIS
+        Mass on a spring with dry friction: stick-slip (coulomb-oscillator, book ch. 21.4)
+        state y = (x, x_dot); m=1, k=4, N=2, fs=0.12, fk=0.1
+        initial q0 = [1.0], u0 = [0.0], t = 0 .. 2
+        phases (2):
+          phase  regime  start        end          ended by
+          1      slide-  0            1.570796327  stops
+          2      slide+  1.570796327  2            -
+        final state at t = 2: [...] (slide+)
+        integrated in ... ms
+        """
         sc = self.scene
         params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
         last = self.motion.phases[-1]
