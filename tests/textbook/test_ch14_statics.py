@@ -312,3 +312,32 @@ def test_limit_that_is_not_reached_in_the_interval():
     assert lim.value is None and lim.kinds == ()
     assert lim.by_kind == {"sliding": None, "tipping": None, "lift-off": None}
     assert str(lim) == "the equilibrium holds for every P of the interval"
+
+
+@pytest.mark.parametrize("f_floor, f_top, contact, expected", [
+    # block 1 (W1 = 30) on the floor, block 2 (W2 = 10) on block 1, P pulls block 2
+    # horizontally: block 2 slides on block 1 at P = f_top W2, the pair slides on the floor at
+    # P = f_floor (W1 + W2), whichever is smaller (ch. 14.4.2, two bodies)
+    pytest.param(0.3, 0.5, "top", 5.0, id="top-block-slides"),
+    pytest.param(0.1, 0.5, "floor", 4.0, id="both-slide-on-the-floor"),
+])
+def test_ch14_two_stacked_blocks_which_interface_slides(f_floor, f_top, contact, expected):
+    P = sp.Symbol("P", real=True)
+    R0 = rm.Frame("R0")
+    b1, b2 = rm.Body("block1", frame=R0), rm.Body("block2", frame=R0)
+    st_ = Statics(R0)
+    # wide bases (half-width 10): no tipping in the range searched
+    st_.connect(R0, b1, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                friction=Coulomb(f_floor), footprint=10, rolling_axis=R0.k),
+                label="floor")
+    st_.connect(b1, b2, Contact(at=R0.point("I", 0, 1, 0), normal=R0.j, tangent=R0.i,
+                                friction=Coulomb(f_top), footprint=10, rolling_axis=R0.k),
+                label="top")
+    st_.act(Force(on=b1, vector=-30.0 * R0.j, at=R0.point("G1", 0, 0.5, 0)))
+    st_.act(Force(on=b2, vector=-10.0 * R0.j, at=R0.point("G2", 0, 1.5, 0)))
+    st_.act(Force(on=b2, vector=P * R0.i, at=R0.point("H", 0, 1.5, 0)))
+    eq = st_.solve(values={P: 1.0})
+    assert eq.hyperstaticity == 0 and len(st_.bodies) == 2
+    lim = limiting_equilibrium(st_, P, (0.0, 20.0))
+    assert lim.kinds == ("sliding",) and lim.contacts == (contact,)
+    assert math.isclose(lim.value, expected, rel_tol=1e-9)
