@@ -12,7 +12,15 @@ import numpy as np
 import pytest
 
 from rigidmech.actions import Coulomb
-from rigidmech.regimes import block_on_wagon, coulomb_oscillator, cylinder_on_incline, pushed_box
+from rigidmech.regimes import (
+    Guard,
+    Regime,
+    block_on_wagon,
+    coulomb_oscillator,
+    cylinder_on_incline,
+    integrate_phases,
+    pushed_box,
+)
 
 TOL = 1e-9
 
@@ -162,3 +170,36 @@ def test_ch24_box_pushed_on_a_floor_slides_or_tips_first(f, h, first, P_limit):
                         push=lambda t: c * t, friction=Coulomb(f), g=10.0, t_end=4.0)
     assert motion.regimes[:2] == ("rest", first)
     assert math.isclose(motion.switch_times[0], P_limit / c, rel_tol=TOL)
+
+
+@pytest.mark.parametrize("theta0", [
+    pytest.param(0.05, id="from-near-the-top"),
+    pytest.param(0.5, id="from-30-degrees"),
+])
+def test_ch24_particle_leaves_a_smooth_sphere_contact_opens(theta0):
+    # a particle slides from rest on a smooth sphere of radius R: N/m = g cos(theta) -
+    # v^2/R with v^2 = 2 g R (cos(theta0) - cos(theta)), so the one-sided contact opens
+    # (N = 0) at cos(theta) = 2 cos(theta0) / 3; then free flight
+    g, R = 9.81, 2.0
+
+    def normal(t, y):                       # N/m, y = (x, z, vx, vz), centre at the origin
+        r = math.hypot(y[0], y[1])
+        return g * y[1] / r - (y[2] ** 2 + y[3] ** 2) / R
+
+    def on_sphere(t, y):
+        r = math.hypot(y[0], y[1])
+        n = normal(t, y)
+        return np.array([y[2], y[3], n * y[0] / r, -g + n * y[1] / r])
+
+    def flight(t, y):
+        return np.array([y[2], y[3], 0.0, -g])
+
+    regimes = [Regime("on the sphere", on_sphere,
+                      [Guard("contact opens", normal, target="flight", direction=-1)]),
+               Regime("flight", flight)]
+    y0 = [R * math.sin(theta0), R * math.cos(theta0), 0.0, 0.0]
+    motion = integrate_phases(regimes, "on the sphere", (0.0, 5.0), y0, rtol=1e-12,
+                              atol=1e-12)
+    assert motion.regimes == ("on the sphere", "flight")
+    x, z, _, _ = motion.phases[1].y_start
+    assert math.isclose(z / math.hypot(x, z), 2 * math.cos(theta0) / 3, rel_tol=TOL)
