@@ -158,6 +158,8 @@ def test_catenary_shape_is_a_curve_with_curvature_w_over_H_at_the_vertex():
                  id="negative-span"),
     pytest.param(dict(span=1.0, weight_per_length=0.0, length=2.0),
                  r"`weight_per_length` must be", id="weightless"),
+    pytest.param(dict(span=100.0, weight_per_length=10.0, horizontal_tension=1e-3),
+                 r"`horizontal_tension` must exceed", id="tension-too-small-overflows"),
 ])
 def test_catenary_bad_input(kwargs, match):
     with pytest.raises(ArgumentError, match=match):

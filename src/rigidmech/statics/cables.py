@@ -143,6 +143,10 @@ class Catenary:
             u = _solve_sinhc(math.sqrt((S - h) * (S + h)) / L)
             a = L / (2 * u)
             self._H = a * self._w
+        if L / (2 * a) > 700:
+            raise ArgumentError(
+                f"`horizontal_tension` must exceed w L / 1400 = {self._w * L / 1400!r} (beyond "
+                f"that the catenary's length overflows a float); got {self._H!r}.")
         self._a = a
         chord_term = 2 * a * math.sinh(L / (2 * a))
         self._x0 = L / 2 - a * math.asinh(h / chord_term)

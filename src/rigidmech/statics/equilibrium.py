@@ -391,7 +391,12 @@ def _solve_symbolic(A, b, xs, names):
     rows = list(pivots)
     sub_A = A.extract(rows, list(range(A.cols)))
     sub_b = b.extract(rows, [0])
-    (sol,) = sp.linsolve((sub_A, sub_b), xs)
+    solutions = sp.linsolve((sub_A, sub_b), xs)
+    if not solutions:        # independent rows are always solvable: a zero test went wrong
+        raise EquilibriumError(
+            "no equilibrium found: the equations of statics have no solution for the symbolic "
+            "data (sympy could not decide a pivot); substitute numbers with `values=`.")
+    (sol,) = solutions
     full = {x: sp.simplify(v) for x, v in zip(xs, sol, strict=True)}
     params = set(xs) & set().union(*(v.free_symbols for v in full.values()))
     frees = {x for x, v in full.items() if v.free_symbols & params}
