@@ -16,7 +16,8 @@ from .cables import (
     hoisting_force,
     holding_force,
 )
-from .equilibrium import Equilibrium, EquilibriumError, Statics
+from .equilibrium import Equilibrium, Statics
+from .errors import EquilibriumError
 from .limits import Limit, limiting_equilibrium
 
 __all__ = ["Catenary", "ParabolicCable", "capstan_ratio", "holding_force", "hoisting_force",

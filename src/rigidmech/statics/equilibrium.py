@@ -32,26 +32,18 @@ import numpy as np
 import scipy.linalg
 import sympy as sp
 
-from .._core.errors import ArgumentError, ArgumentTypeError, RigidmechError
+from .._core.errors import ArgumentError, ArgumentTypeError
 from ..actions import Action
 from ..kinematics import Solid
 from ..torsors import Torsor, torsor_of_field
 from ..vectors import Frame
+from .errors import EquilibriumError
+from .limits import Limit, limiting_equilibrium
 
 __all__ = ["Statics", "Equilibrium", "EquilibriumError"]
 
 _COMPONENTS = ("resultant along i", "resultant along j", "resultant along k",
                "moment about i", "moment about j", "moment about k")
-
-
-class EquilibriumError(RigidmechError, ValueError):
-    """The equations of statics have no solution: the given actions cannot be balanced.
-
-    Examples
-    --------
-    >>> issubclass(EquilibriumError, ValueError)
-    True
-    """
 
 
 def _check_body(s, argument):
@@ -381,6 +373,31 @@ class Statics:
                                 "the numeric method.")
         solver = _solve_numeric if numeric else _solve_symbolic
         return Equilibrium(self, xs, subs, *solver(A, b, xs, names))
+
+
+    def limit(self, parameter, interval, *, values=None, samples: int = 200) -> Limit:
+        """Where the equilibrium breaks as ``parameter`` runs over ``interval``, and how:
+        :func:`~rigidmech.statics.limits.limiting_equilibrium` on this problem.
+
+        Examples
+        --------
+        A block of weight 10 on a floor with f_s = 0.3, pulled horizontally by P at the
+        height of its contact point: it slides at P = 3.
+
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Contact, Coulomb, Force
+        >>> P = sp.Symbol("P")
+        >>> R0 = rm.Frame("R0"); block = rm.Body("block", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, block, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+        ...                               friction=Coulomb(0.3)), label="I")
+        >>> st.act(Force(on=block, vector=-10 * R0.j + P * R0.i, at=R0.origin))
+        >>> lim = st.limit(P, (0, 10))
+        >>> round(lim.value, 9), lim.kinds, lim.contacts
+        (3.0, ('sliding',), ('I',))
+        """
+        return limiting_equilibrium(self, parameter, interval, values=values, samples=samples)
 
 
 def _solve_symbolic(A, b, xs, names):

@@ -29,7 +29,7 @@ import sympy as sp
 from scipy.optimize import brentq, linprog
 
 from .._core.errors import ArgumentError, ArgumentTypeError
-from .equilibrium import EquilibriumError, Statics
+from .errors import EquilibriumError
 
 __all__ = ["limiting_equilibrium", "Limit"]
 
@@ -106,7 +106,7 @@ def _lp_margin(A, b, G, want_x=False):
     return (t, res.x[:-1] * scale) if want_x else t
 
 
-def limiting_equilibrium(statics: Statics, parameter, interval, *, values=None,
+def limiting_equilibrium(statics, parameter, interval, *, values=None,
                          samples: int = 200) -> Limit:
     """The first value of ``parameter`` in ``interval`` where the equilibrium of ``statics``
     breaks, and how (ch. 14.4).
@@ -149,7 +149,7 @@ def limiting_equilibrium(statics: Statics, parameter, interval, *, values=None,
     >>> from rigidmech.actions import Contact, Coulomb, Force
     >>> P = sp.Symbol("P")
     >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
-    >>> st = Statics(R0)
+    >>> st = rm.statics.Statics(R0)
     >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
     ...            friction=Coulomb(0.4), footprint=0.5, rolling_axis=R0.k), label="floor")
     >>> st.act(Force(on=box, vector=-10 * R0.j, at=R0.point("G", 0, 0.5, 0)))
@@ -158,7 +158,8 @@ def limiting_equilibrium(statics: Statics, parameter, interval, *, values=None,
     >>> round(lim.value, 8), lim.kinds, round(lim.by_kind["tipping"], 8)
     (4.0, ('sliding',), 5.0)
     """
-    if not isinstance(statics, Statics):
+    if not all(callable(getattr(statics, m, None)) for m in ("equations",
+                                                            "contact_conditions")):
         raise ArgumentTypeError(f"`statics` must be a Statics; got {type(statics).__name__}.")
     if not isinstance(parameter, sp.Symbol):
         raise ArgumentTypeError(f"`parameter` must be a sympy Symbol; got {parameter!r}.")
