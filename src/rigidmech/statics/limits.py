@@ -137,7 +137,11 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     Notes
     -----
     The value is as accurate as the linear programs (tolerances 1e-10 on the scaled
-    problem): about 1e-9 relative in practice.
+    problem): about 1e-9 relative in practice. The scan finds the first sign change of the
+    margin on ``samples`` intervals: a window of broken equilibrium narrower than one interval
+    may be missed. The margin is measured relative to the given loads, which must not all
+    vanish at the start of the interval. Contacts must have one tangent (plane problems):
+    the laws are then linear.
 
     Examples
     --------
