@@ -5,10 +5,10 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, inertia, ode, scenes
+from . import actions, inertia, ode, regimes, scenes, statics
 from . import actions as joints
 from ._core.version import __version__ as __version__
-from .actions import Couple, Force, Spring, gravity, power
+from .actions import Contact, Coulomb, Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
 from .kinematics import (
@@ -20,6 +20,7 @@ from .kinematics import (
 )
 from .kinetics import Body
 from .lagrange import lagrange_equations
+from .statics import Catenary, Statics
 from .torsors import (
     Domain,
     Resolution,
@@ -67,3 +68,4 @@ __all__ = [
     "ode", "scenes",
 ]
 __all__ += ["velocity_composition", "acceleration_composition"]
+__all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]

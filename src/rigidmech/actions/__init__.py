@@ -2,6 +2,7 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
+from .contact_laws import Contact, Coulomb, PivotingResistance, RollingResistance
 from .gravitation import (
     GRAVITATIONAL_CONSTANT,
     Attractor,
@@ -28,3 +29,4 @@ __all__ += ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass", "homogeneous_sp
             "spherical_shell", "NewtonAttraction", "SphericalBodyAttraction", "surface_gravity"]
 __all__ += ["work_along_path", "power_of", "work_along_motion", "curl", "is_conservative",
             "potential_energy_of"]
+__all__ += ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]

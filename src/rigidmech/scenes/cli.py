@@ -26,6 +26,7 @@ from .._core.errors import NumericalError, RigidmechError, SceneError
 from .._core.version import __version__
 from .catalogue import catalogue, get, names
 from .pipeline import check_plot_path, run
+from .regime_scenes import regime_scene_names, regime_scenes, run_regime_scene
 
 __all__ = ["main", "DEFAULT_SCENE"]
 
@@ -118,6 +119,9 @@ def _list_scenes(out):
     for s in catalogue():
         params = " ".join(f"{p.name}={p.default:g}" for p in s.parameters)
         rows.append((s.name, s.title, s.section, str(s.dof), params))
+    for s in regime_scenes():
+        params = " ".join(f"{n}={v:g}" for n, v, _ in s.parameters)
+        rows.append((s.name, s.title, s.section, str(len(s.state)), params))
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:
         print("  ".join(c.ljust(w) for c, w in zip(r[:4], widths, strict=True)) + "  " + r[4],
@@ -125,9 +129,12 @@ def _list_scenes(out):
 
 
 def _run(args, out):
-    get(args.name)  # unknown scene: fail before anything else
     if args.plot is not None:
         check_plot_path(args.plot, "--plot")
+    if args.name in regime_scene_names():  # motions with regime changes print their phases
+        _run_regimes(args, out)
+        return
+    get(args.name)  # unknown scene: fail before anything else
     params = {}
     for name, value in args.param:
         if name in params:
@@ -137,6 +144,21 @@ def _run(args, out):
                  method=args.method, rtol=args.rtol, atol=args.atol, step=args.step,
                  plot=args.plot)
     print(report.summary(pretty=args.pretty), file=out)
+
+
+def _run_regimes(args, out):
+    for option in ("method", "step", "atol"):
+        if getattr(args, option) is not None:
+            raise SceneError(f"--{option} is not an option of the regime scene {args.name!r} "
+                             "(integrated phase by phase with dop853).")
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    report = run_regime_scene(args.name, t_end=args.t_end, params=params, q0=args.q0,
+                              u0=args.u0, plot=args.plot)
+    print(report.summary(), file=out)
 
 
 def main(argv=None) -> int:

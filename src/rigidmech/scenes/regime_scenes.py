@@ -1,0 +1,216 @@
+"""Ready-made motions with dry friction, run phase by phase (book, ch. 21.4, 23).
+
+Each :class:`RegimeScene` names a system of :mod:`rigidmech.regimes.friction`, its parameters
+with default values and its default initial state and duration; :func:`run_regime_scene`
+integrates it and returns a :class:`RegimeReport` whose summary prints the phases (regime,
+start, end, what ended each). ``python -m rigidmech run coulomb-oscillator`` and
+``python -m rigidmech run rolling-cylinder`` print these summaries.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+from .._core.errors import SceneError
+from ..actions.contact_laws import Coulomb
+from ..regimes import PhasedMotion, coulomb_oscillator, cylinder_on_incline
+from .pipeline import _finite, check_plot_path
+
+__all__ = ["RegimeScene", "RegimeReport", "regime_scenes", "regime_scene_names",
+           "run_regime_scene"]
+
+
+def _oscillator(p, q0, u0, t_end):
+    return coulomb_oscillator(mass=p["m"], stiffness=p["k"], normal_force=p["N"],
+                              friction=Coulomb(p["fs"], p["fk"]), x0=q0[0], v0=u0[0],
+                              t_end=t_end)
+
+
+def _cylinder(p, q0, u0, t_end):
+    return cylinder_on_incline(radius=p["r"], angle=p["alpha"], g=p["g"],
+                               friction=Coulomb(p["fs"], p["fk"]), v0=u0[0], omega0=u0[1],
+                               t_end=t_end)
+
+
+class RegimeScene:
+    """A motion with regime changes from the book, with its defaults.
+
+    Examples
+    --------
+    >>> sc = regime_scenes()[0]
+    >>> sc.name, sc.section
+    ('coulomb-oscillator', 'ch. 21.4')
+    """
+
+    __slots__ = ("_name", "_title", "_section", "_parameters", "_state", "_q0", "_u0",
+                 "_t_end", "_runner", "_notes")
+
+    def __init__(self, name, title, section, *, parameters, state, q0, u0, t_end, runner,
+                 notes=""):
+        self._name, self._title, self._section = name, title, section
+        self._parameters = tuple(parameters)
+        self._state, self._q0, self._u0 = tuple(state), tuple(q0), tuple(u0)
+        self._t_end, self._runner, self._notes = float(t_end), runner, notes
+
+    name = property(lambda self: self._name, doc="Command-line name.")
+    title = property(lambda self: self._title, doc="One-line title.")
+    section = property(lambda self: self._section, doc="Section of the book.")
+    parameters = property(lambda self: self._parameters,
+                          doc="(name, default, meaning) of each parameter.")
+    notes = property(lambda self: self._notes, doc="Conventions of the scene.")
+    state = property(lambda self: self._state,
+                     doc="Names of the coordinates (the state is q and q').")
+
+    @property
+    def defaults(self) -> dict:
+        """Default parameter values."""
+        return {n: float(v) for n, v, _ in self._parameters}
+
+    def __repr__(self):
+        return f"RegimeScene({self._name!r}, section={self._section!r})"
+
+
+_SCENES = (
+    RegimeScene(
+        "coulomb-oscillator", "Mass on a spring with dry friction: stick-slip", "ch. 21.4",
+        parameters=(("m", 1.0, "mass"), ("k", 4.0, "stiffness"), ("N", 2.0, "normal force"),
+                    ("fs", 0.12, "static friction coefficient"),
+                    ("fk", 0.1, "kinetic friction coefficient")),
+        state=("x",), q0=(1.0,), u0=(0.0,), t_end=20.0, runner=_oscillator,
+        notes="x: elongation of the spring; the amplitude drops by 4 fk N / k per cycle."),
+    RegimeScene(
+        "rolling-cylinder", "Solid cylinder on a rough incline: rolling or slipping", "ch. 23",
+        parameters=(("r", 0.1, "radius"), ("alpha", math.atan(0.3), "angle of the incline"),
+                    ("g", 9.81, "gravity"), ("fs", 0.2, "static friction coefficient"),
+                    ("fk", 0.15, "kinetic friction coefficient")),
+        state=("x", "theta"), q0=(0.0, 0.0), u0=(2.0, 0.0), t_end=2.0, runner=_cylinder,
+        notes="x down the slope, theta the rotation; launched sliding (u0 = x', theta'), it "
+              "slips, then rolls if tan(alpha) <= 3 fs."),
+)
+_BY_NAME = {s.name: s for s in _SCENES}
+
+
+def regime_scenes() -> tuple:
+    """The scenes with regime changes.
+
+    Examples
+    --------
+    >>> [s.name for s in regime_scenes()]
+    ['coulomb-oscillator', 'rolling-cylinder']
+    """
+    return _SCENES
+
+
+def regime_scene_names() -> tuple:
+    """Their names.
+
+    Examples
+    --------
+    >>> regime_scene_names()
+    ('coulomb-oscillator', 'rolling-cylinder')
+    """
+    return tuple(_BY_NAME)
+
+
+class RegimeReport:
+    """The outcome of :func:`run_regime_scene`: the scene, the values used, the motion and
+    the wall time.
+
+    Examples
+    --------
+    >>> rep = run_regime_scene("coulomb-oscillator")
+    >>> rep.motion.regimes[-1]
+    'stick'
+    """
+
+    __slots__ = ("scene", "parameters", "q0", "u0", "t_end", "motion", "seconds")
+
+    def __init__(self, scene, parameters, q0, u0, t_end, motion: PhasedMotion, seconds):
+        self.scene, self.parameters, self.q0, self.u0 = scene, parameters, q0, u0
+        self.t_end, self.motion, self.seconds = t_end, motion, seconds
+
+    def summary(self) -> str:
+        """Lines for a terminal: scene, parameters, the table of phases, the final state.
+
+        Examples
+        --------
+        >>> print(run_regime_scene("coulomb-oscillator", t_end=2.0).summary())
+        ... # doctest: +ELLIPSIS
+        Mass on a spring with dry friction: stick-slip (coulomb-oscillator, book ch. 21.4)
+        state y = (x, x_dot); m=1, k=4, N=2, fs=0.12, fk=0.1
+        initial q0 = [1.0], u0 = [0.0], t = 0 .. 2
+        phases (2):
+          phase  regime  start        end          ended by
+          1      slide-  0            1.570796327  stops
+          2      slide+  1.570796327  2            -
+        final state at t = 2: [...] (slide+)
+        integrated in ... ms
+        """
+        sc = self.scene
+        params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
+        last = self.motion.phases[-1]
+        final = ", ".join(f"{v:.10g}" for v in last.y_end)
+        return "\n".join([
+            f"{sc.title} ({sc.name}, book {sc.section})",
+            f"state y = ({', '.join(f'{q}, {q}_dot' for q in sc._state)}); {params}",
+            f"initial q0 = {list(self.q0)}, u0 = {list(self.u0)}, t = 0 .. {self.t_end:g}",
+            f"phases ({len(self.motion.phases)}):",
+            *("  " + line for line in self.motion.table().splitlines()),
+            f"final state at t = {last.end:g}: [{final}] ({last.regime})",
+            f"integrated in {1e3 * self.seconds:.1f} ms",
+        ])
+
+    def __str__(self):
+        return self.summary()
+
+
+def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None,
+                     plot=None) -> RegimeReport:
+    """Run the scene ``name`` phase by phase; ``plot`` writes a figure of the first state
+    component there.
+
+    Raises
+    ------
+    SceneError
+        Unknown scene or parameter, wrong number of initial values.
+
+    Examples
+    --------
+    >>> print(run_regime_scene("rolling-cylinder").summary())     # doctest: +ELLIPSIS
+    Solid cylinder on a rough incline: rolling or slipping (rolling-cylinder, book ch. 23)
+    ...
+      1      slipping+  0 ...
+      2      rolling    ...
+    """
+    if name not in _BY_NAME:
+        raise SceneError(f"unknown regime scene {name!r}; known: {', '.join(_BY_NAME)}.")
+    sc = _BY_NAME[name]
+    values = sc.defaults
+    for key, v in (params or {}).items():
+        if key not in values:
+            raise SceneError(f"scene {name!r} has no parameter {key!r}; its parameters are "
+                             f"{', '.join(values)}.")
+        values[key] = _finite(v, f"parameter `{key}`")
+    n = len(sc._state)
+    q0 = sc._q0 if q0 is None else tuple(_finite(x, "`q0` entry") for x in q0)
+    u0 = sc._u0 if u0 is None else tuple(_finite(x, "`u0` entry") for x in u0)
+    if len(q0) != n or len(u0) != n:
+        raise SceneError(f"scene {name!r}: `q0` and `u0` must give {n} values "
+                         f"({', '.join(sc._state)}); got {len(q0)} and {len(u0)}.")
+    t_end = sc._t_end if t_end is None else _finite(t_end, "`t_end`")
+    if t_end <= 0:
+        raise SceneError(f"`t_end` must be > 0; got {t_end:g}.")
+    if plot is not None:
+        check_plot_path(plot)
+    start = time.perf_counter()
+    motion = sc._runner(values, q0, u0, t_end)
+    seconds = time.perf_counter() - start
+    if plot is not None:
+        from matplotlib.figure import Figure  # plotting only on demand
+
+        fig = Figure(figsize=(7, 3.5))
+        motion.plot(fig.add_subplot(), component=0, label=sc._state[0])
+        fig.tight_layout()
+        fig.savefig(plot)
+    return RegimeReport(sc, values, q0, u0, t_end, motion, seconds)
