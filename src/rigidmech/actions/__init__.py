@@ -30,3 +30,6 @@ __all__ += ["Helical", "SphericalWithFinger", "PlanarSupport", "LinearAnnular",
             "LinearRectilinear", "PointContact", "Embedding", "Screw", "Planar",
             "SphereCylinder", "LineContact", "CylinderPlane", "SpherePlane", "Fixed",
             "Revolute", "Slide", "BallJoint"]
+from .contacts import GearMesh, RollingContact  # noqa: E402  (ch. 10.1.3, 10.2)
+
+__all__ += ["RollingContact", "GearMesh"]

@@ -17,3 +17,6 @@ from .transmissions import (  # noqa: E402
 __all__ += ["Contact", "Centrodes", "centrodes", "instantaneous_centre", "Circle",
             "ContactGeometry", "Cylinder", "Sphere", "contact_geometry", "BeltDrive",
             "EpicyclicTrain", "Gear", "GearPair", "GearTrain"]
+from .constraints import VelocityConstraint  # noqa: E402  (ch. 10.1.3, 25.3)
+
+__all__ += ["VelocityConstraint"]
