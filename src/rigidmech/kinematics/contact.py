@@ -104,7 +104,9 @@ class Contact:
         """The contact of two solids from their surfaces (see
         :func:`~rigidmech.kinematics.surfaces.contact_geometry`): S2 = ``moving`` bounded by
         ``moving_surface`` on S1 = ``other`` bounded by ``other_surface``. The normal is
-        directed from S1 towards S2.
+        directed from S1 towards S2. For an internal contact of circles or spheres whose
+        radii cannot be compared, ``inner`` says which solid's surface is inside the other
+        ("moving" or "other").
 
         Raises
         ------
