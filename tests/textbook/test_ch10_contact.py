@@ -262,7 +262,7 @@ def test_ch10_sphere_rolling_on_a_plane_no_slip_conditions():
     assert [sp.simplify(g - e) for g, e in zip(got, expected, strict=True)] == [0, 0]
     (spin,) = c.without_pivoting_equations()
     assert sp.simplify(spin - wz) == 0
-    assert c.without_slipping().equals((expected[0] * R0.i + expected[1] * R0.j))
+    assert c.without_slipping().equals(expected[0] * R0.i + expected[1] * R0.j)
 
 
 # -- the ladder: ICR and centrodes -----------------------------------------------------------

@@ -8,33 +8,30 @@ the power of the mutual actions, the comoment of the action torsor with the rela
 torsor, is zero for every allowed motion (ch. 13.2.4); this fixes which components of the
 action are unknown:
 
-====================  ===============  ===========================  ===================  ===
-connection (French)   alias            allowed motion {omega ; v(O)}  unknown action       dof
-====================  ===============  ===========================  ===================  ===
-Pivot (pivot)         Revolute         {r w ; 0}                    X Y Z L M            1
-Prismatic (glissière) Slide            {0 ; w_ w}                   X Y L M N            1
-Helical (hélicoïdale) Screw            {r w ; h r w}                X Y Z L M, N = -h Z  1
-Cylindrical (pivot    --               {r w ; w_ w}                 X Y L M              2
-glissant)
-Spherical (rotule)    BallJoint        {p u + q v + r w ; 0}        X Y Z                3
-SphericalWithFinger   --               {p u + q v ; 0}              X Y Z N              2
-(rotule à doigt)
-PlanarSupport (appui  Planar           {r w ; u_ u + v_ v}          Z L M                3
-plan)
-LinearAnnular         SphereCylinder   {p u + q v + r w ; w_ w}     X Y                  4
-(linéaire annulaire)
-LinearRectilinear     LineContact,     {p u + r w ; u_ u + v_ v}    Z M                  4
-(linéaire rectiligne) CylinderPlane
-PointContact          SpherePlane      {p u + q v + r w ;           Z                    5
-(ponctuelle)                           u_ u + v_ v}
-Embedding             Fixed            {0 ; 0}                      X Y Z L M N          0
-(encastrement)
-====================  ===============  ===========================  ===================  ===
+===================  ==============  ===============================  =================  ===
+connection           alias           allowed {omega ; v(O)}           unknowns           dof
+===================  ==============  ===============================  =================  ===
+Pivot                Revolute        {r w ; 0}                        X Y Z L M          1
+Prismatic            Slide           {0 ; w_ w}                       X Y L M N          1
+Helical              Screw           {r w ; h r w}                    X Y Z L M (N=-hZ)  1
+Cylindrical                          {r w ; w_ w}                     X Y L M            2
+Spherical            BallJoint       {p u + q v + r w ; 0}            X Y Z              3
+SphericalWithFinger                  {p u + q v ; 0}                  X Y Z N            2
+PlanarSupport        Planar          {r w ; u_ u + v_ v}              Z L M              3
+LinearAnnular        SphereCylinder  {p u + q v + r w ; w_ w}         X Y                4
+LinearRectilinear    LineContact     {p u + r w ; u_ u + v_ v}        Z M                4
+PointContact         SpherePlane     {p u + q v + r w ; u_ u + v_ v}  Z                  5
+Embedding            Fixed           {0 ; 0}                          X Y Z L M N        0
+===================  ==============  ===============================  =================  ===
 
 Here X, Y, Z are the components of the resultant and L, M, N those of the moment at O on
-(u, v, w); h = p / (2 pi) is the reduced pitch of a helical connection of pitch p. The names
-are the French school's (*liaisons*), which the book follows; the aliases are the usual
-engineering names (the ISO 3952 names sphere-plane, cylinder-plane, sphere-cylinder). The
+(u, v, w); h = p / (2 pi) is the reduced pitch of a helical connection of pitch p; p, q, r
+and u_, v_, w_ stand for free components. The names are the French school's (*liaisons*:
+pivot, glissière, hélicoïdale, pivot glissant, rotule, rotule à doigt, appui plan, linéaire
+annulaire, linéaire rectiligne, ponctuelle, encastrement), which the book follows; the aliases
+are the usual engineering names (``CylinderPlane`` is a second alias of
+``LinearRectilinear``; sphere-plane, cylinder-plane and sphere-cylinder are the ISO 3952
+names). The
 number of degrees of freedom is six minus the number of independent conditions on the
 relative motion.
 """
