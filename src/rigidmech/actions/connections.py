@@ -8,25 +8,25 @@ the power of the mutual actions, the comoment of the action torsor with the rela
 torsor, is zero for every allowed motion (ch. 13.2.4); this fixes which components of the
 action are unknown:
 
-===================  ==============  ===============================  =================  ===
-connection           alias           allowed {omega ; v(O)}           unknowns           dof
-===================  ==============  ===============================  =================  ===
-Pivot                Revolute        {r w ; 0}                        X Y Z L M          1
-Prismatic            Slide           {0 ; w_ w}                       X Y L M N          1
-Helical              Screw           {r w ; h r w}                    X Y Z L M (N=-hZ)  1
-Cylindrical                          {r w ; w_ w}                     X Y L M            2
-Spherical            BallJoint       {p u + q v + r w ; 0}            X Y Z              3
-SphericalWithFinger                  {p u + q v ; 0}                  X Y Z N            2
-PlanarSupport        Planar          {r w ; u_ u + v_ v}              Z L M              3
-LinearAnnular        SphereCylinder  {p u + q v + r w ; w_ w}         X Y                4
-LinearRectilinear    LineContact     {p u + r w ; u_ u + v_ v}        Z M                4
-PointContact         SpherePlane     {p u + q v + r w ; u_ u + v_ v}  Z                  5
-Embedding            Fixed           {0 ; 0}                          X Y Z L M N        0
-===================  ==============  ===============================  =================  ===
+===================  ==============  =============================  =================  ===
+connection           alias           allowed {omega ; v(O)}         unknowns           dof
+===================  ==============  =============================  =================  ===
+Pivot                Revolute        {r w ; 0}                      X Y Z L M          1
+Prismatic            Slide           {0 ; c w}                      X Y L M N          1
+Helical              Screw           {r w ; h r w}                  X Y Z L M (N=-hZ)  1
+Cylindrical                          {r w ; c w}                    X Y L M            2
+Spherical            BallJoint       {p u + q v + r w ; 0}          X Y Z              3
+SphericalWithFinger                  {p u + q v ; 0}                X Y Z N            2
+PlanarSupport        Planar          {r w ; a u + b v}              Z L M              3
+LinearAnnular        SphereCylinder  {p u + q v + r w ; c w}        X Y                4
+LinearRectilinear    LineContact     {p u + r w ; a u + b v}        Z M                4
+PointContact         SpherePlane     {p u + q v + r w ; a u + b v}  Z                  5
+Embedding            Fixed           {0 ; 0}                        X Y Z L M N        0
+===================  ==============  =============================  =================  ===
 
 Here X, Y, Z are the components of the resultant and L, M, N those of the moment at O on
 (u, v, w); h = p / (2 pi) is the reduced pitch of a helical connection of pitch p; p, q, r
-and u_, v_, w_ stand for free components. The names are the French school's (*liaisons*:
+and a, b, c stand for free components. The names are the French school's (*liaisons*:
 pivot, glissière, hélicoïdale, pivot glissant, rotule, rotule à doigt, appui plan, linéaire
 annulaire, linéaire rectiligne, ponctuelle, encastrement), which the book follows; the aliases
 are the usual engineering names (``CylinderPlane`` is a second alias of

@@ -136,7 +136,7 @@ class RollingContact:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             If a constraint is not holonomic (a disc rolling on a plane in 3D).
         """
         return tuple(c.position_constraint(initial) for c in self.velocity_constraints())
@@ -203,7 +203,7 @@ class GearMesh:
 
     Raises
     ------
-    ConnectionError_
+    ConnectionError\\_
         If the distance between the centres is not the pair's centre distance.
 
     Examples

@@ -5,17 +5,15 @@ solid exerts on the other through it is an action torsor with unknown components
 connection without friction (a perfect connection) the power of the mutual actions is zero
 for every motion the connection allows (ch. 13.2.4), which fixes the form of the torsor:
 
-=============  =======================  ==========================  ========================
-connection     relative motion           action torsor at O          unknowns (local basis)
-=============  =======================  ==========================  ========================
-pivot          rotation about (O, w)     {X u + Y v + Z w ;          X, Y, Z, L, M
-                                          L u + M v}
-prismatic      translation along w       {X u + Y v ; L u + M v      X, Y, L, M, N
-                                          + N w}
-cylindrical    rotation about and        {X u + Y v ; L u + M v}     X, Y, L, M
-               translation along (O, w)
-spherical      rotation about O          {X u + Y v + Z w ; 0}       X, Y, Z
-=============  =======================  ==========================  ========================
+===========  ========================  =============================  ======================
+connection   relative motion           action torsor at O             unknowns (local basis)
+===========  ========================  =============================  ======================
+pivot        rotation about (O, w)     {X u + Y v + Z w ; L u + M v}  X, Y, Z, L, M
+prismatic    translation along w       {X u + Y v ; L u + M v + N w}  X, Y, L, M, N
+cylindrical  rotation about and        {X u + Y v ; L u + M v}        X, Y, L, M
+             translation along (O, w)
+spherical    rotation about O          {X u + Y v + Z w ; 0}          X, Y, Z
+===========  ========================  =============================  ======================
 
 (u, v, w) is a direct orthonormal basis with w along the axis, taken from the frame the axis
 vector belongs to.

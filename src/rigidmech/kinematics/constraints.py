@@ -162,7 +162,7 @@ class VelocityConstraint:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             If the constraint is not holonomic.
 
         Examples

@@ -110,7 +110,7 @@ class Contact:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             If the surfaces are not in contact.
 
         Examples

@@ -208,7 +208,7 @@ def contact_geometry(first, second, *, name: str = "I", inner: str | None = None
 
     Raises
     ------
-    ConnectionError_
+    ConnectionError\\_
         If the surfaces are not in contact (the gap does not simplify to zero).
     ArgumentTypeError
         For a pair of surfaces this function does not treat.
