@@ -88,6 +88,12 @@ def test_not_in_contact_and_bad_radii_are_refused(R0):
         contact_geometry(Sphere(R0.origin, 1), rm.Line(R0.origin, R0.i))
     with pytest.raises(TypeError, match="`moving` must be a Solid, a Body or a Frame"):
         Contact("wheel", R0, at=R0.origin, normal=R0.k)
+    with pytest.raises(ValueError, match="`inner` must be None, 'moving' or 'other'"):
+        Contact.between(R0, Circle(R0.origin, 1, normal=R0.k), R0,
+                        Circle(R0.origin, 2, normal=R0.k), inner="first")
+    with pytest.raises(ValueError, match="`inner` must be None, 'first' or 'second'"):
+        contact_geometry(Circle(R0.origin, 1, normal=R0.k), Circle(R0.origin, 2, normal=R0.k),
+                         inner="moving")
     with pytest.raises(ValueError, match="`normal` must be a non-zero Vector"):
         Contact(R0, R0, at=R0.origin, normal=rm.Vector.zero())
 

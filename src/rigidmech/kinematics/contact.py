@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .._core.errors import ArgumentTypeError
+from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
 from .solid import Solid
@@ -124,9 +124,11 @@ class Contact:
         >>> c.point.coordinates(R0).T, c.normal
         (Matrix([[x(t), y(t), 0]]), R0.k)
         """
+        if inner not in (None, "moving", "other"):
+            raise ArgumentError(f"`inner` must be None, 'moving' or 'other'; got {inner!r}.")
         point, normal = contact_geometry(moving_surface, other_surface, name=name,
-                                         inner=None if inner is None else
-                                         {"moving": "first", "other": "second"}.get(inner, inner))
+                                         inner={None: None, "moving": "first",
+                                                "other": "second"}[inner])
         return cls(moving, other, at=point, normal=normal)
 
     # -- geometry -----------------------------------------------------------------------
