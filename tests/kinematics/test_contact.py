@@ -61,6 +61,34 @@ def test_circles_external_and_internal(R0):
     assert sp.simplify(_coords(g.point, R0)[0] - R) == 0
 
 
+def test_disc_on_a_plane_in_3d(R0):
+    """A disc tilted by theta about i0 (axis a = -sin(theta) j0 + cos(theta) k0), centre at
+    height r sin(theta): d = n - (n . a) a = sin(theta) j_theta, the lowest point is C - r j_theta;
+    a disc below the plane touches it with its highest point."""
+    theta = rm.coordinates("theta")
+    Rt = R0.rotated("Rt", about=R0.i, angle=theta)
+    C = R0.origin.moved("C", r * Rt.j)
+    g = contact_geometry(Circle(C, r, normal=Rt.k), rm.Plane(R0.origin, R0.k))
+    assert [sp.simplify(c) for c in g.point.coordinates(R0)] == [0, 0, 0]
+    assert g.normal == R0.k
+    below = R0.origin.moved("C2", -r * Rt.j)
+    g = contact_geometry(Circle(below, r, normal=Rt.k), rm.Plane(R0.origin, R0.k))
+    assert [sp.simplify(c) for c in g.point.coordinates(R0)] == [0, 0, 0]
+    # numeric tilt, no basis vector along d: the square-root branch
+    Rn = R0.rotated("Rn", about=R0.vector(1, 1, 0), angle=sp.pi / 3)
+    a_ = Rn.k
+    d = R0.k - R0.k.dot(a_) * a_
+    Cn = R0.origin.moved("Cn", 2 * d / d.magnitude())
+    g = contact_geometry(Circle(Cn, 2, normal=a_), rm.Plane(R0.origin, R0.k))
+    assert all(abs(float(v)) < 1e-14 for v in g.point.coordinates(R0))
+    with pytest.raises(ConnectionError_, match="circle lies in a plane parallel"):
+        contact_geometry(Circle(R0.point("F", 0, 0, 1), 1, normal=R0.k),
+                         rm.Plane(R0.origin, R0.k))
+    with pytest.raises(ConnectionError_, match="not in contact: the height of the centre"):
+        contact_geometry(Circle(R0.origin.moved("C3", 2 * r * Rt.j), r, normal=Rt.k),
+                         rm.Plane(R0.origin, R0.k))
+
+
 def test_spheres_external(R0):
     g = contact_geometry(Sphere(R0.point("B", 0, 0, 5), 2), Sphere(R0.origin, 3))
     assert _coords(g.point, R0) == [0, 0, 3] and g.normal.equals(R0.k)

@@ -21,6 +21,7 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+import sympy.physics.mechanics as me
 from numpy.testing import assert_allclose
 from scipy.optimize import brentq
 from scipy.spatial import ConvexHull
@@ -299,3 +300,51 @@ def test_ch9_ladder_centrodes(ladder, curve, centre, radius):
     d2 = (pos[0] - centre[0]) ** 2 + (pos[1] - centre[1]) ** 2
     assert sp.simplify(d2 - radius**2) == 0 and pos[2] == 0
     assert sp.simplify(c.curvature() - 1 / radius) == 0
+
+
+# -- a disc (coin) rolling on a plane, in 3D -------------------------------------------------
+def test_ch10_rolling_disc_contact_point_and_no_slip_vs_sympy_mechanics():
+    """Disc of radius r: heading psi about k0, tilt theta about the line of nodes, spin phi
+    about its axis; contact point (x, y, 0), centre C = I + r j_theta (above the plane for
+    0 < theta < pi). The contact point is found from the circle and the plane; the sliding
+    velocity v(I in D/R0) is compared with sympy.physics.mechanics (an independent
+    implementation of frames and angular velocities) at random states to 1e-12."""
+    x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
+    R0 = rm.Frame("R0")
+    Rp = R0.rotated("Rp", about=R0.k, angle=psi)
+    Rt = Rp.rotated("Rt", about=Rp.i, angle=theta)
+    C = R0.point("P", x, y, 0).moved("C", r * Rt.j)
+    disc = Rt.rotated("D", about=Rt.k, angle=phi, origin=C)
+    c = Contact.between(disc, Circle(C, r, normal=disc.k), R0, rm.Plane(R0.origin, R0.k))
+    assert [sp.simplify(v) for v in c.point.coordinates(R0)] == [x, y, 0]
+    assert c.normal == R0.k
+    assert sp.simplify(c.persistence_equation()) == 0  # the contact persists identically
+    eqs = c.without_slipping_equations()
+    assert len(eqs) == 2
+    assert not any(rm.kinematics.VelocityConstraint(e).holonomic for e in eqs)
+
+    # sympy.physics.mechanics, the same disc
+    qs = me.dynamicsymbols("x y psi theta phi")
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", [qs[2], N.z])
+    B = A.orientnew("B", "Axis", [qs[3], A.x])
+    Dm = B.orientnew("Dm", "Axis", [qs[4], B.z])
+    O = me.Point("O")
+    C_m = O.locatenew("C", qs[0] * N.x + qs[1] * N.y + r * B.y)
+    v_I = C_m.pos_from(O).dt(N) + Dm.ang_vel_in(N).cross(-r * B.y)
+    theirs = [v_I.dot(e) for e in (N.x, N.y, N.z)]
+    ours = list(c.sliding_velocity.components(R0))
+
+    rng = np.random.default_rng(11)
+    to_state = {}
+    for q_ours, q_m in zip((x, y, psi, theta, phi), qs, strict=True):
+        to_state[q_ours.diff(t)] = to_state[q_m.diff(me.dynamicsymbols._t)] = sp.Symbol(
+            f"d{q_m}")
+        to_state[q_ours] = to_state[q_m] = sp.Symbol(f"s{q_m}")
+    syms = sorted({*to_state.values()}, key=str) + [r]
+    f_ours = sp.lambdify(syms, [e.subs(to_state) for e in ours], "numpy")
+    f_theirs = sp.lambdify(syms, [e.subs(to_state) for e in theirs], "numpy")
+    for _ in range(20):
+        state = rng.uniform(-2, 2, len(syms))
+        state[-1] = abs(state[-1]) + 0.1
+        assert_allclose(f_ours(*state), f_theirs(*state), rtol=1e-12, atol=1e-12)

@@ -4,22 +4,28 @@ Two solids touch at a point I where their surfaces have a common tangent plane, 
 (ch. 10.1.1). For the simple surfaces of the book's examples the contact point and the common
 normal follow from the geometry:
 
-==================  ======================================  ===============================
-surfaces            in contact when                         contact point I
-==================  ======================================  ===============================
-sphere / plane      distance(C, plane) = r                  C - r n
-cylinder / plane    axis parallel to the plane at height r   axis point A - r n
-circle / line       line in the circle's plane at            foot of the perpendicular from
-(in a plane)        distance r from C                        C to the line
-circle / circle     C1C2 = r1 + r2 (external) or             C1 + r1 C1C2 / C1C2 (external),
-(coplanar)          C1C2 = abs(r1 - r2) (internal)           on the line of the centres
-sphere / sphere     C1C2 = r1 + r2 or abs(r1 - r2)           as for circles
-==================  ======================================  ===============================
+================  ======================================  ===============================
+surfaces          in contact when                         contact point I
+================  ======================================  ===============================
+sphere / plane    distance(C, plane) = r                  C - r n
+cylinder / plane  axis parallel to the plane at height r  axis point A - r n
+circle / line     line in the circle's plane at           foot of the perpendicular from
+(in a plane)      distance r from C                       C to the line
+circle / plane    height of C = r abs(d), with            C - r d / abs(d) (disc above
+(disc in 3D)      d = n - (n . a) a (a: disc's axis)      the plane)
+circle / circle   C1C2 = r1 + r2 (external) or            C1 + r1 C1C2 / C1C2 (external),
+(coplanar)        C1C2 = abs(r1 - r2) (internal)          on the line of the centres
+sphere / sphere   C1C2 = r1 + r2 or abs(r1 - r2)          as for circles
+================  ======================================  ===============================
 
 Planes and lines are :class:`~rigidmech.vectors.Plane` and :class:`~rigidmech.vectors.Line`;
 spheres, cylinders and circles are the value types of this module. Radii must be positive.
 Contact is decided exactly (``sympy.simplify`` of the gap): surfaces that are not provably in
-contact are refused, with the gap in the message.
+contact are refused, with the gap in the message. For a disc on a plane, d is written along a
+basis vector of the frames of the problem when it can be (d = lambda e, for example
+e = j of the frame after the precession and the nutation of Euler angles), so that no
+square root is needed; the normal is the plane's, turned towards the disc when the sign of the
+centre's height is known.
 """
 
 from __future__ import annotations
@@ -289,6 +295,48 @@ def _circle_line(c, line, name, _inner):
     return c.centre.moved(name, foot), -foot / c.radius
 
 
+def _frames_of(*vectors):
+    out = []
+    for v in vectors:
+        for f, _ in v.parts:
+            while f is not None:
+                if f not in out:
+                    out.append(f)
+                f = f.parent
+    return out
+
+
+def _circle_plane(c, p, name, _inner):
+    """A disc (circle of axis a) on a plane of normal n: the lowest point of the rim, on the
+    direction d = n - (n . a) a of the steepest descent in the disc's plane."""
+    n, a = _unit(p.normal), c.normal
+    d = (n - n.dot(a) * a).compact()
+    h = sp.simplify((c.centre - p.point).dot(n))
+    if _zero(d.dot(d)):
+        raise ConnectionError_(
+            "the surfaces are not in contact at a point: the circle lies in a plane parallel "
+            "to the plane (its axis is along the plane's normal).")
+    # d = lam e along a basis vector e of a frame of the problem, when there is one: then
+    # |d| = +-lam without a square root, and the branch is decided by the exact gap h -+ r lam
+    e = next((e for f in _frames_of(a, n) for e in f.basis
+              if _zero(d.cross(e).dot(d.cross(e)))), None)
+    if e is not None:
+        lam = sp.simplify(d.dot(e))
+    else:
+        lam = sp.sqrt(sp.simplify(d.dot(d)))
+        e = d / lam
+    # disc above (h > 0): lowest point C - r d/|d| at h = r |d|; below: highest point
+    # C + r d/|d| at h = -r |d|. With d = lam e both cases give C - r e when h = r lam and
+    # C + r e when h = -r lam, whatever the sign of lam.
+    normal = -n if h.is_negative else n
+    if _zero(h - c.radius * lam):
+        return c.centre.moved(name, -c.radius * e), normal
+    if _zero(h + c.radius * lam):
+        return c.centre.moved(name, c.radius * e), normal
+    _not_in_contact("the height of the centre above the plane must be r |n - (n . a) a|",
+                    abs(h) - c.radius * abs(lam))
+
+
 def _round_round(a, b, name, inner_a):
     """Circle/circle or sphere/sphere: n from b towards a."""
     if isinstance(a, Circle):
@@ -329,6 +377,7 @@ _PAIRS = {
     (Sphere, Plane): _sphere_plane,
     (Cylinder, Plane): _cylinder_plane,
     (Circle, Line): _circle_line,
+    (Circle, Plane): _circle_plane,
     (Circle, Circle): _round_round,
     (Sphere, Sphere): _round_round,
 }
