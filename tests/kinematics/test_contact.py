@@ -3,8 +3,12 @@
 Expected values are closed forms worked out in the comments (the geometry of spheres, circles
 and planes; the velocity field of a solid, v(B) = v(A) + omega ^ AB)."""
 
+import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from numpy.testing import assert_allclose
 
 import rigidmech as rm
 from rigidmech._core.errors import ConnectionError_
@@ -178,3 +182,45 @@ def test_velocity_constraints_exact_and_not():
         VelocityConstraint(x.diff(t, 2))
     with pytest.raises(TypeError, match="`initial` must be a dict"):
         VelocityConstraint(x.diff(t)).position_constraint([0])
+
+
+def test_sliding_velocity_on_a_moving_solid_is_the_difference_of_velocities(R0):
+    """A wheel (centre (x, r), angle theta) on a conveyor belt translating by s(t) i0: by the
+    composition of motions (ch. 9.3) v(I in W/B) = v(I in W/R0) - v(I in B/R0)
+    = (x' + r theta' - s') i0, and the relative rotation is that of the wheel."""
+    x, theta, s = rm.coordinates("x theta s")
+    belt = R0.translated("B", R0.point("S", s, 0, 0))
+    wheel = R0.rotated("W", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
+    I = R0.point("I", x, 0, 0)
+    c = Contact(wheel, belt, at=I, normal=R0.j)
+    d = [q.diff(rm.t) for q in (x, theta, s)]
+    assert c.sliding_velocity.equals((d[0] + r * d[1] - d[2]) * R0.i)
+    absolute = rm.Solid("W", wheel).velocity(I, relative_to=R0) - rm.Solid(
+        "B", belt).velocity(I, relative_to=R0)
+    assert c.sliding_velocity.equals(absolute)
+    assert c.rotation.equals(d[1] * R0.k)
+    (eq,) = c.without_slipping_equations()
+    assert sp.simplify(eq - (d[0] + r * d[1] - d[2])) == 0
+    assert VelocityConstraint(eq).holonomic
+
+
+@settings(max_examples=10, deadline=None)
+@given(n=st.tuples(*[st.integers(-3, 3)] * 3).filter(any),
+       rates=st.tuples(*[st.floats(-5, 5, allow_nan=False)] * 3))
+def test_rotation_splits_into_rolling_and_spinning(n, rates):
+    """Ch. 10.1.2: omega = rolling + spinning, rolling in the tangent plane, spinning along
+    the normal, for any normal and any rotation (three chained rotations)."""
+    q1, q2, q3 = rm.coordinates("q1 q2 q3")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    R2 = R1.rotated("R2", about=R1.i, angle=q2)
+    R3 = R2.rotated("R3", about=R2.k, angle=q3)
+    c = Contact(R3, R0, at=R0.origin, normal=R0.vector(*n))
+    values = {q.diff(rm.t): v for q, v in zip((q1, q2, q3), rates, strict=True)}
+    values.update({q1: 0.3, q2: -1.1, q3: 2.0})
+    num = [np.array(v.components(R0).subs(values), dtype=float).ravel()
+           for v in (c.rotation, c.rolling, c.spinning, c.normal)]
+    w, rolling, spinning, normal = num
+    assert_allclose(rolling + spinning, w, atol=1e-12)
+    assert abs(rolling @ normal) < 1e-12
+    assert_allclose(np.cross(spinning, normal), 0, atol=1e-12)
