@@ -93,6 +93,20 @@ def test_gear_mesh_constraint_pitch_point_and_zero_power(internal):
     assert sp.simplify(radial - (-1 if internal else 1) * sp.tan(sp.pi / 9)) == 0
 
 
+@pytest.mark.parametrize("internal", [False, True], ids=["external", "internal"])
+@settings(max_examples=10, deadline=None)
+@given(F=values, w=values, alpha=st.floats(0, 0.5))
+def test_power_of_the_gear_mesh_action_with_its_allowed_motion_is_zero(internal, F, w, alpha):
+    R0, pair, g1, g2, _ = _gears(internal)
+    mesh = rm.joints.GearMesh(pair, g1, g2, carrier=R0, axis=R0.k, pressure_angle=alpha)
+    T, (F_,) = mesh.action_torsor("12")
+    V, (w_,) = mesh.allowed_motion("12")
+    assert mesh.degrees_of_freedom == len((w_,))
+    B = R0.point("B", 1, 2, 3)
+    power = T.subs(F_, F).at(B).comoment(V.subs(w_, w).at(B))
+    assert abs(float(power)) < 1e-12 * (1 + abs(F) * abs(w))
+
+
 def test_planar_wheel_rolling_contact_is_holonomic():
     x, theta = rm.coordinates("x theta")
     R0 = rm.Frame("R0")

@@ -296,6 +296,32 @@ class GearMesh:
         """The relation theta2 - lambda theta1 = const between the angles."""
         return tuple(c.position_constraint(initial) for c in self.velocity_constraints())
 
+    @property
+    def degrees_of_freedom(self) -> int:
+        """The pair turning in its carrier has one degree of freedom (two angles, one
+        relation)."""
+        return 1
+
+    def allowed_motion(self, label: str) -> tuple[Torsor, tuple]:
+        """The relative motion of gear 2 relative to gear 1 that the mesh allows, with the
+        carrier's motion removed: {(lambda - 1) omega_1 k ; 0 at the pitch point}, with the
+        angular velocity omega_1 of gear 1 relative to the carrier as a symbol
+        ``omega_1_label``. The pitch circles roll without slipping on each other.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, coordinates
+        >>> from rigidmech.kinematics import GearPair
+        >>> R0 = Frame("R0"); q1, q2 = coordinates("q1 q2")
+        >>> g1 = R0.rotated("G1", about=R0.k, angle=q1)
+        >>> g2 = R0.rotated("G2", about=R0.k, angle=q2, origin=R0.point("O2", 3, 0, 0))
+        >>> mesh = GearMesh(GearPair.from_radii(1, 2), g1, g2, carrier=R0, axis=R0.k)
+        >>> mesh.allowed_motion("a")[0].resultant
+        -3*omega_1_a/2*R0.k
+        """
+        w = sp.Symbol(f"omega_1_{label}", real=True)
+        return Torsor((self.ratio - 1) * w * self._axis, Vector.zero(), self.pitch_point), (w,)
+
     def action_torsor(self, label: str) -> tuple[Torsor, tuple]:
         """The action of gear 1 on gear 2: the force F (t + s tan(alpha) e) through the pitch
         point (see the module's notes), with the unknown F.
