@@ -30,3 +30,30 @@ __all__ += ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass", "homogeneous_sp
 __all__ += ["work_along_path", "power_of", "work_along_motion", "curl", "is_conservative",
             "potential_energy_of"]
 __all__ += ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]
+from .connections import (  # noqa: E402  (the rest of the catalogue, ch. 13.2.2)
+    BallJoint,
+    CylinderPlane,
+    Embedding,
+    Fixed,
+    Helical,
+    LinearAnnular,
+    LinearRectilinear,
+    LineContact,
+    Planar,
+    PlanarSupport,
+    PointContact,
+    Revolute,
+    Screw,
+    Slide,
+    SphereCylinder,
+    SpherePlane,
+    SphericalWithFinger,
+)
+
+__all__ += ["Helical", "SphericalWithFinger", "PlanarSupport", "LinearAnnular",
+            "LinearRectilinear", "PointContact", "Embedding", "Screw", "Planar",
+            "SphereCylinder", "LineContact", "CylinderPlane", "SpherePlane", "Fixed",
+            "Revolute", "Slide", "BallJoint"]
+from .contacts import GearMesh, RollingContact  # noqa: E402  (ch. 10.1.3, 10.2)
+
+__all__ += ["RollingContact", "GearMesh"]

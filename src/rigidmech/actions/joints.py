@@ -5,17 +5,15 @@ solid exerts on the other through it is an action torsor with unknown components
 connection without friction (a perfect connection) the power of the mutual actions is zero
 for every motion the connection allows (ch. 13.2.4), which fixes the form of the torsor:
 
-=============  =======================  ==========================  ========================
-connection     relative motion           action torsor at O          unknowns (local basis)
-=============  =======================  ==========================  ========================
-pivot          rotation about (O, w)     {X u + Y v + Z w ;          X, Y, Z, L, M
-                                          L u + M v}
-prismatic      translation along w       {X u + Y v ; L u + M v      X, Y, L, M, N
-                                          + N w}
-cylindrical    rotation about and        {X u + Y v ; L u + M v}     X, Y, L, M
-               translation along (O, w)
-spherical      rotation about O          {X u + Y v + Z w ; 0}       X, Y, Z
-=============  =======================  ==========================  ========================
+===========  ========================  =============================  ======================
+connection   relative motion           action torsor at O             unknowns (local basis)
+===========  ========================  =============================  ======================
+pivot        rotation about (O, w)     {X u + Y v + Z w ; L u + M v}  X, Y, Z, L, M
+prismatic    translation along w       {X u + Y v ; L u + M v + N w}  X, Y, L, M, N
+cylindrical  rotation about and        {X u + Y v ; L u + M v}        X, Y, L, M
+             translation along (O, w)
+spherical    rotation about O          {X u + Y v + Z w ; 0}          X, Y, Z
+===========  ========================  =============================  ======================
 
 (u, v, w) is a direct orthonormal basis with w along the axis, taken from the frame the axis
 vector belongs to.
@@ -33,6 +31,10 @@ from ..vectors.points import check_point
 __all__ = ["Joint", "Pivot", "Prismatic", "Cylindrical", "Spherical"]
 
 _NAMES = ("X", "Y", "Z", "L", "M", "N")
+#: names of the relative-motion components (rotation, then velocity at the joint's point) in
+#: the messages of ``check`` and in the symbols of ``allowed_motion``
+_MOTION_NAMES = ("wX", "wY", "wZ", "X", "Y", "Z")
+_MOTION_SYMBOLS = ("omega_u", "omega_v", "omega_w", "v_u", "v_v", "v_w")
 
 
 def _axis_basis(axis, argument="axis"):
@@ -74,9 +76,15 @@ class Joint:
     __slots__ = ("_at", "_axis", "_basis")
     #: indices in (X, Y, Z, L, M, N) of the action components that are zero for a perfect joint
     zero_components: tuple = ()
+    #: indices in (X, Y, Z, L, M, N) of the action components fixed by the others (the moment
+    #: N = -h Z of a helical joint); they are not unknowns
+    linked_components: tuple = ()
     #: indices in (omega_u, omega_v, omega_w, v_u, v_v, v_w) of the relative motion the joint
     #: forbids (kinematic torsor components at its point that must vanish)
     blocked_motion: tuple = ()
+    #: number of relations between the allowed components of the motion (v_w = h omega_w for
+    #: a helical joint)
+    linked_motion: int = 0
 
     def __init__(self, *, at: Point, axis: Vector):
         check_point(at, "at")
@@ -102,7 +110,62 @@ class Joint:
     @property
     def unknown_names(self):
         """Names of the unknown components of the action torsor of a perfect connection."""
-        return tuple(n for i, n in enumerate(_NAMES) if i not in self.zero_components)
+        return tuple(n for i, n in enumerate(_NAMES)
+                     if i not in self.zero_components and i not in self.linked_components)
+
+    @property
+    def degrees_of_freedom(self) -> int:
+        """Number of independent relative motions the connection allows (ch. 13.2.2): six
+        minus the blocked components minus the relations between the others.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame
+        >>> R0 = Frame("R0")
+        >>> Pivot(at=R0.origin, axis=R0.k).degrees_of_freedom
+        1
+        """
+        return 6 - len(self.blocked_motion) - self.linked_motion
+
+    def _action_values(self, syms):
+        """The six components (X, Y, Z, L, M, N) of the perfect action from the symbols."""
+        return [sp.S.Zero if i in self.zero_components else s for i, s in enumerate(syms)]
+
+    def _motion_values(self, syms):
+        """The six components (omega_u, omega_v, omega_w, v_u, v_v, v_w) of an allowed
+        relative motion from the symbols."""
+        return [sp.S.Zero if i in self.blocked_motion else s for i, s in enumerate(syms)]
+
+    def _motion_residuals(self, comps):
+        """(name, expression) pairs that vanish for every allowed relative motion."""
+        return [(_MOTION_NAMES[i], c) for i, c in enumerate(comps) if i in self.blocked_motion]
+
+    def allowed_motion(self, label: str) -> tuple[Torsor, tuple]:
+        """The kinematic torsor of the most general relative motion the connection allows,
+        reduced at its point, with the free components as symbols ``omega_u_label``, ...,
+        ``v_w_label`` in the local basis (u, v, w) (ch. 13.2.2).
+
+        Returns
+        -------
+        (Torsor, tuple of sympy.Symbol)
+            The torsor {omega ; v(at)} and its free components (as many as the degrees of
+            freedom).
+
+        Examples
+        --------
+        >>> from rigidmech import Frame
+        >>> R0 = Frame("R0")
+        >>> V, free = Pivot(at=R0.origin, axis=R0.k).allowed_motion("01")
+        >>> V.resultant, free
+        (omega_w_01*R0.k, (omega_w_01,))
+        """
+        syms = [sp.Symbol(f"{n}_{label}", real=True) for n in _MOTION_SYMBOLS]
+        vals = self._motion_values(syms)
+        u, v, w = self._basis
+        rot = vals[0] * u + vals[1] * v + vals[2] * w
+        vel = vals[3] * u + vals[4] * v + vals[5] * w
+        free = tuple(s for s, x in zip(syms, vals, strict=True) if x == s)
+        return Torsor(rot, vel, self._at), free
 
     def action_torsor(self, label: str) -> tuple[Torsor, tuple]:
         """The action torsor of a perfect connection with unknown components as symbols
@@ -121,12 +184,13 @@ class Joint:
         (X_01, Y_01, Z_01, L_01, M_01)
         """
         syms = [sp.Symbol(f"{n}_{label}", real=True) for n in _NAMES]
-        vals = [sp.S.Zero if i in self.zero_components else s for i, s in enumerate(syms)]
+        vals = self._action_values(syms)
         u, v, w = self._basis
         r = vals[0] * u + vals[1] * v + vals[2] * w
         m = vals[3] * u + vals[4] * v + vals[5] * w
         return Torsor(r, m, self._at), tuple(
-            s for i, s in enumerate(syms) if i not in self.zero_components)
+            s for i, s in enumerate(syms)
+            if i not in self.zero_components and i not in self.linked_components)
 
     def components(self, torsor: Torsor) -> dict:
         """The six components (X, Y, Z, L, M, N) of ``torsor`` in the local basis, with the
@@ -168,9 +232,8 @@ class Joint:
             raise ArgumentTypeError(f"`motion` must be a Torsor; got {type(motion).__name__}.")
         V = motion.at(self._at)
         comps = self._motion_components(V)
-        names = ("wX", "wY", "wZ", "X", "Y", "Z")
-        bad = [(names[i], c) for i, c in enumerate(comps)
-               if i in self.blocked_motion and c != 0 and sp.simplify(c) != 0]
+        bad = [(n, c) for n, c in self._motion_residuals(comps)
+               if c != 0 and sp.simplify(c) != 0]
         if bad:
             raise ConnectionError_(
                 f"{type(self).__name__} at {self._at.name}: the relative motion is not "
@@ -181,7 +244,7 @@ class Joint:
 
     def _motion_components(self, V):
         u, v, w = self._basis
-        return [V.resultant.dot(e) for e in (u, v, w)] + [V.velocity.dot(e) for e in (u, v, w)]
+        return [V.resultant.dot(e) for e in (u, v, w)] + [V.moment.dot(e) for e in (u, v, w)]
 
     def __repr__(self):
         return f"{type(self).__name__}(at={self._at.name}, axis={self._axis!r})"
