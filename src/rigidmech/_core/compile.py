@@ -21,6 +21,7 @@ pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integratio
 
 import numpy as np
 import sympy
+from scipy.linalg.lapack import dposv as _dposv
 
 from . import _codegen
 from ._codegen import (
@@ -481,17 +482,15 @@ class CompiledLinearSolve(_Compiled):
         return self._solve_batch(result[0], result[1], arrays, batch)
 
     def _solve_one(self, A, b, args):
-        x = None
+        x, reason = None, "is not finite"
         if np.isfinite(A).all():
-            try:
-                x = np.linalg.solve(A, b)
-            except np.linalg.LinAlgError:
-                pass
+            x, reason = _checked_solve(A, b, self.symmetric)
             if x is not None and (np.isfinite(x).all() or not np.isfinite(b).all()):
                 return x
+            reason = reason or "is not finite"
         arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
         where = _where(_values_at(arrays, self._sizes, self._labels, batch, 0))
-        raise _singular_error("is singular" if x is None else "is not finite", where)
+        raise _singular_error(reason, where)
 
     def _solve_batch(self, A, b, arrays, batch):
         n = self.n
@@ -504,14 +503,15 @@ class CompiledLinearSolve(_Compiled):
             bad, reason = int(np.argmin(finite_A)), "is not finite"
         else:
             with np.errstate(all="ignore"):
-                try:
-                    x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
-                except np.linalg.LinAlgError:
-                    bad = next(i for i in range(count) if not _solvable(stack_A[i]))
-            if bad is None:
-                singular = ~np.isfinite(x).all(axis=1) & np.isfinite(stack_b).all(axis=(1, 2))
+                singular = _singular_members(stack_A, self.symmetric)
                 if singular.any():
                     bad = int(np.argmax(singular))
+                else:
+                    x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
+                    singular = (~np.isfinite(x).all(axis=1)
+                                & np.isfinite(stack_b).all(axis=(1, 2)))
+                    if singular.any():
+                        bad, reason = int(np.argmax(singular)), "is not finite"
         if bad is not None:
             values = _values_at(arrays, self._sizes, self._labels, batch, bad)
             where = _where(values) if batch == () else _where(values, bad)
@@ -525,12 +525,60 @@ class CompiledLinearSolve(_Compiled):
         )
 
 
-def _solvable(matrix):
+def _checked_solve(A, b, symmetric):
+    """x solving A x = b for one finite A, or (None, reason) if A is singular to working
+    precision.
+
+    A symmetric positive definite A (a mass matrix) is solved by LAPACK's Cholesky (``dposv``,
+    cheaper than numpy.linalg.solve) and its pivots tested against ``n eps`` times their
+    diagonal entries (:func:`~rigidmech._core._codegen.pivot_tolerance`); any other A by LU,
+    after :func:`_singular_members` has ruled out a singular matrix.
+    """
+    if symmetric:
+        factor, x, info = _dposv(A, b)
+        if info == 0:
+            pivots = np.diagonal(factor)
+            if (pivots * pivots > _codegen.pivot_tolerance(len(b)) * np.diagonal(A)).all():
+                return x, None
+            return None, "is singular"
+    if _singular_members(A[None], False)[0]:
+        return None, "is singular"
     try:
-        np.linalg.solve(matrix, np.zeros(matrix.shape[0]))
+        return np.linalg.solve(A, b), None
     except np.linalg.LinAlgError:
-        return False
-    return True
+        return None, "is singular"
+
+
+def _singular_members(stack, symmetric):
+    """Boolean mask of the matrices of ``stack`` (shape (count, n, n), finite) that are
+    singular to working precision.
+
+    Symmetric positive definite members are tested by their Cholesky pivots
+    (:func:`~rigidmech._core._codegen.pivot_tolerance`). Others (a symmetric matrix that is
+    not positive definite, any matrix when ``symmetric`` is false) are equilibrated (rows,
+    then columns, scaled to a largest entry of 1, so that the scale of an equation or of an
+    unknown does not matter) and are singular when their smallest singular value is at most
+    n eps times the largest: LU's backward error is of that size, so such a matrix is within
+    rounding of a singular one.
+    """
+    n = stack.shape[-1]
+    tol = _codegen.pivot_tolerance(n)
+    if symmetric:
+        diag = np.diagonal(stack, axis1=1, axis2=2)
+        try:
+            factor = np.linalg.cholesky(stack)
+        except np.linalg.LinAlgError:
+            factor = None
+        if factor is not None:
+            pivots = np.diagonal(factor, axis1=1, axis2=2) ** 2
+            return ~(pivots > tol * diag).all(axis=1)
+    rows = np.abs(stack).max(axis=2, keepdims=True)
+    zero_row = (rows == 0).any(axis=(1, 2))
+    scaled = stack / np.where(rows == 0, 1.0, rows)
+    cols = np.abs(scaled).max(axis=1, keepdims=True)
+    scaled = scaled / np.where(cols == 0, 1.0, cols)
+    values = np.linalg.svd(scaled, compute_uv=False)
+    return ~(values[:, -1] > tol * values[:, 0]) | zero_row
 
 
 def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True):
