@@ -6,6 +6,7 @@ dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
 from . import actions, inertia, ode, scenes
+from . import errors
 from . import actions as joints
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
@@ -60,4 +61,5 @@ __all__ = [
     "Body",
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
+    "errors",
 ]
