@@ -5,8 +5,7 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, inertia, ode, scenes
-from . import errors
+from . import actions, errors, inertia, ode, scenes
 from . import actions as joints
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System

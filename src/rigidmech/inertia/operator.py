@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import simplifies_to_zero
 from ..vectors import Point, Vector
 from ..vectors._rotations import rotation_steps
 from ._checks import (
@@ -79,20 +80,6 @@ def _elementary_step(J, axis, angle):
     return sp.ImmutableMatrix(3, 3, lambda r, k: new[min(r, k)][max(r, k)]
                               if new[min(r, k)][max(r, k)] is not None
                               else new[max(r, k)][min(r, k)])
-
-
-def _is_zero(x):
-    """Whether ``x`` simplifies to 0: cheap trigonometric canonical form first (expand the
-    multiple angles, replace sin^2 by 1 - cos^2), ``sympy.simplify`` only if that fails."""
-    if x == 0:
-        return True
-    e = sp.expand(sp.expand_trig(x))
-    if e == 0:
-        return True
-    rule = {sp.sin(a) ** 2: 1 - sp.cos(a) ** 2 for a in {s.args[0] for s in e.atoms(sp.sin)}}
-    if rule and sp.expand(e.subs(rule)) == 0:
-        return True
-    return sp.simplify(x) == 0
 
 
 class InertiaOperator:
@@ -646,7 +633,7 @@ class InertiaOperator:
         if not (d.is_zero or d.equals(Vector.zero())):
             return False
         diff = self._matrix - other.in_basis(self._frame)._matrix
-        return all(_is_zero(x) for x in diff)
+        return all(simplifies_to_zero(x) for x in diff)
 
     def __eq__(self, other):
         if not isinstance(other, InertiaOperator):

@@ -19,6 +19,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
+from .._core.symbolic import is_exactly_zero
 from ._rotations import (
     ZERO,
     FrameBase,
@@ -48,13 +49,8 @@ def _cross3(u, v):
             term(u[0], v[1], u[1], v[0]))
 
 
-def _is_zero(x):
-    """Exact zero, including a float zero (``Float(0.0) != 0`` in sympy >= 1.13)."""
-    return x == 0 or (x.is_Number and x.is_zero)
-
-
 def _any_nonzero(c):
-    return not all(_is_zero(x) for x in c)
+    return not all(is_exactly_zero(x) for x in c)
 
 
 def _nonzero(c):
@@ -257,7 +253,7 @@ class Vector:
             return NotImplemented
         if not isinstance(s, sp.Expr):
             return NotImplemented
-        if _is_zero(s):
+        if is_exactly_zero(s):
             return Vector.zero()
         if s == 1:
             return self
