@@ -433,8 +433,10 @@ class InertiaOperator:
         Raises
         ------
         ArgumentError
-            If the mass is negative, or (numbers) if the operator at G implied by ``mass``
-            and ``centre`` is not an operator of inertia.
+            If the mass is negative, if this operator is a central one (:attr:`is_central`,
+            the catalogue's) and ``centre`` is not the point it is taken at, or (numbers) if
+            the operator at G implied by ``mass`` and ``centre`` is not an operator of
+            inertia.
 
         Examples
         --------
@@ -453,6 +455,13 @@ class InertiaOperator:
         check_same_tree(self._frame, to, "to")
         check_same_tree(self._frame, centre, "centre")
         mass = nonnegative(mass, "mass")
+        if self._central and centre != self._at and not (centre - self._at).is_zero:
+            raise ArgumentError(
+                f"this operator is a central one, taken at the mass centre {self._at.name} of "
+                f"its body, but `centre` is {centre.name}: moving it would use the wrong "
+                f"Huygens term. Build it at that centre (the catalogue's `centre=`) or place it "
+                f"there first: `.placed_at({centre.name}).moved(...)`."
+            )
         J = self._matrix
         back = _huygens(mass, (centre - self._at)._comps(self._frame))
         if back is not None:
