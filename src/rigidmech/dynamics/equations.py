@@ -16,7 +16,7 @@ import sympy as sp
 
 from .. import ode
 from .._core.compile import compile_expressions, compile_linear_solve
-from .._core.errors import ArgumentError, NumericalError
+from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
 from .._core.symbolic import free_symbols_shared
 from ..vectors import t as _t
 
@@ -207,6 +207,7 @@ class EquationsOfMotion:
         Simulation
         """
         n = len(self._q)
+        _check_simulation_inputs(n, t, q0, u0, method, n_output, params)
         if q0 is None or len(q0) != n:
             raise ArgumentError(f"`q0` must give {n} initial values; got {q0!r}.")
         u0 = np.zeros(n) if u0 is None else np.asarray(u0, dtype=float)
@@ -225,6 +226,7 @@ class EquationsOfMotion:
         elapsed = _time.perf_counter() - start
         if not res.success:
             raise NumericalError(f"integration failed: {res.message}")
+        _check_finite_motion(res)
         return Simulation(self, res, params, elapsed)
 
     def _latex(self, printer=None):
@@ -251,6 +253,57 @@ class EquationsOfMotion:
     def __repr__(self):
         return (f"EquationsOfMotion(coordinates={list(self._coordinates)}, "
                 f"n={len(self._q)}, parameters={list(self._params)})")
+
+
+def _finite_reals(values, argument, n=None):
+    """Raise unless ``values`` is a sequence (of length ``n``) of finite real numbers."""
+    if isinstance(values, str | bytes) or not hasattr(values, "__len__"):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a sequence of {n or 'several'} numbers; got "
+            f"{type(values).__name__} {values!r}.")
+    if n is not None and len(values) != n:
+        raise ArgumentError(f"`{argument}` must give {n} initial values; got {values!r}.")
+    for v in values:
+        _finite_real_number(v, f"`{argument}` must hold finite real numbers")
+
+
+def _finite_real_number(v, rule):
+    if isinstance(v, bool) or not isinstance(v, int | float | np.integer | np.floating
+                                             | sp.Number):
+        raise ArgumentTypeError(f"{rule}; got {type(v).__name__} {v!r}.")
+    if not np.isfinite(float(v)):
+        raise ArgumentError(f"{rule}; got {v!r}.")
+
+
+def _check_simulation_inputs(n, t, q0, u0, method, n_output, params):
+    """The checks of :meth:`EquationsOfMotion.simulate` on the values it is given (numbers
+    finite and real, a time span of two numbers, a method name, a count of outputs), so that a
+    wrong value is an error here rather than a nan motion or an error from numpy."""
+    _finite_reals(t, "t", 2)
+    if q0 is not None and not isinstance(q0, dict):
+        _finite_reals(q0, "q0")
+    if u0 is not None and not isinstance(u0, dict):
+        _finite_reals(u0, "u0")
+    if not isinstance(method, str):
+        raise ArgumentTypeError(
+            f"`method` must be the name of a method of rigidmech.ode.solve (such as "
+            f"'dop853'); got {type(method).__name__} {method!r}.")
+    if isinstance(n_output, bool) or not isinstance(n_output, int | np.integer) \
+            or n_output < 2:
+        raise ArgumentError(
+            f"`n_output` must be an integer >= 2 (the output times include both ends of "
+            f"`t`); got {n_output!r}.")
+    for name, value in params.items():
+        _finite_real_number(value, f"`{name}` must be a finite real number")
+
+
+def _check_finite_motion(res):
+    bad = ~np.isfinite(res.y).all(axis=0)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise NumericalError(
+            f"the motion is not finite from t = {res.t[k]!r} on (state {res.y[:, k]!r}): "
+            "check the initial values and the parameters.")
 
 
 class Simulation:

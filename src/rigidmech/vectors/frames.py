@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .._core.errors import ArgumentTypeError, FrameError
+from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from .._core.validation import finite_real
 from ._rotations import ONE, ZERO, FrameBase, direction_cosines
 from .points import Point
@@ -161,6 +161,8 @@ class Frame(FrameBase):
         Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(psi(t), t),
                  cos(theta(t))*Derivative(psi(t), t) + Derivative(phi(t), t)]])
         """
+        if not isinstance(name, str) or not name:
+            raise ArgumentError(f"`name` must be a non-empty string; got {name!r}.")
         f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
         f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
         return f2.rotated(name, about=f2.k, angle=spin)
