@@ -197,3 +197,45 @@ def test_simulate_non_finite_parameter_is_an_error(value):
     # regression for the fuzz findings: a nan parameter used to give a nan motion as success
     with pytest.raises(RigidmechError, match=r"`g` must be a finite real number; got "):
         EQS.simulate(t=(0.0, 0.01), q0=[0.3], m=1.0, L=1.0, g=value)
+
+
+@FUZZ
+@given(parent=anything, child=anything, joint=st.sampled_from(
+    [None, "pivot", 3, rm.joints.Pivot(at=R0.origin, axis=R0.k), rm.joints.Spherical(at=A)]),
+    action=anything)
+def test_system_methods_with_junk(parent, child, joint, action):
+    system = rm.System(galilean=R0)
+    call(system.connect, parent, child, joint)
+    call(system.add, child)
+    call(system.act, action)
+    call(system.connection_action, parent, child)
+
+
+@settings(max_examples=12, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(steps=st.lists(st.tuples(st.sampled_from(["connect", "add", "act"]),
+                                st.integers(0, 3), st.integers(0, 3), st.integers(0, 4)),
+                      min_size=1, max_size=4),
+       state=st.sampled_from([0.0, 0.3, -2.0, 1e3]))
+def test_random_systems_simulate_or_raise(steps, state):
+    # a massless link with its own coordinate makes a singular mass matrix: that must be a
+    # SingularMassMatrixError, never a motion
+    bodies, joints, actions = _parts()
+    system = rm.System(galilean=R0)
+    for op, a, b, c in steps:
+        parent = R0 if a == 3 else bodies[a]
+        if op == "connect":
+            call(system.connect, parent, bodies[b % 3], joints[c % 4])
+        elif op == "add":
+            call(system.add, bodies[b % 3])
+        else:
+            call(system.act, actions[c])
+    eqs = call(system.equations_of_motion)
+    if eqs is None:
+        return
+    n = len(eqs.q)
+    params = {p.name: 1.0 for p in eqs.parameters}
+    sim = call(eqs.simulate, t=(0.0, 1e-3), q0=[state] * n, u0=[0.1] * n, n_output=3,
+               **params)
+    if sim is not None:
+        assert np.isfinite(sim.q).all() and np.isfinite(sim.u).all()

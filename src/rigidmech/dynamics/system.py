@@ -87,7 +87,9 @@ class System:
     Parameters
     ----------
     galilean : Frame
-        The Galilean reference R (ch. 18.1.2); bodies may be connected to it.
+        The Galilean reference R (ch. 18.1.2); bodies may be connected to it. It must not
+        move relative to the root frame of its tree (a frame rotating or translating with a
+        coordinate or with time is refused with :class:`~rigidmech.errors.FrameError`).
     coordinates : sequence of q(t), optional
         The parameters of situation, in the order of the equations. Default: those found in
         the bodies' frames and mass centres, in the order the bodies were connected.
@@ -148,6 +150,13 @@ class System:
 
     def add(self, body: Body) -> None:
         """Add a body that is not connected to anything (a free body, ch. 18.4).
+
+        Raises
+        ------
+        ConnectionError_
+            If the body, a body of the same name, or a different frame of the same name is
+            already in the system, or if one of its coordinates is already moved by a
+            connection or another free body.
 
         Examples
         --------
@@ -218,6 +227,18 @@ class System:
 
         The joint is checked against the frames: the relative motion of the child must be
         one the joint allows (ch. 13.2.2).
+
+        Each parameter of situation belongs to one connection: the coordinates of the
+        child's frame and mass centre that are not its parent's are those of this connection,
+        and must not be moved by another one (the same q in two bodies hanging from the
+        ground would be counted twice).
+
+        Raises
+        ------
+        ConnectionError_
+            For a child that already has a parent, a parent not yet in the system, a second
+            body or a different frame with a name already used, or a coordinate already moved
+            by another connection.
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
@@ -252,7 +273,14 @@ class System:
         self._cache.clear()
 
     def act(self, action: Action) -> None:
-        """Add an external or internal action (gravity, force, couple, spring, ...)."""
+        """Add an external or internal action (gravity, force, couple, spring, ...).
+
+        Raises
+        ------
+        ConnectionError_
+            If the action is already in the system, if it is a second gravity, or if it acts
+            on a body that is not in the system (connect the body first).
+        """
         if not isinstance(action, Action):
             raise ArgumentTypeError(
                 f"`action` must be an Action (rm.gravity, rm.actions.Force, ...); got "
