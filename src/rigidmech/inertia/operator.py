@@ -82,6 +82,15 @@ def _elementary_step(J, axis, angle):
                               else new[max(r, k)][min(r, k)])
 
 
+def _has_string(value):
+    """Whether a nested list/tuple contains a string (sympy would read it as a symbol)."""
+    if isinstance(value, str | bytes):
+        return True
+    if isinstance(value, list | tuple):
+        return any(_has_string(v) for v in value)
+    return False
+
+
 class InertiaOperator:
     """The operator of inertia of a body at a point, in the basis of a frame (ch. 15.1.3).
 
@@ -219,6 +228,10 @@ class InertiaOperator:
         """
         frame = check_frame(frame, "frame")
         at = cls._check_at(frame, at)
+        if isinstance(matrix, list | tuple) and _has_string(matrix):
+            raise ArgumentTypeError(
+                "`matrix` must be a number or a sympy expression in every entry; got a string "
+                "(a string is not read as a symbol).")
         try:
             m = sp.Matrix(matrix)
         except (sp.SympifyError, TypeError, ValueError) as exc:
