@@ -617,9 +617,18 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
 
     Notes
     -----
-    At call time a non-finite A, or a singular one (numpy.linalg.solve fails, or the solution
-    is not finite while b is), raises :class:`~rigidmech._core.errors.SingularMassMatrixError`
-    naming the argument values (and the first offending batch index, for a batch).  A batch is
+    At call time a non-finite A, or one singular to working precision, raises
+    :class:`~rigidmech.errors.SingularMassMatrixError` naming the argument values (and the
+    first offending batch index, for a batch); so does a solution that is not finite while b
+    is. Singular to working precision means, on every path (unrolled Cholesky for one state or
+    a batch, LAPACK for n > ``UNROLLED_CHOLESKY_MAX_N``): a Cholesky pivot p_j <= n eps a_jj,
+    relative to its own diagonal entry (the rounding error of p_j is about (j + 1) eps a_jj,
+    so such a pivot carries no digit, and the matrix scaled to a unit diagonal then has an
+    eigenvalue <= n eps; the test does not depend on the units of the coordinates). A matrix
+    declared symmetric that is not positive definite, or one not declared symmetric, is
+    equilibrated (rows, then columns, to a largest entry of 1) and singular when its smallest
+    singular value is <= n eps times the largest. M = [[c, c], [c, c]] is refused for every c,
+    whatever the rounding of its last pivot.  A batch is
     solved by one call of numpy.linalg.solve on the stack of systems (batch axes moved to the
     front and back).  The choice between numpy and the unrolled Cholesky on the single-state
     path is measured; see ``UNROLLED_CHOLESKY_MAX_N``.
