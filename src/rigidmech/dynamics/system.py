@@ -153,7 +153,7 @@ class System:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             If the body, a body of the same name, or a different frame of the same name is
             already in the system, or if one of its coordinates is already moved by a
             connection or another free body.
@@ -235,7 +235,7 @@ class System:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             For a child that already has a parent, a parent not yet in the system, a second
             body or a different frame with a name already used, or a coordinate already moved
             by another connection.
@@ -277,7 +277,7 @@ class System:
 
         Raises
         ------
-        ConnectionError_
+        ConnectionError\\_
             If the action is already in the system, if it is a second gravity, or if it acts
             on a body that is not in the system (connect the body first).
         """
