@@ -87,3 +87,21 @@ def test_inertia_in_a_basis_fixed_in_the_body_is_accepted(frames):
     with pytest.raises(ArgumentError, match=r"turns relative to the body's frame R1"):
         rm.Body("b", frame=R1, mass=m,
                 inertia=rm.inertia.InertiaOperator.from_products(1, 2, 3, frame=R0))
+
+
+def test_catalogue_operator_built_at_another_centre_is_refused(frames):
+    # rod(..., centre=A) says the rod's mass centre is A; the body says G: which one is meant
+    # cannot be guessed, and placing the operator at G silently would hide the mistake
+    q, R0, R1 = frames
+    m, L = sp.symbols("m L", positive=True)
+    A = R0.origin.moved("A", L * R1.i)
+    G = R0.origin.moved("G", L / 2 * R1.i)
+    with pytest.raises(ArgumentError, match=r"`inertia` is a central operator taken at A, but "
+                                            r"the body's mass centre `centre` is G"):
+        rm.Body("bar", frame=R1, mass=m, centre=G,
+                inertia=rm.inertia.rod(m, L, axis=R1.i, centre=A))
+    # built at G, or without centre= (placed by the body): accepted, same operator
+    at_g = rm.Body("bar", frame=R1, mass=m, centre=G,
+                   inertia=rm.inertia.rod(m, L, axis=R1.i, centre=G))
+    placed = rm.Body("bar", frame=R1, mass=m, centre=G, inertia=rm.inertia.rod(m, L, axis=R1.i))
+    assert at_g.inertia == placed.inertia

@@ -43,6 +43,10 @@ __all__ = ["InertiaOperator"]
 
 _ZERO = sp.S.Zero
 
+#: Value of the private flag ``_central`` of a catalogue operator built without ``centre=``:
+#: central, at the origin of its frame only until a body places it at its mass centre.
+UNPLACED = "unplaced"
+
 
 def _sym(rows):
     """Immutable symmetric matrix from the upper triangle of ``rows`` (lists of 3)."""
@@ -283,7 +287,24 @@ class InertiaOperator:
     def is_central(self) -> bool:
         """True for an operator known to be taken at the body's mass centre (the catalogue's
         operators, and the result of :meth:`moved` to the mass centre)."""
-        return self._central
+        return bool(self._central)
+
+    @property
+    def is_placed(self) -> bool:
+        """False only for a catalogue operator built without ``centre=``: central, but its
+        point (the origin of its frame) is a default that a
+        :class:`~rigidmech.kinetics.Body` replaces by its own mass centre.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.inertia import disk
+        >>> from rigidmech.vectors import Frame
+        >>> R1 = Frame("R1")
+        >>> disk(1, 2, axis=R1.k).is_placed, disk(1, 2, axis=R1.k, centre=R1.origin).is_placed
+        (False, True)
+        """
+        return self._central != UNPLACED
 
     def placed_at(self, centre: Point) -> InertiaOperator:
         """The same central operator, taken at the mass centre ``centre`` of the body.

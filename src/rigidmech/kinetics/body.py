@@ -49,8 +49,9 @@ class Body(Solid):
     inertia : InertiaOperator, optional
         The operator of inertia in a basis fixed in the body (checked: the rotation of its
         basis relative to ``frame`` must be constant): an operator of the catalogue
-        (:mod:`rigidmech.inertia`), which is the central one and is placed at G, or an
-        operator given at any point of the body, moved to G by the relations of Huygens.
+        (:mod:`rigidmech.inertia`), which is the central one and is placed at G (built with
+        ``centre=``, that centre must be G), or an operator given at any point of the body,
+        moved to G by the relations of Huygens.
         Defaults to zero (a particle).
 
     Raises
@@ -59,7 +60,8 @@ class Body(Solid):
         For a mass that is not a number or a sympy expression (a string, say).
     ArgumentError
         For a mass that is not a finite real number >= 0, an inertia given without a mass
-        (or with ``mass=0``) or in a basis that turns relative to the body.
+        (or with ``mass=0``), in a basis that turns relative to the body, or central at
+        another point than ``centre``.
 
     Examples
     --------
@@ -99,6 +101,14 @@ class Body(Solid):
             if inertia.at != centre:
                 # a catalogue operator is the body's central one: place it at G; any other
                 # operator is moved to G by the relations of Huygens
+                if inertia.is_central and inertia.is_placed \
+                        and not (centre - inertia.at).is_zero:
+                    raise ArgumentError(
+                        f"`inertia` is a central operator taken at {inertia.at.name}, but the "
+                        f"body's mass centre `centre` is {centre.name}: two different mass "
+                        f"centres. Build the operator with centre={centre.name} (or without "
+                        f"`centre=`, and the body places it), or give the body "
+                        f"centre={inertia.at.name}.")
                 inertia = (inertia.placed_at(centre) if inertia.is_central
                            else inertia.moved(centre, mass=mass, centre=centre))
             if inertia.frame != frame:
