@@ -557,9 +557,9 @@ def _singular_members(stack, symmetric):
     (:func:`~rigidmech._core._codegen.pivot_tolerance`). Others (a symmetric matrix that is
     not positive definite, any matrix when ``symmetric`` is false) are equilibrated (rows,
     then columns, scaled to a largest entry of 1, so that the scale of an equation or of an
-    unknown does not matter) and are singular when their smallest singular value is at most
-    n eps times the largest: LU's backward error is of that size, so such a matrix is within
-    rounding of a singular one.
+    unknown does not matter) and are singular when their reciprocal condition number in the
+    1-norm, 1 / (|A|_1 |A^-1|_1), is at most n eps (what LAPACK's ``gecon`` estimates): LU's
+    backward error is of that size, so such a matrix is within rounding of a singular one.
     """
     n = stack.shape[-1]
     tol = _codegen.pivot_tolerance(n)
@@ -573,12 +573,22 @@ def _singular_members(stack, symmetric):
             pivots = np.diagonal(factor, axis1=1, axis2=2) ** 2
             return ~(pivots > tol * diag).all(axis=1)
     rows = np.abs(stack).max(axis=2, keepdims=True)
-    zero_row = (rows == 0).any(axis=(1, 2))
     scaled = stack / np.where(rows == 0, 1.0, rows)
     cols = np.abs(scaled).max(axis=1, keepdims=True)
     scaled = scaled / np.where(cols == 0, 1.0, cols)
-    values = np.linalg.svd(scaled, compute_uv=False)
-    return ~(values[:, -1] > tol * values[:, 0]) | zero_row
+    singular = (rows == 0).any(axis=(1, 2)) | (cols == 0).any(axis=(1, 2))
+    try:
+        inverse = np.linalg.inv(scaled)
+    except np.linalg.LinAlgError:
+        inverse = np.full_like(scaled, np.nan)
+        for k in range(len(scaled)):
+            try:
+                inverse[k] = np.linalg.inv(scaled[k])
+            except np.linalg.LinAlgError:
+                pass
+    norm = np.abs(scaled).sum(axis=1).max(axis=-1)
+    norm_inverse = np.abs(inverse).sum(axis=1).max(axis=-1)
+    return singular | ~(1.0 / (norm * norm_inverse) > tol)
 
 
 def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True):
@@ -626,8 +636,8 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
     so such a pivot carries no digit, and the matrix scaled to a unit diagonal then has an
     eigenvalue <= n eps; the test does not depend on the units of the coordinates). A matrix
     declared symmetric that is not positive definite, or one not declared symmetric, is
-    equilibrated (rows, then columns, to a largest entry of 1) and singular when its smallest
-    singular value is <= n eps times the largest. M = [[c, c], [c, c]] is refused for every c,
+    equilibrated (rows, then columns, to a largest entry of 1) and singular when its
+    reciprocal condition number in the 1-norm is <= n eps. M = [[c, c], [c, c]] is refused for every c,
     whatever the rounding of its last pivot.  A batch is
     solved by one call of numpy.linalg.solve on the stack of systems (batch axes moved to the
     front and back).  The choice between numpy and the unrolled Cholesky on the single-state
