@@ -637,8 +637,8 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
     eigenvalue <= n eps; the test does not depend on the units of the coordinates). A matrix
     declared symmetric that is not positive definite, or one not declared symmetric, is
     equilibrated (rows, then columns, to a largest entry of 1) and singular when its
-    reciprocal condition number in the 1-norm is <= n eps. M = [[c, c], [c, c]] is refused for every c,
-    whatever the rounding of its last pivot.  A batch is
+    reciprocal condition number in the 1-norm is <= n eps. M = [[c, c], [c, c]] is refused
+    for every c, whatever the rounding of its last pivot.  A batch is
     solved by one call of numpy.linalg.solve on the stack of systems (batch axes moved to the
     front and back).  The choice between numpy and the unrolled Cholesky on the single-state
     path is measured; see ``UNROLLED_CHOLESKY_MAX_N``.
