@@ -21,6 +21,9 @@ pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integratio
 
 import numpy as np
 import sympy
+from scipy.linalg.lapack import dgecon as _dgecon
+from scipy.linalg.lapack import dgetrf as _dgetrf
+from scipy.linalg.lapack import dgetrs as _dgetrs
 from scipy.linalg.lapack import dposv as _dposv
 
 from . import _codegen
@@ -531,8 +534,9 @@ def _checked_solve(A, b, symmetric):
 
     A symmetric positive definite A (a mass matrix) is solved by LAPACK's Cholesky (``dposv``,
     cheaper than numpy.linalg.solve) and its pivots tested against ``n eps`` times their
-    diagonal entries (:func:`~rigidmech._core._codegen.pivot_tolerance`); any other A by LU,
-    after :func:`_singular_members` has ruled out a singular matrix.
+    diagonal entries (:func:`~rigidmech._core._codegen.pivot_tolerance`); any other A by LU
+    of the equilibrated matrix, with the test of :func:`_singular_members` (LAPACK's
+    ``dgecon`` estimate of the reciprocal condition number).
     """
     if symmetric:
         factor, x, info = _dposv(A, b)
@@ -541,12 +545,24 @@ def _checked_solve(A, b, symmetric):
             if (pivots * pivots > _codegen.pivot_tolerance(len(b)) * np.diagonal(A)).all():
                 return x, None
             return None, "is singular"
-    if _singular_members(A[None], False)[0]:
+    # LU of the equilibrated matrix (the test of _singular_members, by LAPACK for one state:
+    # dgecon estimates the reciprocal condition number from the factors)
+    rows = np.abs(A).max(axis=1)
+    if not rows.all():
         return None, "is singular"
-    try:
-        return np.linalg.solve(A, b), None
-    except np.linalg.LinAlgError:
+    scaled = A / rows[:, None]
+    cols = np.abs(scaled).max(axis=0)
+    if not cols.all():
         return None, "is singular"
+    scaled = scaled / cols
+    lu, pivots, info = _dgetrf(scaled)
+    if info != 0:
+        return None, "is singular"
+    rcond, _ = _dgecon(lu, np.abs(scaled).sum(axis=0).max())
+    if not rcond > _codegen.pivot_tolerance(len(b)):
+        return None, "is singular"
+    y, _ = _dgetrs(lu, pivots, b / rows)
+    return y / cols, None
 
 
 def _singular_members(stack, symmetric):
