@@ -5,7 +5,7 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, inertia, ode, regimes, scenes, statics
+from . import actions, errors, inertia, ode, regimes, scenes, statics
 from . import actions as joints
 from ._core.version import __version__ as __version__
 from .actions import Contact, Coulomb, Couple, Force, Spring, gravity, power
@@ -66,6 +66,7 @@ __all__ = [
     "Body",
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
+    "errors",
 ]
 __all__ += ["velocity_composition", "acceleration_composition"]
 __all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]

@@ -412,16 +412,40 @@ def _output_code(template, reduced, printer_math, printer_array):
     return single(template), batched_lines, batched(template)
 
 
+def pivot_tolerance(n):
+    """Relative size ``n * eps`` under which the pivot of a symmetric positive definite system
+    is rounding noise (see :func:`rigidmech._core.compile.compile_linear_solve`, Notes).
+
+    The j-th Cholesky pivot p_j = a_jj - sum_k l_jk^2 is a difference of a_jj and j squares
+    whose sum does not exceed a_jj: its rounding error is about (j + 1) eps a_jj (Higham,
+    *Accuracy and Stability of Numerical Algorithms*, 2nd ed., thm. 10.3). A pivot
+    p_j <= n eps a_jj is therefore indistinguishable from zero, and then the matrix scaled to a
+    unit diagonal has an eigenvalue <= n eps (p_j = 1 / (B^-1)_jj for its leading j x j block
+    B, and eigenvalues interlace): singular to working precision, the solution has no correct
+    digit. Relative to each pivot's own diagonal entry, the test does not change when a
+    coordinate is rescaled (M -> D M D), so a heavy and a very light degree of freedom in one
+    system are not mistaken for a singular matrix.
+
+    Examples
+    --------
+    >>> pivot_tolerance(2) == 2 * 2.0**-52
+    True
+    """
+    return n * 2.0**-52
+
+
 def _cholesky_steps(n, indent, check_pivot, inverse_sqrt):
     """The factorisation and the two triangular solves of an unrolled Cholesky, shared by the
     scalar and the batched code: locals ``_a{j}_{i}`` (j <= i) and ``_b{i}`` in, ``_z{i}`` out.
-    ``check_pivot`` is the line that follows each pivot ``_p``; ``inverse_sqrt`` formats
+    ``check_pivot`` is the line that follows each pivot ``_p``, formatted with ``j`` (the
+    pivot's index) and ``tol`` (:func:`pivot_tolerance`); ``inverse_sqrt`` formats
     1/sqrt(_p)."""
     lines = []
+    tol = repr(pivot_tolerance(n))
     for j in range(n):
         pivot = f"_a{j}_{j}" + "".join(f" - _l{j}_{k}*_l{j}_{k}" for k in range(j))
         lines.append(f"{indent}_p = {pivot}")
-        lines.append(f"{indent}{check_pivot}")
+        lines.append(f"{indent}{check_pivot.format(j=j, tol=tol)}")
         lines.append(f"{indent}_r{j} = {inverse_sqrt}")
         for i in range(j + 1, n):
             rest = "".join(f" - _l{i}_{k}*_l{j}_{k}" for k in range(j))
@@ -439,8 +463,9 @@ def _cholesky_lines(n):
     """Unrolled Cholesky solve of the symmetric system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``.
 
     A non-finite entry (the sum of the entries is then inf or nan, so ``s - s != 0``) or a pivot
-    that is not > 0 (not positive definite) raises ArithmeticError, caught by the generated
-    code, which then hands A and b to numpy.linalg.solve and its checks.
+    that is not > n eps times its diagonal entry (not positive definite, or singular to working
+    precision: :func:`pivot_tolerance`) raises ArithmeticError, caught by the generated code,
+    which then hands A and b to the caller's checked solve.
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
     lines = [
@@ -448,7 +473,7 @@ def _cholesky_lines(n):
         f"        _s = {entries}",
         "        if not _s - _s == 0.0: raise ArithmeticError",
     ]
-    lines += _cholesky_steps(n, "        ", "if not _p > 0.0: raise ArithmeticError",
+    lines += _cholesky_steps(n, "        ", "if not _p > {tol}*_a{j}_{j}: raise ArithmeticError",
                              "1.0/math.sqrt(_p)")
     lines.append("        return numpy.array([" + ", ".join(f"_z{i}" for i in range(n)) + "])")
     lines.append("    except ArithmeticError:")
@@ -462,12 +487,13 @@ def _batched_cholesky_lines(n):
 
     LAPACK's batched ``numpy.linalg.solve`` costs about 4.6 us per 12x12 system; these n^3/6
     whole-array operations cost a fraction of that for batches of hundreds of states. A pivot
-    that is not > 0 everywhere, or a non-finite entry, leaves the unrolled path: the caller
-    then builds A and b and goes through numpy.linalg.solve and its checks.
+    that is not > n eps times its diagonal entry everywhere (:func:`pivot_tolerance`), or a
+    non-finite entry, leaves the unrolled path: the caller then builds A and b and goes
+    through its checked solve.
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
     lines = [f"    _ok = bool(numpy.isfinite({entries}).all())"]
-    lines += _cholesky_steps(n, "    ", "_ok = _ok and bool(numpy.all(_p > 0.0))",
+    lines += _cholesky_steps(n, "    ", "_ok = _ok and bool(numpy.all(_p > {tol}*_a{j}_{j}))",
                              "1.0/numpy.sqrt(numpy.abs(_p))")
     zs = ", ".join(f"_z{i}" for i in range(n))
     lines.append(f"    _x = numpy.stack(numpy.broadcast_arrays({zs}, numpy.empty(_batch)))[:{n}]")

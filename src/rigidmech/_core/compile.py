@@ -21,6 +21,10 @@ pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integratio
 
 import numpy as np
 import sympy
+from scipy.linalg.lapack import dgecon as _dgecon
+from scipy.linalg.lapack import dgetrf as _dgetrf
+from scipy.linalg.lapack import dgetrs as _dgetrs
+from scipy.linalg.lapack import dposv as _dposv
 
 from . import _codegen
 from ._codegen import (
@@ -481,17 +485,15 @@ class CompiledLinearSolve(_Compiled):
         return self._solve_batch(result[0], result[1], arrays, batch)
 
     def _solve_one(self, A, b, args):
-        x = None
+        x, reason = None, "is not finite"
         if np.isfinite(A).all():
-            try:
-                x = np.linalg.solve(A, b)
-            except np.linalg.LinAlgError:
-                pass
+            x, reason = _checked_solve(A, b, self.symmetric)
             if x is not None and (np.isfinite(x).all() or not np.isfinite(b).all()):
                 return x
+            reason = reason or "is not finite"
         arrays, batch = _batch_arrays(args, self._sizes, self._labels, self._name)
         where = _where(_values_at(arrays, self._sizes, self._labels, batch, 0))
-        raise _singular_error("is singular" if x is None else "is not finite", where)
+        raise _singular_error(reason, where)
 
     def _solve_batch(self, A, b, arrays, batch):
         n = self.n
@@ -504,14 +506,15 @@ class CompiledLinearSolve(_Compiled):
             bad, reason = int(np.argmin(finite_A)), "is not finite"
         else:
             with np.errstate(all="ignore"):
-                try:
-                    x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
-                except np.linalg.LinAlgError:
-                    bad = next(i for i in range(count) if not _solvable(stack_A[i]))
-            if bad is None:
-                singular = ~np.isfinite(x).all(axis=1) & np.isfinite(stack_b).all(axis=(1, 2))
+                singular = _singular_members(stack_A, self.symmetric)
                 if singular.any():
                     bad = int(np.argmax(singular))
+                else:
+                    x = np.linalg.solve(stack_A, stack_b)[:, :, 0]
+                    singular = (~np.isfinite(x).all(axis=1)
+                                & np.isfinite(stack_b).all(axis=(1, 2)))
+                    if singular.any():
+                        bad, reason = int(np.argmax(singular)), "is not finite"
         if bad is not None:
             values = _values_at(arrays, self._sizes, self._labels, batch, bad)
             where = _where(values) if batch == () else _where(values, bad)
@@ -525,12 +528,83 @@ class CompiledLinearSolve(_Compiled):
         )
 
 
-def _solvable(matrix):
+def _checked_solve(A, b, symmetric):
+    """x solving A x = b for one finite A, or (None, reason) if A is singular to working
+    precision.
+
+    A symmetric positive definite A (a mass matrix) is solved by LAPACK's Cholesky (``dposv``,
+    cheaper than numpy.linalg.solve) and its pivots tested against ``n eps`` times their
+    diagonal entries (:func:`~rigidmech._core._codegen.pivot_tolerance`); any other A by LU
+    of the equilibrated matrix, with the test of :func:`_singular_members` (LAPACK's
+    ``dgecon`` estimate of the reciprocal condition number).
+    """
+    if symmetric:
+        factor, x, info = _dposv(A, b)
+        if info == 0:
+            pivots = np.diagonal(factor)
+            if (pivots * pivots > _codegen.pivot_tolerance(len(b)) * np.diagonal(A)).all():
+                return x, None
+            return None, "is singular"
+    # LU of the equilibrated matrix (the test of _singular_members, by LAPACK for one state:
+    # dgecon estimates the reciprocal condition number from the factors)
+    rows = np.abs(A).max(axis=1)
+    if not rows.all():
+        return None, "is singular"
+    scaled = A / rows[:, None]
+    cols = np.abs(scaled).max(axis=0)
+    if not cols.all():
+        return None, "is singular"
+    scaled = scaled / cols
+    lu, pivots, info = _dgetrf(scaled)
+    if info != 0:
+        return None, "is singular"
+    rcond, _ = _dgecon(lu, np.abs(scaled).sum(axis=0).max())
+    if not rcond > _codegen.pivot_tolerance(len(b)):
+        return None, "is singular"
+    y, _ = _dgetrs(lu, pivots, b / rows)
+    return y / cols, None
+
+
+def _singular_members(stack, symmetric):
+    """Boolean mask of the matrices of ``stack`` (shape (count, n, n), finite) that are
+    singular to working precision.
+
+    Symmetric positive definite members are tested by their Cholesky pivots
+    (:func:`~rigidmech._core._codegen.pivot_tolerance`). Others (a symmetric matrix that is
+    not positive definite, any matrix when ``symmetric`` is false) are equilibrated (rows,
+    then columns, scaled to a largest entry of 1, so that the scale of an equation or of an
+    unknown does not matter) and are singular when their reciprocal condition number in the
+    1-norm, 1 / (|A|_1 |A^-1|_1), is at most n eps (what LAPACK's ``gecon`` estimates): LU's
+    backward error is of that size, so such a matrix is within rounding of a singular one.
+    """
+    n = stack.shape[-1]
+    tol = _codegen.pivot_tolerance(n)
+    if symmetric:
+        diag = np.diagonal(stack, axis1=1, axis2=2)
+        try:
+            factor = np.linalg.cholesky(stack)
+        except np.linalg.LinAlgError:
+            factor = None
+        if factor is not None:
+            pivots = np.diagonal(factor, axis1=1, axis2=2) ** 2
+            return ~(pivots > tol * diag).all(axis=1)
+    rows = np.abs(stack).max(axis=2, keepdims=True)
+    scaled = stack / np.where(rows == 0, 1.0, rows)
+    cols = np.abs(scaled).max(axis=1, keepdims=True)
+    scaled = scaled / np.where(cols == 0, 1.0, cols)
+    singular = (rows == 0).any(axis=(1, 2)) | (cols == 0).any(axis=(1, 2))
     try:
-        np.linalg.solve(matrix, np.zeros(matrix.shape[0]))
+        inverse = np.linalg.inv(scaled)
     except np.linalg.LinAlgError:
-        return False
-    return True
+        inverse = np.full_like(scaled, np.nan)
+        for k in range(len(scaled)):
+            try:
+                inverse[k] = np.linalg.inv(scaled[k])
+            except np.linalg.LinAlgError:
+                pass
+    norm = np.abs(scaled).sum(axis=1).max(axis=-1)
+    norm_inverse = np.abs(inverse).sum(axis=1).max(axis=-1)
+    return singular | ~(1.0 / (norm * norm_inverse) > tol)
 
 
 def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True):
@@ -569,9 +643,18 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
 
     Notes
     -----
-    At call time a non-finite A, or a singular one (numpy.linalg.solve fails, or the solution
-    is not finite while b is), raises :class:`~rigidmech._core.errors.SingularMassMatrixError`
-    naming the argument values (and the first offending batch index, for a batch).  A batch is
+    At call time a non-finite A, or one singular to working precision, raises
+    :class:`~rigidmech.errors.SingularMassMatrixError` naming the argument values (and the
+    first offending batch index, for a batch); so does a solution that is not finite while b
+    is. Singular to working precision means, on every path (unrolled Cholesky for one state or
+    a batch, LAPACK for n > ``UNROLLED_CHOLESKY_MAX_N``): a Cholesky pivot p_j <= n eps a_jj,
+    relative to its own diagonal entry (the rounding error of p_j is about (j + 1) eps a_jj,
+    so such a pivot carries no digit, and the matrix scaled to a unit diagonal then has an
+    eigenvalue <= n eps; the test does not depend on the units of the coordinates). A matrix
+    declared symmetric that is not positive definite, or one not declared symmetric, is
+    equilibrated (rows, then columns, to a largest entry of 1) and singular when its
+    reciprocal condition number in the 1-norm is <= n eps. M = [[c, c], [c, c]] is refused
+    for every c, whatever the rounding of its last pivot.  A batch is
     solved by one call of numpy.linalg.solve on the stack of systems (batch axes moved to the
     front and back).  The choice between numpy and the unrolled Cholesky on the single-state
     path is measured; see ``UNROLLED_CHOLESKY_MAX_N``.

@@ -1,4 +1,5 @@
-"""Symbolic helpers that keep shared subexpressions shared.
+"""Symbolic helpers: replacement that keeps shared subexpressions shared, and the decisions
+"is this zero?", one function per meaning.
 
 sympy's ``xreplace`` walks an expression as a tree: a subexpression reached along many paths
 is rebuilt once per path. Derived equations of motion are DAGs in which the same velocity
@@ -6,13 +7,25 @@ components appear in many entries, so a tree walk costs as much as the swollen e
 :func:`xreplace_shared` walks each distinct node once (memoised), which keeps the cost
 proportional to the size of the DAG (ARCHITECTURE.md, principle 5). sympy has no memoised
 replacement, hence this small function.
+
+"Is it zero?" has four meanings in rigidmech, each with its own cost and answer; each has one
+function here (and only here):
+
+* :func:`is_exactly_zero` -- structurally zero, no algebra (cheap; used to skip terms);
+* :func:`is_identically_zero` -- zero for every value of the symbols, decided by ``simplify``,
+  numbers to 25 digits (geometry: are two vectors parallel, is a basis orthonormal);
+* :func:`simplifies_to_zero` -- the same question for trigonometric expressions of angles
+  (operators of inertia after rotations): a cheap canonical form first, ``simplify`` last;
+* :func:`zero_decision` -- three-valued: True, False, or None when sympy cannot decide (the
+  torsors layer reports an undecided case instead of guessing).
 """
 
 from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared"]
+__all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
+           "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
 
 def xreplace_shared(exprs, rule, memo=None):
@@ -132,3 +145,83 @@ def atoms_shared(exprs):
         else:
             stack.extend(e.args)
     return symbols, functions, derivatives
+def is_exactly_zero(x) -> bool:
+    """Whether the sympy scalar ``x`` is structurally zero: the integer 0 or a float zero
+    (``Float(0.0) != 0`` in sympy >= 1.13). No algebra: ``sin(a)**2 + cos(a)**2 - 1`` is not
+    exactly zero.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> is_exactly_zero(sp.Float(0.0)), is_exactly_zero(a - a)
+    (True, True)
+    >>> is_exactly_zero(sp.sin(a)**2 + sp.cos(a)**2 - 1)
+    False
+    """
+    return x == 0 or (x.is_Number and x.is_zero)
+
+
+def is_identically_zero(expr) -> bool:
+    """Whether the scalar ``expr`` is zero for every value of its symbols, decided with
+    ``sympy.simplify``; a number counts as zero when its magnitude, evaluated to 30 digits, is
+    below 1e-25 (an exact number whose simplification sympy would not find).
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> is_identically_zero(sp.sin(a)**2 + sp.cos(a)**2 - 1)
+    True
+    >>> is_identically_zero(sp.cos(sp.pi / 5) - (1 + sp.sqrt(5)) / 4), is_identically_zero(a)
+    (True, False)
+    """
+    expr = sp.sympify(expr)
+    if expr == 0:
+        return True
+    if expr.is_number:
+        return bool(abs(sp.N(expr, 30)) < 1e-25)
+    return sp.simplify(expr) == 0
+
+
+def simplifies_to_zero(x) -> bool:
+    """Whether ``x`` simplifies to 0, trying first a cheap trigonometric canonical form
+    (multiple angles expanded, sin^2 replaced by 1 - cos^2) and ``sympy.simplify`` only if that
+    fails. Made for entries of rotated operators of inertia; numbers are not rounded.
+
+    Examples
+    --------
+    >>> q = sp.Symbol("q")
+    >>> simplifies_to_zero(sp.cos(2 * q) - 1 + 2 * sp.sin(q)**2)
+    True
+    >>> simplifies_to_zero(sp.cos(q))
+    False
+    """
+    if x == 0:
+        return True
+    e = sp.expand(sp.expand_trig(x))
+    if e == 0:
+        return True
+    rule = {sp.sin(a) ** 2: 1 - sp.cos(a) ** 2 for a in {s.args[0] for s in e.atoms(sp.sin)}}
+    if rule and sp.expand(e.subs(rule)) == 0:
+        return True
+    return sp.simplify(x) == 0
+
+
+def zero_decision(expr) -> bool | None:
+    """Three-valued decision on the scalar ``expr``: True if it simplifies to 0, False if it is
+    known not to be zero (a non-zero number, or sympy's assumptions say so), None if sympy cannot
+    decide (a symbol of unknown value).
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a"); b = sp.Symbol("b", positive=True)
+    >>> zero_decision(sp.sin(a)**2 + sp.cos(a)**2 - 1), zero_decision(b + 1), zero_decision(a)
+    (True, False, None)
+    """
+    if expr == 0:
+        return True
+    z = sp.simplify(expr)
+    if z == 0:
+        return True
+    if z.is_zero is False or (z.is_number and z != 0):
+        return False
+    return None

@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.validation import nonnegative
 from ..kinematics import Solid
 from ..torsors import Torsor, couple, slider
 from ..vectors import Point, Vector
@@ -205,9 +206,8 @@ class Spring(Action):
         for s, name in ((on_a, "on_a"), (on_b, "on_b")):
             if s is not None:
                 _check_solid(s, name)
-        self._k, self._l0 = sp.sympify(stiffness), sp.sympify(free_length)
-        if self._k.is_negative:
-            raise ArgumentError(f"`stiffness` must be >= 0; got {stiffness}.")
+        self._k = nonnegative(stiffness, "stiffness")
+        self._l0 = nonnegative(free_length, "free_length")
         self._a, self._b, self._on_a, self._on_b = a, b, on_a, on_b
 
     def _length(self):

@@ -465,6 +465,9 @@ class EquationsOfMotion:
         -------
         Simulation
         """
+        inputs = {_name(w) for w in self._inputs}
+        _check_simulation_inputs(len(self._q), t, q0, u0, method, n_output,
+                                 {k: v for k, v in params.items() if k not in inputs})
         q0 = self._initial(q0, "q0", default_zero=False)
         u0 = self._initial(u0, "u0", default_zero=True)
         y0 = np.concatenate((q0, u0))
@@ -480,6 +483,7 @@ class EquationsOfMotion:
         elapsed = _time.perf_counter() - start
         if not res.success:
             raise NumericalError(f"integration failed: {res.message}")
+        _check_finite_motion(res)
         return Simulation(self, res, params, elapsed, notes=fun.notes)
 
     def display_rule(self) -> dict:
@@ -540,6 +544,57 @@ class EquationsOfMotion:
         inputs = f", inputs={list(self._inputs)}" if self._inputs else ""
         return (f"EquationsOfMotion(coordinates={list(self._coordinates)}, "
                 f"n={len(self._q)}, parameters={list(self._params)}{inputs})")
+
+
+def _finite_reals(values, argument, n=None):
+    """Raise unless ``values`` is a sequence (of length ``n``) of finite real numbers."""
+    if isinstance(values, str | bytes) or not hasattr(values, "__len__"):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a sequence of {n or 'several'} numbers; got "
+            f"{type(values).__name__} {values!r}.")
+    if n is not None and len(values) != n:
+        raise ArgumentError(f"`{argument}` must give {n} initial values; got {values!r}.")
+    for v in values:
+        _finite_real_number(v, f"`{argument}` must hold finite real numbers")
+
+
+def _finite_real_number(v, rule):
+    if isinstance(v, bool) or not isinstance(v, int | float | np.integer | np.floating
+                                             | sp.Number):
+        raise ArgumentTypeError(f"{rule}; got {type(v).__name__} {v!r}.")
+    if not np.isfinite(float(v)):
+        raise ArgumentError(f"{rule}; got {v!r}.")
+
+
+def _check_simulation_inputs(n, t, q0, u0, method, n_output, params):
+    """The checks of :meth:`EquationsOfMotion.simulate` on the values it is given (numbers
+    finite and real, a time span of two numbers, a method name, a count of outputs), so that a
+    wrong value is an error here rather than a nan motion or an error from numpy."""
+    _finite_reals(t, "t", 2)
+    if q0 is not None and not isinstance(q0, dict):
+        _finite_reals(q0, "q0")
+    if u0 is not None and not isinstance(u0, dict):
+        _finite_reals(u0, "u0")
+    if not isinstance(method, str):
+        raise ArgumentTypeError(
+            f"`method` must be the name of a method of rigidmech.ode.solve (such as "
+            f"'dop853'); got {type(method).__name__} {method!r}.")
+    if isinstance(n_output, bool) or not isinstance(n_output, int | np.integer) \
+            or n_output < 2:
+        raise ArgumentError(
+            f"`n_output` must be an integer >= 2 (the output times include both ends of "
+            f"`t`); got {n_output!r}.")
+    for name, value in params.items():
+        _finite_real_number(value, f"`{name}` must be a finite real number")
+
+
+def _check_finite_motion(res):
+    bad = ~np.isfinite(res.y).all(axis=0)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise NumericalError(
+            f"the motion is not finite from t = {res.t[k]!r} on (state {res.y[:, k]!r}): "
+            "check the initial values and the parameters.")
 
 
 class Simulation:

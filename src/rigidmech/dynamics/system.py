@@ -28,9 +28,9 @@ from functools import partial
 
 import sympy as sp
 
-from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, FrameError
 from .._core.symbolic import free_symbols_shared
-from ..actions import Action, Joint
+from ..actions import Action, Gravity, Joint
 from ..kinematics import Solid
 from ..kinetics import Body
 from ..torsors import Torsor
@@ -99,6 +99,23 @@ def _constants(bodies, contributions):
         for v in (torsor.resultant, torsor.moment, torsor.point.position):
             exprs.extend(x for _, c in v.parts for x in c)
     return tuple(sorted(free_symbols_shared(exprs) - {t}, key=lambda s: s.name))
+def _body_coordinates(body):
+    """The parameters of situation q(t) on which the body's frame or mass centre depends."""
+    exprs = _frame_exprs(body.frame)
+    exprs.extend(x for _, c in body.centre.position.parts for x in c)
+    return _coordinates_in(exprs)
+
+
+def _check_fixed_reference(galilean):
+    """Refuse a Galilean reference that moves (with a coordinate or with time) relative to
+    the root frame of its tree: the equations are written relative to the root."""
+    moving = [e for e in _frame_exprs(galilean) if sp.sympify(e).has(t)]
+    if moving:
+        raise FrameError(
+            f"`galilean` frame {galilean.name} moves relative to the root frame "
+            f"{galilean.root.name} (its orientation or origin depends on {moving[0]}); the "
+            "Galilean reference must not move relative to the root frame. Use a frame fixed "
+            "in the root (non-Galilean references are not supported).")
 
 
 class System:
@@ -107,7 +124,9 @@ class System:
     Parameters
     ----------
     galilean : Frame
-        The Galilean reference R (ch. 18.1.2); bodies may be connected to it.
+        The Galilean reference R (ch. 18.1.2); bodies may be connected to it. It must not
+        move relative to the root frame of its tree (a frame rotating or translating with a
+        coordinate or with time is refused with :class:`~rigidmech.errors.FrameError`).
     coordinates : sequence of q(t), optional
         The parameters of situation, in the order of the equations. Default: those found in
         the bodies, in the order of :attr:`coordinates`.
@@ -141,8 +160,13 @@ class System:
         if not isinstance(galilean, Frame):
             raise ArgumentTypeError(
                 f"`galilean` must be a Frame; got {type(galilean).__name__}.")
+        _check_fixed_reference(galilean)
         self._galilean = galilean
         self._ground = Solid(galilean.name, frame=galilean)
+        # validation state: frame names, coordinate owners (coordinate -> (body, owner))
+        self._frames: dict = {}
+        self._owners: dict = {}
+        self._register_frames(galilean, galilean.name)
         self._bodies: list[Body] = []
         self._joints: dict = {}  # child body -> (parent solid, joint)
         self._actions: list[Action] = []
@@ -173,6 +197,13 @@ class System:
     def add(self, body: Body) -> None:
         """Add a body that is not connected to anything (a free body, ch. 18.4).
 
+        Raises
+        ------
+        ConnectionError\\_
+            If the body, a body of the same name, or a different frame of the same name is
+            already in the system, or if one of its coordinates is already moved by a
+            connection or another free body.
+
         Examples
         --------
         >>> import rigidmech as rm
@@ -185,20 +216,75 @@ class System:
         body = self._solid(body, "body")
         if body is self._ground:
             raise ConnectionError_("the Galilean reference is not a body to add.")
+        self._check_new_body(body)
+        self._claim(body, _body_coordinates(body), f"the free body {body.name}")
+        self._append(body)
+
+    def _append(self, body):
+        self._register_frames(body.frame, body.name)
+        self._bodies.append(body)
+        self._cache.clear()
+
+    # -- validation (issue: never silently wrong) ---------------------------------------
+    def _check_new_body(self, body):
         if body in self._bodies:
             raise ConnectionError_(f"body {body.name} is already in the system.")
         if body.frame.root != self._galilean.root:
             raise ConnectionError_(
                 f"body {body.name} is attached to frame {body.frame.name} of another tree "
                 f"than {self._galilean.name}.")
-        self._bodies.append(body)
-        self._cache.clear()
+        if any(b.name == body.name for b in self._bodies):
+            raise ConnectionError_(
+                f"two bodies named {body.name!r} in one system: give each body its own name "
+                "(results and connection actions are reported by name).")
+        self._check_frames(body.frame, body.name)
+
+    def _check_frames(self, frame, owner):
+        f = frame
+        while f is not None:
+            known = self._frames.get(f.name)
+            if known is not None and known[0] != f:
+                raise ConnectionError_(
+                    f"two different frames named {f.name!r} (of bodies {known[1]} and "
+                    f"{owner}) in one system: give each frame its own name.")
+            f = f.parent
+
+    def _register_frames(self, frame, owner):
+        f = frame
+        while f is not None:
+            self._frames.setdefault(f.name, (f, owner))
+            f = f.parent
+
+    def _claim(self, body, coordinates, owner):
+        """Record that ``owner`` (a connection or a free body) moves ``coordinates``; a
+        coordinate moved by two connections would be counted twice in the equations."""
+        for q in coordinates:
+            known = self._owners.get(q)
+            if known is not None and known[0] is not body:
+                raise ConnectionError_(
+                    f"the coordinate {q} of body {body.name} is already moved by {known[1]}: "
+                    "each parameter of situation belongs to one connection (or free body). "
+                    "Build the body's frame from its parent's, or give it its own coordinate.")
+        for q in coordinates:
+            self._owners[q] = (body, owner)
 
     def connect(self, parent, child, joint: Joint) -> None:
         """Connect ``child`` to ``parent`` (a Body or the Galilean frame) by ``joint``.
 
         The joint is checked against the frames: the relative motion of the child must be
         one the joint allows (ch. 13.2.2).
+
+        Each parameter of situation belongs to one connection: the coordinates of the
+        child's frame and mass centre that are not its parent's are those of this connection,
+        and must not be moved by another one (the same q in two bodies hanging from the
+        ground would be counted twice).
+
+        Raises
+        ------
+        ConnectionError\\_
+            For a child that already has a parent, a parent not yet in the system, a second
+            body or a different frame with a name already used, or a coordinate already moved
+            by another connection.
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
@@ -215,24 +301,55 @@ class System:
         if parent is not self._ground and parent not in self._bodies:
             raise ConnectionError_(
                 f"connect the parent {parent.name} before its children.")
+        new_body = child not in self._bodies
+        if new_body:
+            self._check_new_body(child)
         R = self._galilean
         at = joint.at
         motion = child.kinematic_torsor(relative_to=R, at=at) + (
             -parent.kinematic_torsor(relative_to=R, at=at))
         joint.check(motion)
-        if child not in self._bodies:
-            self.add(child)
+        parent_coordinates = set() if parent is self._ground else set(
+            _body_coordinates(parent))
+        self._claim(child, [q for q in _body_coordinates(child) if q not in parent_coordinates],
+                    f"the connection {parent.name} -> {child.name}")
+        if new_body:
+            self._append(child)
         self._joints[child] = (parent, joint)
         self._cache.clear()
 
     def act(self, action: Action) -> None:
-        """Add an external or internal action (gravity, force, couple, spring, ...)."""
+        """Add an external or internal action (gravity, force, couple, spring, ...).
+
+        Raises
+        ------
+        ConnectionError\\_
+            If the action is already in the system, if it is a second gravity, or if it acts
+            on a body that is not in the system (connect the body first).
+        """
         if not isinstance(action, Action):
             raise ArgumentTypeError(
                 f"`action` must be an Action (rm.gravity, rm.actions.Force, ...); got "
                 f"{type(action).__name__}.")
+        self._check_action(action)
         self._actions.append(action)
         self._cache.clear()
+
+    def _check_action(self, action):
+        if any(a is action for a in self._actions):
+            raise ConnectionError_(
+                f"this action is already in the system: {action!r}; it would count twice.")
+        present = [a for a in self._actions if isinstance(a, Gravity)]
+        if isinstance(action, Gravity) and present:
+            raise ConnectionError_(
+                f"gravity is already acting on the system ({present[0]!r}); a second gravity "
+                "would double the weights. Give one field (the sum, if several are meant).")
+        solids = [self._ground, *self._bodies]
+        for solid, _ in action.contributions(solids):
+            if solid is not self._ground and not any(solid is b for b in self._bodies):
+                raise ConnectionError_(
+                    f"`action` acts on body {solid.name}, which is not in the system: "
+                    "connect (or add) the body before acting on it.")
 
     # -- read-only views ----------------------------------------------------------------
     @property

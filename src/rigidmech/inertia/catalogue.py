@@ -36,7 +36,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Vector
 from ._checks import check_frame, nonnegative
-from .operator import InertiaOperator
+from .operator import UNPLACED, InertiaOperator
 
 __all__ = [
     "rod", "ring", "disk", "cylinder", "tube", "hollow_cylinder", "cylindrical_shell",
@@ -68,13 +68,15 @@ def _revolution(axis, axial, transverse, centre):
     frame, n = _axis(axis)
     moments = [transverse] * 3
     moments[n] = axial
-    return _central(InertiaOperator.from_products(*moments, frame=frame, at=centre))
+    return _central(InertiaOperator.from_products(*moments, frame=frame, at=centre), centre)
 
 
-def _central(op):
+def _central(op, centre):
     """Mark a catalogue operator as taken at the body's mass centre (see
-    :meth:`InertiaOperator.placed_at`)."""
-    return InertiaOperator._make(op.matrix, op.frame, op.at, central=True)
+    :meth:`InertiaOperator.placed_at`): at the given ``centre``, or, without one, at the
+    frame's origin until a body places it at its own mass centre."""
+    return InertiaOperator._make(op.matrix, op.frame, op.at,
+                                 central=True if centre is not None else UNPLACED)
 
 
 def rod(mass, length, *, axis, centre=None) -> InertiaOperator:
@@ -287,7 +289,7 @@ def block(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
     check_frame(frame, "frame")
     m, a, b, c = (nonnegative(x, n) for x, n in ((mass, "mass"), (a, "a"), (b, "b"),
                                                   (c, "c")))
-    return _central(InertiaOperator.from_products(
+    return _central(centre=centre, op=InertiaOperator.from_products(
         m * (b**2 + c**2) / 12, m * (c**2 + a**2) / 12, m * (a**2 + b**2) / 12, frame=frame,
         at=centre))
 
@@ -322,6 +324,6 @@ def ellipsoid(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
     check_frame(frame, "frame")
     m, a, b, c = (nonnegative(x, n) for x, n in ((mass, "mass"), (a, "a"), (b, "b"),
                                                   (c, "c")))
-    return _central(InertiaOperator.from_products(
+    return _central(centre=centre, op=InertiaOperator.from_products(
         m * (b**2 + c**2) / 5, m * (c**2 + a**2) / 5, m * (a**2 + b**2) / 5, frame=frame,
         at=centre))

@@ -24,6 +24,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import simplifies_to_zero
 from ..vectors import Point, Vector
 from ..vectors._rotations import rotation_steps
 from ._checks import (
@@ -41,6 +42,10 @@ from .principal import PrincipalAxes, principal_axes
 __all__ = ["InertiaOperator"]
 
 _ZERO = sp.S.Zero
+
+#: Value of the private flag ``_central`` of a catalogue operator built without ``centre=``:
+#: central, at the origin of its frame only until a body places it at its mass centre.
+UNPLACED = "unplaced"
 
 
 def _sym(rows):
@@ -81,18 +86,13 @@ def _elementary_step(J, axis, angle):
                               else new[max(r, k)][min(r, k)])
 
 
-def _is_zero(x):
-    """Whether ``x`` simplifies to 0: cheap trigonometric canonical form first (expand the
-    multiple angles, replace sin^2 by 1 - cos^2), ``sympy.simplify`` only if that fails."""
-    if x == 0:
+def _has_string(value):
+    """Whether a nested list/tuple contains a string (sympy would read it as a symbol)."""
+    if isinstance(value, str | bytes):
         return True
-    e = sp.expand(sp.expand_trig(x))
-    if e == 0:
-        return True
-    rule = {sp.sin(a) ** 2: 1 - sp.cos(a) ** 2 for a in {s.args[0] for s in e.atoms(sp.sin)}}
-    if rule and sp.expand(e.subs(rule)) == 0:
-        return True
-    return sp.simplify(x) == 0
+    if isinstance(value, list | tuple):
+        return any(_has_string(v) for v in value)
+    return False
 
 
 class InertiaOperator:
@@ -232,6 +232,10 @@ class InertiaOperator:
         """
         frame = check_frame(frame, "frame")
         at = cls._check_at(frame, at)
+        if isinstance(matrix, list | tuple) and _has_string(matrix):
+            raise ArgumentTypeError(
+                "`matrix` must be a number or a sympy expression in every entry; got a string "
+                "(a string is not read as a symbol).")
         try:
             m = sp.Matrix(matrix)
         except (sp.SympifyError, TypeError, ValueError) as exc:
@@ -283,7 +287,24 @@ class InertiaOperator:
     def is_central(self) -> bool:
         """True for an operator known to be taken at the body's mass centre (the catalogue's
         operators, and the result of :meth:`moved` to the mass centre)."""
-        return self._central
+        return bool(self._central)
+
+    @property
+    def is_placed(self) -> bool:
+        """False only for a catalogue operator built without ``centre=``: central, but its
+        point (the origin of its frame) is a default that a
+        :class:`~rigidmech.kinetics.Body` replaces by its own mass centre.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech.inertia import disk
+        >>> from rigidmech.vectors import Frame
+        >>> R1 = Frame("R1")
+        >>> disk(1, 2, axis=R1.k).is_placed, disk(1, 2, axis=R1.k, centre=R1.origin).is_placed
+        (False, True)
+        """
+        return self._central != UNPLACED
 
     def placed_at(self, centre: Point) -> InertiaOperator:
         """The same central operator, taken at the mass centre ``centre`` of the body.
@@ -446,8 +467,10 @@ class InertiaOperator:
         Raises
         ------
         ArgumentError
-            If the mass is negative, or (numbers) if the operator at G implied by ``mass``
-            and ``centre`` is not an operator of inertia.
+            If the mass is negative, if this operator is a central one (:attr:`is_central`,
+            the catalogue's) and ``centre`` is not the point it is taken at, or (numbers) if
+            the operator at G implied by ``mass`` and ``centre`` is not an operator of
+            inertia.
 
         Examples
         --------
@@ -466,6 +489,13 @@ class InertiaOperator:
         check_same_tree(self._frame, to, "to")
         check_same_tree(self._frame, centre, "centre")
         mass = nonnegative(mass, "mass")
+        if self._central and centre != self._at and not (centre - self._at).is_zero:
+            raise ArgumentError(
+                f"this operator is a central one, taken at the mass centre {self._at.name} of "
+                f"its body, but `centre` is {centre.name}: moving it would use the wrong "
+                f"Huygens term. Build it at that centre (the catalogue's `centre=`) or place it "
+                f"there first: `.placed_at({centre.name}).moved(...)`."
+            )
         J = self._matrix
         back = _huygens(mass, (centre - self._at)._comps(self._frame))
         if back is not None:
@@ -648,7 +678,7 @@ class InertiaOperator:
         if not (d.is_zero or d.equals(Vector.zero())):
             return False
         diff = self._matrix - other.in_basis(self._frame)._matrix
-        return all(_is_zero(x) for x in diff)
+        return all(simplifies_to_zero(x) for x in diff)
 
     def __eq__(self, other):
         if not isinstance(other, InertiaOperator):

@@ -18,6 +18,8 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import zero_decision
+from .._core.validation import nonnegative
 from ..inertia import InertiaOperator
 from ..kinematics import Solid
 from ..torsors import Torsor
@@ -36,14 +38,30 @@ class Body(Solid):
     frame : Frame
         The frame attached to the body.
     mass : scalar, optional
-        The mass m >= 0 (None for a massless solid, which carries no inertia).
+        The mass m: a finite real number >= 0, or a symbol (``rm.constants("m",
+        positive=True)``); a symbol known to be negative is refused, one of unknown sign is
+        kept. **Massless link**: ``mass=None`` (the default) or ``mass=0`` is a solid with no
+        weight and no inertia (``inertia`` must then be omitted), which takes part in the
+        equations only through its connections; ``mass=None`` also refuses to give a kinetic
+        energy or torsor, ``mass=0`` gives zero.
     centre : Point, optional
         The mass centre G; defaults to the origin of ``frame``.
     inertia : InertiaOperator, optional
-        The operator of inertia in a basis fixed in the body: an operator of the catalogue
-        (:mod:`rigidmech.inertia`), which is the central one and is placed at G, or an
-        operator given at any point of the body, moved to G by the relations of Huygens.
+        The operator of inertia in a basis fixed in the body (checked: the rotation of its
+        basis relative to ``frame`` must be constant): an operator of the catalogue
+        (:mod:`rigidmech.inertia`), which is the central one and is placed at G (built with
+        ``centre=``, that centre must be G), or an operator given at any point of the body,
+        moved to G by the relations of Huygens.
         Defaults to zero (a particle).
+
+    Raises
+    ------
+    ArgumentTypeError
+        For a mass that is not a number or a sympy expression (a string, say).
+    ArgumentError
+        For a mass that is not a finite real number >= 0, an inertia given without a mass
+        (or with ``mass=0``), in a basis that turns relative to the body, or central at
+        another point than ``centre``.
 
     Examples
     --------
@@ -64,13 +82,7 @@ class Body(Solid):
                  inertia: InertiaOperator | None = None):
         super().__init__(name, frame)
         if mass is not None:
-            try:
-                mass = sp.sympify(mass)
-            except (sp.SympifyError, TypeError) as exc:
-                raise ArgumentTypeError(
-                    f"`mass` must be a number or a symbol; got {type(mass).__name__}.") from exc
-            if mass.is_negative or (mass.is_number and mass.is_real and mass < 0):
-                raise ArgumentError(f"`mass` must be >= 0; got {mass}.")
+            mass = nonnegative(mass, "mass")
         if centre is None:
             centre = frame.origin
         check_point(centre, "centre")
@@ -81,13 +93,26 @@ class Body(Solid):
             )
         if inertia is not None and mass is None:
             raise ArgumentError("`inertia` given without `mass`: give the body's mass too.")
+        if inertia is not None and mass == 0:
+            raise ArgumentError(
+                "`inertia` given with `mass=0`: a massless link has no inertia; omit "
+                "`inertia` or give the body's mass.")
         if inertia is not None:
             if inertia.at != centre:
                 # a catalogue operator is the body's central one: place it at G; any other
                 # operator is moved to G by the relations of Huygens
+                if inertia.is_central and inertia.is_placed \
+                        and not (centre - inertia.at).is_zero:
+                    raise ArgumentError(
+                        f"`inertia` is a central operator taken at {inertia.at.name}, but the "
+                        f"body's mass centre `centre` is {centre.name}: two different mass "
+                        f"centres. Build the operator with centre={centre.name} (or without "
+                        f"`centre=`, and the body places it), or give the body "
+                        f"centre={inertia.at.name}.")
                 inertia = (inertia.placed_at(centre) if inertia.is_central
                            else inertia.moved(centre, mass=mass, centre=centre))
             if inertia.frame != frame:
+                _check_fixed_in_body(inertia.frame, frame)
                 inertia = inertia.in_basis(frame)
         self._mass = mass
         self._centre = centre
@@ -179,3 +204,16 @@ class Body(Solid):
     def __repr__(self):
         return (f"Body({self._name!r}, frame={self._frame.name}, mass={self._mass}, "
                 f"centre={self._centre.name})")
+
+
+def _check_fixed_in_body(basis_frame, frame):
+    """Raise unless the basis of ``basis_frame`` is fixed relative to ``frame``: the rotation
+    vector of one relative to the other is zero (ch. 9.2.3), so their direction cosines are
+    constant and the matrix of inertia keeps its values in the body."""
+    w = frame.rotation_vector(basis_frame)
+    if w.is_zero or all(zero_decision(c) is True for c in w._comps(frame)):
+        return
+    raise ArgumentError(
+        f"`inertia` must be given in a basis fixed in the body: its frame {basis_frame.name} "
+        f"turns relative to the body's frame {frame.name} (rotation vector {w}). Give the "
+        f"matrix in {frame.name} or in a frame fixed in it.")

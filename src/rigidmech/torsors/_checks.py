@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-import sympy as sp
-
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import zero_decision
 from ..vectors import Point, Vector
 from ..vectors.geometry import Line
 from ..vectors.points import check_point
@@ -19,18 +18,6 @@ def _check_vector(v, argument):
         raise ArgumentTypeError(f"`{argument}` must be a Vector; got {type(v).__name__}.")
 
 
-def _is_zero(expr) -> bool | None:
-    """Exact decision when possible: True/False, or None if undecidable."""
-    if expr == 0:
-        return True
-    z = sp.simplify(expr)
-    if z == 0:
-        return True
-    if z.is_zero is False or (z.is_number and z != 0):
-        return False
-    return None
-
-
 def _vector_is_zero(v: Vector) -> bool | None:
     """Exact decision on a vector: True/False, or None if undecidable.
 
@@ -39,7 +26,7 @@ def _vector_is_zero(v: Vector) -> bool | None:
     """
     if v.is_zero:
         return True
-    decisions = [_is_zero(c) for c in v.components(v.frames[0])]
+    decisions = [zero_decision(c) for c in v.components(v.frames[0])]
     if any(d is False for d in decisions):
         return False
     if all(d is True for d in decisions):

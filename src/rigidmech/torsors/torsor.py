@@ -22,6 +22,7 @@ import sympy as sp
 from sympy.printing.pretty.stringpict import prettyForm
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import zero_decision
 from ..vectors import Point, Vector
 from ..vectors.geometry import Line
 from ..vectors.points import check_point
@@ -29,7 +30,6 @@ from ._checks import (
     _axis_elements,
     _check_vector,
     _is_line,
-    _is_zero,
     _make_line,
     _undecided,
     _vector_is_zero,
@@ -287,7 +287,7 @@ class Torsor:
             if m_zero is None:
                 raise _undecided("the moment of a torsor with zero resultant", self._moment)
             return "zero" if m_zero else "couple"
-        a = _is_zero(self.automoment)
+        a = zero_decision(self.automoment)
         if a is None:
             raise _undecided("the automoment", self.automoment)
         return "slider" if a else "torsor"

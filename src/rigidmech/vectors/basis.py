@@ -20,6 +20,7 @@ from itertools import combinations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import is_identically_zero
 from .vector import Vector
 
 __all__ = ["linearly_independent", "linear_dependence", "Basis", "double_cross"]
@@ -46,16 +47,6 @@ def _component_matrix(vectors, frame=None):
     if frame is None:
         return sp.zeros(3, len(vectors))
     return sp.Matrix.hstack(*(v.components(frame) for v in vectors))
-
-
-def _is_zero(expr) -> bool:
-    """Whether a scalar expression is identically zero (decided with simplify)."""
-    expr = sp.sympify(expr)
-    if expr == 0:
-        return True
-    if expr.is_number:
-        return bool(abs(sp.N(expr, 30)) < 1e-25)
-    return sp.simplify(expr) == 0
 
 
 def linearly_independent(*vectors) -> bool:
@@ -109,7 +100,7 @@ def linearly_independent(*vectors) -> bool:
     if n > 3:
         return False
     m = _component_matrix(vectors)
-    return any(not _is_zero(m.extract(list(rows), list(range(n))).det())
+    return any(not is_identically_zero(m.extract(list(rows), list(range(n))).det())
                for rows in combinations(range(3), n))
 
 
@@ -226,7 +217,7 @@ class Basis:
             frame = _reference_frame(vectors)
         m = _component_matrix(vectors, frame)
         volume = sp.simplify(m.det()) if frame is not None else sp.S.Zero
-        if _is_zero(volume):
+        if is_identically_zero(volume):
             raise ArgumentError(
                 f"`e1, e2, e3` must be non-coplanar to form a basis; got {e1!r}, {e2!r}, "
                 f"{e3!r}, whose mixed product is 0."
@@ -391,7 +382,7 @@ class Basis:
     @property
     def is_orthonormal(self) -> bool:
         """Whether the metric is the identity (ch. 1.3.5)."""
-        return all(_is_zero(self._metric[a, b] - (1 if a == b else 0))
+        return all(is_identically_zero(self._metric[a, b] - (1 if a == b else 0))
                    for a in range(3) for b in range(3))
 
     @property

@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
-from .basis import _is_zero
+from .._core.symbolic import is_identically_zero
 from .points import Point
 from .vector import Vector, _check_frame
 
@@ -149,7 +149,7 @@ class Curve:
     def _speed2(self, at):
         (d1,) = self._at(at, 1)
         v2 = sp.simplify(d1.dot(d1))
-        if _is_zero(v2):
+        if is_identically_zero(v2):
             raise ArgumentError(
                 f"singular point: the velocity dr/d{self._parameter} is zero at "
                 f"{self._where(at)}, so the curve has no tangent there; `at` must be a "
@@ -162,7 +162,7 @@ class Curve:
         self._speed2(at)
         c = d1.cross(d2)
         c2 = sp.simplify(c.dot(c))
-        if _is_zero(c2):
+        if is_identically_zero(c2):
             raise ArgumentError(
                 f"the principal normal, the binormal and the torsion are undefined where the "
                 f"curvature is zero; got zero curvature at {self._where(at)} (straight line "

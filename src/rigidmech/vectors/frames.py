@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .._core.errors import ArgumentTypeError, FrameError
+from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
+from .._core.validation import finite_real
 from ._rotations import ONE, ZERO, FrameBase, direction_cosines
 from .points import Point
 from .symbols import t
@@ -21,6 +22,13 @@ from .vector import Vector, rotation_vector
 __all__ = ["Frame"]
 
 _AXES = "ijk"
+_ANGLE_HINT = "For a parameter of situation use rm.coordinates (q = rm.coordinates('q'))."
+
+
+def _coordinates3(x, y, z):
+    """The coordinates x, y, z given by the user, checked (finite real numbers or sympy
+    expressions; a string is refused rather than read as a symbol)."""
+    return tuple(finite_real(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z")))
 
 
 class Frame(FrameBase):
@@ -104,7 +112,7 @@ class Frame(FrameBase):
                 f"`about` must be a Vector (for example {self._name}.k); "
                 f"got {type(about).__name__}."
             )
-        angle = _sympify(angle, "angle")
+        angle = finite_real(angle, "angle", hint=_ANGLE_HINT)
         origin = self._check_origin(origin)
         c = about._comps(self)
         nonzero = [n for n in range(3) if c[n] != 0]
@@ -154,6 +162,8 @@ class Frame(FrameBase):
         Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(psi(t), t),
                  cos(theta(t))*Derivative(psi(t), t) + Derivative(phi(t), t)]])
         """
+        if not isinstance(name, str) or not name:
+            raise ArgumentError(f"`name` must be a non-empty string; got {name!r}.")
         f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
         f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
         return f2.rotated(name, about=f2.k, angle=spin)
@@ -275,7 +285,7 @@ class Frame(FrameBase):
         >>> Frame("R0").vector(1, 2, 3)
         R0.i + 2*R0.j + 3*R0.k
         """
-        return Vector.from_components(self, (x, y, z))
+        return Vector.from_components(self, _coordinates3(x, y, z))
 
     def point(self, name: str, x, y, z) -> Point:
         """The point of coordinates (x, y, z) in this reference system (ch. 2.3.3).
@@ -287,7 +297,7 @@ class Frame(FrameBase):
         >>> R0.point("A", 1, 2, 0).coordinates(R0).T
         Matrix([[1, 2, 0]])
         """
-        return self._origin.moved(name, self.vector(x, y, z))
+        return self._origin.moved(name, Vector.from_components(self, _coordinates3(x, y, z)))
 
     def dcm(self, other: Frame) -> sp.ImmutableMatrix:
         """Direction cosines C: components in ``self`` = C @ components in ``other``; the
@@ -334,16 +344,3 @@ class Frame(FrameBase):
                     f"angle={self._angle}{origin})")
         return f"<Frame {self._name!r}: general rotation from {parent!r}{origin}>"
 
-
-def _sympify(x, argument):
-    try:
-        value = sp.sympify(x)
-    except (sp.SympifyError, TypeError) as exc:
-        raise ArgumentTypeError(
-            f"`{argument}` must be a number or a sympy expression; got {type(x).__name__}."
-        ) from exc
-    if not isinstance(value, sp.Expr):
-        raise ArgumentTypeError(
-            f"`{argument}` must be a number or a sympy expression; got {type(x).__name__}."
-        )
-    return value

@@ -16,7 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
-from .basis import _is_zero
+from .._core.symbolic import is_identically_zero
 from .points import Point, check_point
 from .vector import Vector, _check_frame, _check_vector
 
@@ -29,7 +29,7 @@ __all__ = [
 def _vector_is_zero(v: Vector) -> bool:
     if v.is_zero:
         return True
-    return all(_is_zero(c) for c in v.components(v.frames[0]))
+    return all(is_identically_zero(c) for c in v.components(v.frames[0]))
 
 
 def _at(base: Point, displacement: Vector, name: str) -> Point:
@@ -268,7 +268,7 @@ class Plane:
     def contains(self, point: Point) -> bool:
         """Whether ``point`` lies in the plane: n . AP = 0."""
         check_point(point, "point")
-        return _is_zero(self._normal.dot(point - self._point))
+        return is_identically_zero(self._normal.dot(point - self._point))
 
     def __eq__(self, other):
         if not isinstance(other, Plane):
@@ -344,7 +344,7 @@ def intersection(a, b, *, name: str = "I"):
     if isinstance(a, Line) and isinstance(b, Plane):
         u, n = a.direction, b.normal
         un = u.dot(n)
-        if _is_zero(un):
+        if is_identically_zero(un):
             where = "lies in" if b.contains(a.point) else "does not meet"
             raise ArgumentError(
                 f"`a` and `b` must not be parallel to intersect a line and a plane; got a line "
@@ -377,7 +377,7 @@ def intersection(a, b, *, name: str = "I"):
                 "coincident lines (every point is common)."
             )
         return None
-    if not _is_zero(w.dot(n)):
+    if not is_identically_zero(w.dot(n)):
         return None
     lam = sp.simplify(w.cross(u2).dot(n) / n.dot(n))
     return _at(a.point, lam * u1, name)
@@ -401,7 +401,7 @@ def is_parallel(a, b) -> bool:
     va = a.direction if isinstance(a, Line) else a.normal
     vb = b.direction if isinstance(b, Line) else b.normal
     if isinstance(a, Line) != isinstance(b, Line):
-        return _is_zero(va.dot(vb))
+        return is_identically_zero(va.dot(vb))
     return _vector_is_zero(va.cross(vb))
 
 
@@ -423,7 +423,7 @@ def is_orthogonal(a, b) -> bool:
     vb = b.direction if isinstance(b, Line) else b.normal
     if isinstance(a, Line) != isinstance(b, Line):
         return _vector_is_zero(va.cross(vb))
-    return _is_zero(va.dot(vb))
+    return is_identically_zero(va.dot(vb))
 
 
 def _point_line(p, line):

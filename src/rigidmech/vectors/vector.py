@@ -19,6 +19,7 @@ import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
+from .._core.symbolic import is_exactly_zero, is_identically_zero
 from ._rotations import (
     ZERO,
     FrameBase,
@@ -48,13 +49,19 @@ def _cross3(u, v):
             term(u[0], v[1], u[1], v[0]))
 
 
-def _is_zero(x):
-    """Exact zero, including a float zero (``Float(0.0) != 0`` in sympy >= 1.13)."""
-    return x == 0 or (x.is_Number and x.is_zero)
+def _check_scalar(given, s):
+    """Refuse a factor that is a non-finite or complex number (cheap: only atoms and Python
+    complex numbers are inspected, the product stays fast in derivations)."""
+    if isinstance(given, str):
+        raise ArgumentTypeError(
+            f"`scalar` must be a number or a sympy expression; got str {given!r}.")
+    if (isinstance(given, complex | np.complexfloating) or s is sp.I
+            or (s.is_Number and s.is_finite is not True)):
+        raise ArgumentError(f"`scalar` must be a finite real number; got {given}.")
 
 
 def _any_nonzero(c):
-    return not all(_is_zero(x) for x in c)
+    return not all(is_exactly_zero(x) for x in c)
 
 
 def _nonzero(c):
@@ -134,7 +141,10 @@ class Vector:
         """
         _check_frame(frame, "frame")
         try:
-            comps = tuple(sp.sympify(c) for c in components)
+            items = tuple(components)
+            if isinstance(components, str) or any(isinstance(c, str) for c in items):
+                raise TypeError("a string is not read as a symbol")
+            comps = tuple(sp.sympify(c) for c in items)
         except (sp.SympifyError, TypeError) as exc:
             raise ArgumentTypeError(
                 f"`components` must be 3 numbers or sympy expressions; got {components!r}."
@@ -145,6 +155,11 @@ class Vector:
             )
         if any(isinstance(c, sp.MatrixBase) for c in comps):
             raise ArgumentTypeError("`components` must be scalars; got a matrix entry.")
+        if any(not isinstance(c, sp.Expr) or (c.is_Number and c.is_finite is not True)
+               for c in comps):
+            raise ArgumentError(
+                f"`components` must be finite real numbers or sympy expressions; got "
+                f"{components!r}.")
         # Float(0.0) != 0 in sympy: normalise float zeros so that zero tests stay exact.
         comps = tuple(ZERO if c.is_Float and c.is_zero else c for c in comps)
         if all(c == 0 for c in comps):
@@ -257,7 +272,8 @@ class Vector:
             return NotImplemented
         if not isinstance(s, sp.Expr):
             return NotImplemented
-        if _is_zero(s):
+        _check_scalar(scalar, s)
+        if is_exactly_zero(s):
             return Vector.zero()
         if s == 1:
             return self
@@ -277,6 +293,7 @@ class Vector:
             return NotImplemented
         if not isinstance(s, sp.Expr):
             return NotImplemented
+        _check_scalar(scalar, s)
         if s == 0:
             raise ArgumentError("`scalar` must be non-zero to divide a vector; got 0.")
         return self * (1 / s)
@@ -357,7 +374,7 @@ class Vector:
         Raises
         ------
         ArgumentError
-            For the zero vector.
+            For the zero vector, also when it is zero only after simplification.
 
         Examples
         --------
@@ -368,7 +385,12 @@ class Vector:
         """
         if self.is_zero:
             raise ArgumentError("cannot normalise the zero vector: it has no direction.")
-        return self / self.magnitude()
+        square = self.dot(self)
+        if is_identically_zero(square):
+            raise ArgumentError(
+                f"cannot normalise the zero vector: {self!r} simplifies to zero, it has no "
+                "direction.")
+        return self / sp.sqrt(square)
 
     # -- calculus -----------------------------------------------------------------------
     def dt(self, frame) -> Vector:

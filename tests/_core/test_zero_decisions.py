@@ -1,0 +1,45 @@
+"""One "is it zero?" function per meaning, all in rigidmech._core.symbolic (issue 15)."""
+
+import ast
+import pathlib
+
+import sympy as sp
+
+import rigidmech
+from rigidmech._core.symbolic import (
+    is_exactly_zero,
+    is_identically_zero,
+    simplifies_to_zero,
+    zero_decision,
+)
+
+a = sp.Symbol("a")
+positive = sp.Symbol("p", positive=True)
+PYTHAGORAS = sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1
+
+
+def test_no_other_zero_decision_in_the_package():
+    package = pathlib.Path(rigidmech.__file__).parent
+    defined = []
+    for path in package.rglob("*.py"):
+        for node in ast.parse(path.read_text()).body:  # module-level functions
+            if isinstance(node, ast.FunctionDef) and node.name in ("_is_zero", "is_zero"):
+                defined.append(f"{path.relative_to(package)}:{node.name}")
+    assert defined == []
+
+
+def test_the_four_meanings_differ_where_they_should():
+    # structural: no algebra
+    assert is_exactly_zero(sp.Float(0.0)) and not is_exactly_zero(PYTHAGORAS)
+    # identically zero (simplify), exact numbers to 25 digits
+    assert is_identically_zero(PYTHAGORAS)
+    assert is_identically_zero(sp.cos(sp.pi / 5) - (1 + sp.sqrt(5)) / 4)
+    assert not is_identically_zero(a)
+    # trigonometric canonical form first: double angles
+    assert simplifies_to_zero(sp.cos(2 * a) - sp.cos(a) ** 2 + sp.sin(a) ** 2)
+    assert not simplifies_to_zero(sp.cos(a))
+    # three-valued
+    assert zero_decision(PYTHAGORAS) is True
+    assert zero_decision(positive + 1) is False
+    assert zero_decision(sp.Integer(3)) is False
+    assert zero_decision(a) is None
