@@ -19,6 +19,7 @@ from .._core.compile import compile_expressions, compile_linear_solve
 from .._core.errors import ArgumentError, NumericalError
 from .._core.symbolic import free_symbols_shared
 from ..vectors import t as _t
+from ._singularities import warn_near_singularities
 
 __all__ = ["EquationsOfMotion", "Simulation"]
 
@@ -39,6 +40,9 @@ class EquationsOfMotion:
     parameters : iterable of sympy.Symbol, optional
         The constant symbols of the equations, when the caller knows them already; found in
         ``mass_matrix`` and ``forcing`` otherwise.
+    singular_sets : sequence of OrientationSingularity, or callable returning one, optional
+        Singular sets of the orientation angles among the coordinates (ch. 9.1.2), derived
+        on demand; :meth:`simulate` warns when the motion comes near one.
 
     Examples
     --------
@@ -53,10 +57,11 @@ class EquationsOfMotion:
     Matrix([[-k*x]])
     """
 
-    __slots__ = ("_coordinates", "_q", "_u", "_M", "_f", "_energy", "_params", "_cache")
+    __slots__ = ("_coordinates", "_q", "_u", "_M", "_f", "_energy", "_params", "_cache",
+                 "_singular")
 
     def __init__(self, *, coordinates, q, u, mass_matrix, forcing, energy=None,
-                 parameters=None):
+                 parameters=None, singular_sets=None):
         self._coordinates = tuple(coordinates)
         self._q, self._u = tuple(q), tuple(u)
         self._M = sp.ImmutableMatrix(mass_matrix)
@@ -74,6 +79,7 @@ class EquationsOfMotion:
             free = set(parameters)
         self._params = tuple(sorted(free, key=lambda s: s.name))
         self._cache = {}
+        self._singular = singular_sets
 
     @property
     def coordinates(self):
@@ -113,6 +119,27 @@ class EquationsOfMotion:
             e = self._energy() if callable(self._energy) else self._energy
             self._cache["energy"] = e
         return self._cache["energy"]
+
+    @property
+    def singular_sets(self) -> tuple:
+        """Singular sets of the orientation angles (ch. 9.1.2), as
+        :class:`~rigidmech.vectors.OrientationSingularity`; empty if none is known.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> psi, theta, phi = rm.coordinates("psi theta phi")
+        >>> R0 = rm.Frame("R0"); R = R0.euler("R", psi, theta, phi)
+        >>> system = rm.System(galilean=R0)
+        >>> system.add(rm.Body("b", frame=R, mass=1,
+        ...     inertia=rm.InertiaOperator.from_products(1, 2, 3, frame=R)))
+        >>> system.equations_of_motion().singular_sets[0].condition
+        Eq(sin(theta(t)), 0)
+        """
+        if "singular_sets" not in self._cache:
+            s = self._singular() if callable(self._singular) else self._singular
+            self._cache["singular_sets"] = tuple(s or ())
+        return self._cache["singular_sets"]
 
     def accelerations(self, simplify: bool = False) -> sp.ImmutableMatrix:
         """q'' = M^-1 f symbolically (small systems: the expressions grow fast)."""
@@ -225,6 +252,7 @@ class EquationsOfMotion:
         elapsed = _time.perf_counter() - start
         if not res.success:
             raise NumericalError(f"integration failed: {res.message}")
+        warn_near_singularities(self.singular_sets, self._coordinates, res, params)
         return Simulation(self, res, params, elapsed)
 
     def _latex(self, printer=None):

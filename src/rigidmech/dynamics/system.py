@@ -23,6 +23,8 @@ exerted on them. It derives, on demand and each only once:
 
 from __future__ import annotations
 
+from functools import partial
+
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
@@ -33,6 +35,7 @@ from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import is_coordinate
+from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 
 __all__ = ["System"]
@@ -327,7 +330,8 @@ class System:
             coordinates=self.coordinates, q=q_sym, u=u_sym,
             mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(n, 1, fx),
             energy=self.mechanical_energy,
-            parameters=free_symbols_shared(upper + fx) - set(q_sym) - set(u_sym) - {t})
+            parameters=free_symbols_shared(upper + fx) - set(q_sym) - set(u_sym) - {t},
+            singular_sets=partial(orientation_singularities, tuple(self._bodies), R))
         self._cache["eom"] = eqs
         return eqs
 

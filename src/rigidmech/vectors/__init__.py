@@ -27,6 +27,7 @@ from .reference_change import (
     common_axis_map,
     common_origin_map,
 )
+from .singularities import OrientationSingularity, orientation_singularity
 from .symbols import constants, coordinates, is_coordinate, t, time_derivative
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
@@ -39,4 +40,5 @@ __all__ = [
     "affine_map", "change_of_coordinates", "common_axis_map", "common_origin_map",
     "derivation_formula", "derivative", "jacobian", "partial",
     "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
+    "OrientationSingularity", "orientation_singularity",
 ]

@@ -15,6 +15,7 @@ import sympy as sp
 from .._core.errors import ArgumentTypeError, FrameError
 from ._rotations import ONE, ZERO, FrameBase, direction_cosines
 from .points import Point
+from .singularities import orientation_singularity
 from .vector import Vector, rotation_vector
 
 __all__ = ["Frame"]
@@ -277,6 +278,26 @@ class Frame(FrameBase):
         (Derivative(q1(t), t) + Derivative(q2(t), t))*R2.k
         """
         return rotation_vector(self, relative_to)
+
+    def singular_set(self, relative_to=None):
+        """The singular set of the angles orienting this frame relative to ``relative_to``
+        (default: the root), or None if they have none (book, ch. 9.1.2).
+
+        Euler angles z-x-z are singular where sin(theta) = 0, Cardan sequences where the
+        cosine of the middle angle vanishes; see
+        :func:`rigidmech.vectors.orientation_singularity`.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> psi, theta, phi = coordinates("psi theta phi")
+        >>> R0 = Frame("R0")
+        >>> R0.euler("R", psi, theta, phi).singular_set().condition
+        Eq(sin(theta(t)), 0)
+        >>> R0.rotated("R1", about=R0.k, angle=psi).singular_set() is None
+        True
+        """
+        return orientation_singularity(self, relative_to)
 
     def __repr__(self):
         if self._parent is None:
