@@ -29,7 +29,7 @@ import sympy as sp
 
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
-from ._rotations import FrameBase, rotation_steps
+from ._rotations import FrameBase, common_ancestor, path_to_ancestor, rotation_steps
 from .symbols import is_coordinate
 from .vector import partial_rotation_vector
 
@@ -47,6 +47,34 @@ def _coordinates_of(steps):
                 if is_coordinate(a) and a not in found:
                     found.append(a)
     return found
+
+
+def _frames_between(a, b):
+    anc = common_ancestor(a, b)
+    return [a, b, anc, *path_to_ancestor(a, anc), *path_to_ancestor(b, anc)]
+
+
+def _tidy(expr):
+    """Expand; call trigsimp (costly: about 0.1 s) only if that leaves a long expression."""
+    expr = sp.expand(expr)
+    return expr if sp.count_ops(expr) <= 4 else sp.trigsimp(expr)
+
+
+def _axes_matrix(vectors, frames):
+    """The unit axes as the columns of a 3x3 (or 3xn) matrix, in the basis among ``frames``
+    where they are shortest (for z-x-z the nutation frame: (0, sin, cos), (1, 0, 0),
+    (0, 0, 1)), so that their mixed product needs no trigonometric simplification."""
+    best, best_ops = None, None
+    for f in dict.fromkeys(frames):
+        cols = [sp.Matrix(v.components(f)) for v in vectors]
+        ops = sum(sp.count_ops(list(c)) for c in cols)
+        if best is None or ops < best_ops:
+            best, best_ops = cols, ops
+    unit = []
+    for c in best:
+        norm2 = _tidy(sum(x**2 for x in c))
+        unit.append(c if norm2 == 1 else c / sp.sqrt(norm2))
+    return sp.Matrix.hstack(*unit)
 
 
 def _sequence(steps, coords):
@@ -319,19 +347,15 @@ def orientation_singularity(frame, relative_to=None):
             f"`relative_to`: {len(coords)} angles ({', '.join(str(q) for q in coords)}) lie "
             f"between {relative_to.name} and {frame.name}, more than a rotation has; give a "
             "nearer reference frame.")
-    axes = []
-    for q in coords:
-        w = sp.Matrix(partial_rotation_vector(frame, relative_to, q).components(frame))
-        norm = sp.sqrt(sp.trigsimp(sum(x**2 for x in w)))
-        axes.append(w / norm)
-    E = sp.Matrix.hstack(*axes)
+    vectors = [partial_rotation_vector(frame, relative_to, q) for q in coords]
+    E = _axes_matrix(vectors, _frames_between(relative_to, frame))
     if len(coords) == 3:
-        expr = sp.trigsimp(E.det())
+        expr = _tidy(E.det(method="berkowitz"))
         if expr.could_extract_minus_sign():
             expr = -expr
         measure = expr
     else:
-        expr = sp.trigsimp((E.T * E).det())
+        expr = _tidy((E.T * E).det(method="berkowitz"))
         measure = sp.sqrt(expr)
     if expr == 0:
         raise FrameError(
