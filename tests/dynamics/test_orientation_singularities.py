@@ -193,3 +193,14 @@ def test_right_hand_side_on_the_singular_set_raises(free_eqs, C):
                  + _state(eqs, psi=0.3, theta=0.5, phi=5.0))
     with pytest.raises(SingularMassMatrixError, match="singular"):
         eqs.rhs(m=1.0, g=9.81, A=1.0, C=C)(0.0, y)
+
+
+def test_lagrange_route_knows_the_singular_sets_too():
+    """``rm.lagrange_equations`` gives equations that warn the same way."""
+    system = heavy_top()
+    assert [s.condition for s in system.orientation_singularities()] == [
+        sp.Eq(sp.sin(rm.coordinates("theta")), 0)]
+    eqs = rm.lagrange_equations(system)
+    assert eqs.singular_sets == system.orientation_singularities()
+    with pytest.warns(SingularityWarning, match="frame R relative to R0"):
+        eqs.simulate(t=(0.0, 0.2), q0=[0.0, 2e-3, 0.0], u0=[0.0, 0.0, 200.0], **TOP)

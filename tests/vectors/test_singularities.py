@@ -106,8 +106,10 @@ def test_euler_frame_and_names():
     assert "Cardan sequence such as z-x-y" in s.suggestion()
     assert repr(s) == ("OrientationSingularity(frame=R, relative_to=R0, sequence='zxz', "
                        "condition=Eq(sin(theta(t)), 0))")
-    # the same through the function, and relative to an explicit reference
-    assert orientation_singularity(R, R0).condition == s.condition
+    # the same through the function, and relative to an explicit reference; == is
+    # structural and agrees with hash
+    assert orientation_singularity(R, R0) == s and hash(orientation_singularity(R, R0)) == hash(s)
+    assert R0.euler("S", psi, theta, phi).singular_set() != s  # another frame
 
 
 def test_cardan_suggests_euler():

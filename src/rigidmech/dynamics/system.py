@@ -364,6 +364,24 @@ class System:
                 Q[i] += torsor.resultant.dot(Vi) + torsor.moment.dot(Wi)
         return sp.ImmutableMatrix(len(q_sym), 1, xreplace_shared(Q, rule))
 
+    def orientation_singularities(self) -> tuple:
+        """The singular sets of the angles orienting the bodies (book, ch. 9.1.2): for each
+        body frame whose angles relative to the nearest frame it is built from (the Galilean
+        frame, another body's frame or the root) have one, an
+        :class:`~rigidmech.vectors.OrientationSingularity`. Simulations warn near them.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> psi, theta, phi = rm.coordinates("psi theta phi")
+        >>> R0 = rm.Frame("R0"); R = R0.euler("R", psi, theta, phi)
+        >>> system = System(galilean=R0)
+        >>> system.add(rm.Body("b", frame=R, mass=1))
+        >>> system.orientation_singularities()[0].condition
+        Eq(sin(theta(t)), 0)
+        """
+        return orientation_singularities(tuple(self._bodies), self._galilean)
+
     def symbols(self):
         """The symbols standing for q, q' and q'' in derived expressions, and the rule that
         replaces q(t) and its derivatives by them."""

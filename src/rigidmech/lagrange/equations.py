@@ -69,4 +69,5 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     M = sp.ImmutableMatrix(n, n, lambda i, j: sp.diff(lhs[i], a_sym[j]))
     f = sp.ImmutableMatrix(n, 1, lambda i, _: Q[i] - lhs[i].xreplace(no_acc))
     return EquationsOfMotion(coordinates=qs, q=q_sym, u=u_sym, mass_matrix=M, forcing=f,
-                             energy=system.mechanical_energy)
+                             energy=system.mechanical_energy,
+                             singular_sets=system.orientation_singularities())

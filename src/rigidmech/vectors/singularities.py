@@ -286,6 +286,15 @@ class OrientationSingularity:
         return (f"{kind} ({names}) of frame {self._frame.name} relative to "
                 f"{self._relative_to.name}, singular where {cond} = 0")
 
+    def _key(self):
+        return (self._frame, self._relative_to, self._coordinates, self._expression)
+
+    def __eq__(self, other):
+        return isinstance(other, OrientationSingularity) and self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
+
     def __repr__(self):
         seq = f"{self._sequence!r}" if self._sequence else "None"
         return (f"OrientationSingularity(frame={self._frame.name}, "
