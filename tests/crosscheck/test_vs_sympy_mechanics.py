@@ -502,3 +502,46 @@ def test_planar_double_pendulum_unequal_bodies():
         {"m1": _POSITIVE, "m2": _POSITIVE, "L1": _POSITIVE, "d1": _POSITIVE,
          "d2": _POSITIVE, "I1": _POSITIVE, "I2": _POSITIVE, "g": _POSITIVE}, N_STATES)
     assert_same_accelerations(eqs, double_pendulum_sympy(), states=states, rtol=RTOL)
+
+
+# -- 9. heavy top in Cardan angles -----------------------------------------------------------------
+def cardan_top_rigidmech():
+    a, b, c = rm.coordinates("a b c")
+    m, g, l = rm.constants("m g l")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=a)
+    R2 = R1.rotated("R2", about=R1.j, angle=b)
+    R = R2.rotated("R", about=R2.i, angle=c)
+    G = R0.origin.moved("G", l * R.i)
+    top = rm.Body("top", frame=R, mass=m, centre=G, inertia=_general_inertia_rm(R, G))
+    system = rm.System(galilean=R0)
+    system.connect(R0, top, rm.joints.Spherical(at=R0.origin))
+    system.act(rm.gravity(-g * R0.k))
+    return system.equations_of_motion()
+
+
+def cardan_top_sympy():
+    q = me.dynamicsymbols("a b c")
+    u = me.dynamicsymbols("u1:4")
+    m, g, l = sp.symbols("m g l")
+    N = me.ReferenceFrame("N")
+    B = N.orientnew("B", "Body", list(q), "321")   # z, then the new y, then the new x
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", l * B.x)
+    G.v2pt_theory(O, N, B)
+    body = me.RigidBody("top", G, B, m, (_general_inertia_sympy(B), G))
+    return _kane(N, list(q), u, [body], [(G, -m * g * N.z)])
+
+
+def test_heavy_top_in_cardan_angles():
+    """The heavy top of model 1 oriented by Cardan (Tait-Bryan) angles z-y-x (sympy's
+    ``"Body", "321"``), its mass centre on the body's i axis: checks chains of elementary
+    rotations about different axes of successive frames. The states keep cos(b) away from
+    0, the singular set of this sequence (see ``Frame.singular_set``)."""
+    eqs = cardan_top_rigidmech()
+    assert eqs.singular_sets[0].condition == sp.Eq(sp.cos(rm.coordinates("b")), 0)
+    states = random_states(
+        np.random.default_rng(10), {"a": _ANGLE, "b": (-1.2, 1.2), "c": _ANGLE},
+        {"m": _POSITIVE, "g": _POSITIVE, "l": _POSITIVE, **_INERTIA_RANGES}, N_STATES)
+    assert_same_accelerations(eqs, cardan_top_sympy(), states=states, rtol=RTOL)
