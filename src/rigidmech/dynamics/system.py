@@ -35,6 +35,7 @@ from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import is_coordinate
+from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 
@@ -332,6 +333,9 @@ class System:
             energy=self.mechanical_energy,
             parameters=free_symbols_shared(upper + fx) - set(q_sym) - set(u_sym) - {t},
             singular_sets=partial(orientation_singularities, tuple(self._bodies), R))
+        # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
+        eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
+            self._bodies, self.coordinates))
         self._cache["eom"] = eqs
         return eqs
 

@@ -8,6 +8,7 @@ of reference system, derivatives of vector functions, curves and the Frenet trih
 
 from .basis import Basis, double_cross, linear_dependence, linearly_independent
 from .curves import Curve, FrenetSamples, FrenetTrihedron, frenet_numeric
+from .euler_parameters import euler_parameter_matrix, euler_parameter_rates, euler_parameters_of
 from .frames import Frame
 from .functions import derivation_formula, derivative, jacobian, partial
 from .geometry import (
@@ -41,4 +42,5 @@ __all__ = [
     "derivation_formula", "derivative", "jacobian", "partial",
     "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
     "OrientationSingularity", "orientation_singularity",
+    "euler_parameter_matrix", "euler_parameter_rates", "euler_parameters_of",
 ]

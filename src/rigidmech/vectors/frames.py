@@ -14,6 +14,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentTypeError, FrameError
 from ._rotations import ONE, ZERO, FrameBase, direction_cosines
+from .euler_parameters import euler_parameter_matrix
 from .points import Point
 from .singularities import orientation_singularity
 from .vector import Vector, rotation_vector
@@ -157,6 +158,30 @@ class Frame(FrameBase):
         f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
         f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
         return f2.rotated(name, about=f2.k, angle=spin)
+
+    def euler_parameters(self, name: str, e0, e1, e2, e3, *, origin=None) -> Frame:
+        """Frame oriented by four Euler parameters (a quaternion) relative to this one: no
+        singular set, unlike any three angles (book, ch. 9.1.2).
+
+        The direction cosines are those of e / |e| (see
+        :func:`rigidmech.vectors.euler_parameter_matrix`): e0 = cos(alpha/2) and
+        (e1, e2, e3) = sin(alpha/2) n for the rotation by alpha about n. Equations of motion
+        keep |e| constant; initial rates follow from the rotation vector with
+        :func:`rigidmech.vectors.euler_parameter_rates`.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> e0, e1, e2, e3 = coordinates("e0 e1 e2 e3")
+        >>> R = Frame("R0").euler_parameters("R", e0, e1, e2, e3)
+        >>> R.dcm(R.parent)[2, 2] * (e0**2 + e1**2 + e2**2 + e3**2)
+        e0(t)**2 - e1(t)**2 - e2(t)**2 + e3(t)**2
+        >>> R.singular_set() is None
+        True
+        """
+        e = [_sympify(x, f"e{n}") for n, x in enumerate((e0, e1, e2, e3))]
+        return Frame._child(name, self, matrix=euler_parameter_matrix(*e),
+                            origin=self._check_origin(origin))
 
     def translated(self, name: str, origin: Point) -> Frame:
         """Frame with the same basis as this one and the origin ``origin``.

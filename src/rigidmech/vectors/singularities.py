@@ -30,6 +30,7 @@ import sympy as sp
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from ._rotations import FrameBase, common_ancestor, path_to_ancestor, rotation_steps
+from .euler_parameters import euler_parameters_of
 from .symbols import is_coordinate
 from .vector import partial_rotation_vector
 
@@ -320,8 +321,9 @@ def orientation_singularity(frame, relative_to=None):
     Returns
     -------
     OrientationSingularity or None
-        None when there is no singular set (no angle; or one or two angles about axes at a
-        constant angle to each other, as for every chain of one or two elementary rotations).
+        None when there is no singular set (no angle; one or two angles about axes at a
+        constant angle to each other, as for every chain of one or two elementary rotations;
+        Euler parameters, :meth:`Frame.euler_parameters`).
 
     Raises
     ------
@@ -351,6 +353,9 @@ def orientation_singularity(frame, relative_to=None):
     coords = _coordinates_of(steps)
     if not coords:
         return None
+    if len(steps) == 1 and steps[0][0] is None and any(
+            euler_parameters_of(f) is not None for f in (frame, relative_to)):
+        return None  # Euler parameters: a rotation for every e != 0
     if len(coords) > 3:
         raise FrameError(
             f"`relative_to`: {len(coords)} angles ({', '.join(str(q) for q in coords)}) lie "
