@@ -32,6 +32,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from ._rotations import FrameBase, common_ancestor, path_to_ancestor, rotation_steps
 from .euler_parameters import euler_parameters_of
 from .symbols import is_coordinate
+from .symbols import t as _t
 from .vector import partial_rotation_vector
 
 __all__ = ["OrientationSingularity", "orientation_singularity"]
@@ -144,7 +145,7 @@ class OrientationSingularity:
         obj._coordinates, obj._sequence = tuple(coordinates), sequence
         obj._expression, obj._measure = expression, measure
         known = set(coordinates)
-        params = {s for s in measure.free_symbols if s not in known} - {sp.Symbol("t", real=True)}
+        params = {s for s in measure.free_symbols if s not in known} - {_t}
         obj._parameters = tuple(sorted(params, key=lambda s: s.name))
         obj._compiled = None
         return obj
