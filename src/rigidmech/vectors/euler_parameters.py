@@ -3,7 +3,7 @@
 Three angles cannot locate a basis everywhere (see :mod:`rigidmech.vectors.singularities`).
 Four Euler parameters (e0, e1, e2, e3) can: the rotation by the angle alpha about the unit
 vector n has e0 = cos(alpha/2) and (e1, e2, e3) = sin(alpha/2) n. rigidmech uses the
-direction cosines of the *normalised* parameters e / |e|,
+direction cosines of the *normalised* parameters :math:`e / |e|`,
 
 .. math:: C = \\frac{1}{|e|^2}\\begin{pmatrix}
           e_0^2+e_1^2-e_2^2-e_3^2 & 2(e_1e_2-e_0e_3) & 2(e_1e_3+e_0e_2)\\\\
@@ -12,7 +12,7 @@ direction cosines of the *normalised* parameters e / |e|,
           \\end{pmatrix},
 
 so that the orientation depends on the direction of e only: any e != 0 gives a rotation, and
-the length |e| is a gauge that the equations of motion keep constant (the constraint
+the length :math:`|e|` is a gauge that the equations of motion keep constant (the constraint
 e . e'' = -e' . e', see :meth:`rigidmech.dynamics.System.equations_of_motion`) instead of a
 constraint the motion must satisfy.
 """
@@ -33,7 +33,7 @@ _MADE: dict = {}
 
 def euler_parameter_matrix(e0, e1, e2, e3):
     """Direction cosines of the Euler parameters (columns: the rotated basis in the parent
-    basis), normalised by |e|^2, as a 3x3 tuple of sympy expressions.
+    basis), normalised by :math:`|e|^2`, as a 3x3 tuple of sympy expressions.
 
     Examples
     --------

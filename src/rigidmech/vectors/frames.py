@@ -163,10 +163,10 @@ class Frame(FrameBase):
         """Frame oriented by four Euler parameters (a quaternion) relative to this one: no
         singular set, unlike any three angles (book, ch. 9.1.2).
 
-        The direction cosines are those of e / |e| (see
+        The direction cosines are those of :math:`e / |e|` (see
         :func:`rigidmech.vectors.euler_parameter_matrix`): e0 = cos(alpha/2) and
         (e1, e2, e3) = sin(alpha/2) n for the rotation by alpha about n. Equations of motion
-        keep |e| constant; initial rates follow from the rotation vector with
+        keep :math:`|e|` constant; initial rates follow from the rotation vector with
         :func:`rigidmech.vectors.euler_parameter_rates`.
 
         Examples

@@ -114,9 +114,10 @@ class OrientationSingularity:
 
     Notes
     -----
-    :meth:`measure` is |(e_1, e_2, e_3)| with unit axes, between 0 (on the set) and 1: for
-    a sequence of elementary rotations about perpendicular axes it is |sin(theta)| for the
-    Euler angles and |cos(theta)| for a Cardan sequence (theta the middle angle), so that
+    :meth:`measure` is :math:`|(\\mathbf{e}_1, \\mathbf{e}_2, \\mathbf{e}_3)|` with unit axes,
+    between 0 (on the set) and 1: for a sequence of elementary rotations about perpendicular
+    axes it is :math:`|\\sin\\theta|` for the Euler angles and :math:`|\\cos\\theta|` for a
+    Cardan sequence (theta the middle angle), so that
     :meth:`distance`, its arcsine, is the angle between the middle angle and its nearest
     singular value.
 
@@ -193,7 +194,8 @@ class OrientationSingularity:
         return arr, [float(params[p.name]) for p in self._parameters]
 
     def measure(self, values, **params):
-        """|mixed product of the unit axes| at ``values``: 0 on the singular set, 1 at most.
+        """Absolute value of the mixed product of the unit axes at ``values``: 0 on the
+        singular set, 1 at most.
 
         Parameters
         ----------
