@@ -138,11 +138,14 @@ def test_sleeping_top_near_vertical_warns_and_tilted_top_does_not(top_eqs):
     released at 0.5 rad with the same spin it precesses with theta near 0.5."""
     eqs = top_eqs
     with pytest.warns(SingularityWarning, match=r"of frame R relative to R0.* at t = "):
-        eqs.simulate(t=(0.0, 1.0), q0=[0.0, 2e-3, 0.0], u0=[0.0, 0.0, 200.0], **TOP)
+        eqs.simulate(t=(0.0, 1.0), q0=_state(eqs, theta=2e-3), u0=_state(eqs, phi=200.0),
+                     **TOP)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        sim = eqs.simulate(t=(0.0, 1.0), q0=[0.0, 0.5, 0.0], u0=[0.0, 0.0, 200.0], **TOP)
-    assert np.min(np.abs(np.sin(sim.q[1]))) > 0.4
+        sim = eqs.simulate(t=(0.0, 1.0), q0=_state(eqs, theta=0.5), u0=_state(eqs, phi=200.0),
+                           **TOP)
+    theta = sim.q[[q.func.__name__ for q in eqs.coordinates].index("theta")]
+    assert np.min(np.abs(np.sin(theta))) > 0.4
 
 
 def test_fast_passage_between_two_samples_is_seen(top_eqs):
@@ -152,18 +155,19 @@ def test_fast_passage_between_two_samples_is_seen(top_eqs):
     and its measure between the fine record's minimum minus the change over one fine sample
     (the true minimum lies between two fine samples) and that minimum."""
     eqs = top_eqs
-    q0, u0 = [0.0, 0.5, 0.0], [0.02, -6.0, 0.0]
+    q0, u0 = _state(eqs, theta=0.5), _state(eqs, psi=0.02, theta=-6.0)
+    row = [q.func.__name__ for q in eqs.coordinates].index("theta")
     with pytest.warns(SingularityWarning):
         fine = eqs.simulate(t=(0.0, 0.2), q0=q0, u0=u0, n_output=20001, rtol=1e-11,
                             atol=1e-12, **TOP)
-    m = np.abs(np.sin(fine.q[1]))
+    m = np.abs(np.sin(fine.q[row]))
     k = int(np.argmin(m))
     assert 1e-4 < m[k] < 1e-2 and 0.01 < fine.t[k] < 0.19
     step = max(abs(m[k + 1] - m[k]), abs(m[k - 1] - m[k]))
     with pytest.warns(SingularityWarning) as record:
         coarse = eqs.simulate(t=(0.0, 0.2), q0=q0, u0=u0, n_output=3, rtol=1e-11,
                               atol=1e-12, **TOP)
-    assert np.min(np.abs(np.sin(coarse.q[1]))) > 1e-2  # the samples alone miss it
+    assert np.min(np.abs(np.sin(coarse.q[row]))) > 1e-2  # the samples alone miss it
     when, measure = _warning_fields(str(record[0].message))
     assert abs(when - fine.t[k]) < 1e-4
     assert m[k] - step - 1e-9 <= measure <= m[k] + 1e-9
@@ -171,10 +175,12 @@ def test_fast_passage_between_two_samples_is_seen(top_eqs):
 
 def test_scene_pipeline_warns():
     """The scenes pipeline (``scenes.run``) goes through the same check."""
+    names = [q.func.__name__ for q in heavy_top().coordinates]
     scene = scenes.Scene(
-        "test-top", "Heavy top (test)", "ch. 9.1.2", coordinates=("psi", "theta", "phi"),
-        parameters=[(k, v, k) for k, v in TOP.items()], q0=(0.0, 2e-3, 0.0),
-        u0=(0.0, 0.0, 200.0), t_end=0.5, rtol=1e-8, atol=1e-10,
+        "test-top", "Heavy top (test)", "ch. 9.1.2", coordinates=names,
+        parameters=[(k, v, k) for k, v in TOP.items()],
+        q0=[2e-3 if n == "theta" else 0.0 for n in names],
+        u0=[200.0 if n == "phi" else 0.0 for n in names], t_end=0.5, rtol=1e-8, atol=1e-10,
         builder=lambda: scenes.Built(heavy_top(), ()))
     with pytest.warns(SingularityWarning, match="frame R"):
         scenes.run(scene)
@@ -203,4 +209,5 @@ def test_lagrange_route_knows_the_singular_sets_too():
     eqs = rm.lagrange_equations(system)
     assert eqs.singular_sets == system.orientation_singularities()
     with pytest.warns(SingularityWarning, match="frame R relative to R0"):
-        eqs.simulate(t=(0.0, 0.2), q0=[0.0, 2e-3, 0.0], u0=[0.0, 0.0, 200.0], **TOP)
+        eqs.simulate(t=(0.0, 0.2), q0=_state(eqs, theta=2e-3), u0=_state(eqs, phi=200.0),
+                     **TOP)
