@@ -7,10 +7,17 @@ dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 
 from . import actions, inertia, ode, scenes
 from . import actions as joints
+from ._core.version import __version__ as __version__
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
-from .kinematics import KinematicTorsor, Solid, kinematic_torsor
+from .kinematics import (
+    KinematicTorsor,
+    Solid,
+    acceleration_composition,
+    kinematic_torsor,
+    velocity_composition,
+)
 from .kinetics import Body
 from .lagrange import lagrange_equations
 from .torsors import (
@@ -46,8 +53,6 @@ from .vectors import (
     t,
 )
 
-__version__ = "0.1.0"
-
 __all__ = [
     "Frame", "Point", "Vector", "constants", "coordinates", "cross", "dot", "mixed", "t",
     "Basis", "Line", "Plane", "Curve", "frenet_numeric", "intersection", "distance",
@@ -61,3 +66,4 @@ __all__ = [
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
 ]
+__all__ += ["velocity_composition", "acceleration_composition"]

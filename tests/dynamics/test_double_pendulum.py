@@ -152,7 +152,7 @@ def test_connection_actions_satisfy_fundamental_principle(model, motion):
     for action, carried in (((R0, bar1), ("G1", "G2")), ((bar1, bar2), ("G2",))):
         comps = system.connection_components(*action)  # basis (R0.i, R0.j, R0.k)
         f = sp.lambdify([list(q_sym), list(u_sym), list(a_sym), m, L, g],
-                        [comps["X"], comps["Y"], comps["N"]], "numpy")
+                        [comps[c].xreplace(rule) for c in ("X", "Y", "N")], "numpy")
         for k, tt in enumerate(ts):
             y = sol(tt)
             qdd = solver(tt, y)[2:]

@@ -7,9 +7,11 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from rigidmech.vectors import constants, coordinates, is_coordinate, t, time_derivative
 
 
-def test_time_is_one_real_symbol():
-    assert t == sp.Symbol("t", real=True) and t.is_real
-    assert t != sp.Symbol("t")  # assumptions are part of a sympy symbol
+def test_time_is_one_symbol_shared_with_sympy_mechanics():
+    from sympy.physics.mechanics import dynamicsymbols
+
+    assert t == sp.Symbol("t") and t == dynamicsymbols._t
+    assert t != sp.Symbol("t", real=True)  # assumptions are part of a sympy symbol
 
 
 @pytest.mark.parametrize(

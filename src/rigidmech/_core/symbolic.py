@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["xreplace_shared", "free_symbols_shared"]
+__all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared"]
 
 
 def xreplace_shared(exprs, rule, memo=None):
@@ -92,3 +92,43 @@ def free_symbols_shared(exprs) -> set:
         else:
             stack.extend(e.args)
     return out
+
+
+def atoms_shared(exprs):
+    """The free symbols, the applied undefined functions (``q(t)``) and the derivatives
+    (``Derivative(q(t), t)``) of ``exprs``, visiting every distinct subexpression once.
+
+    A derivative is listed as a whole; its expression is not entered.
+
+    Returns
+    -------
+    (set, set, set)
+        Symbols, applied undefined functions, derivatives.
+
+    Examples
+    --------
+    >>> t, k = sp.symbols("t k")
+    >>> q, F = sp.Function("q")(t), sp.Function("F")(t)
+    >>> s, f, d = atoms_shared([k * q.diff(t) + F, q])
+    >>> sorted(s, key=str), sorted(f, key=str), d
+    ([k, t], [F(t), q(t)], {Derivative(q(t), t)})
+    """
+    seen = set()
+    symbols, functions, derivatives = set(), set(), set()
+    stack = [sp.sympify(e) for e in exprs]
+    while stack:
+        e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
+        if isinstance(e, sp.Symbol):
+            symbols.add(e)
+        elif isinstance(e, sp.Derivative):
+            derivatives.add(e)
+            symbols |= e.free_symbols
+        elif isinstance(e, sp.core.function.AppliedUndef):
+            functions.add(e)
+            stack.extend(e.args)
+        else:
+            stack.extend(e.args)
+    return symbols, functions, derivatives

@@ -66,4 +66,4 @@ def complete(eqs: EquationsOfMotion, groups) -> EquationsOfMotion:
     return EquationsOfMotion(
         coordinates=eqs.coordinates, q=eqs.q, u=eqs.u, mass_matrix=sp.ImmutableMatrix(M),
         forcing=sp.ImmutableMatrix(f), energy=lambda: eqs.energy, parameters=eqs.parameters,
-        singular_sets=lambda: eqs.singular_sets)
+        model_parameters=eqs._model, singular_sets=lambda: eqs.singular_sets)

@@ -1,14 +1,21 @@
 """Equations of motion M(q) q'' = f(q, q', t) and their numerical integration (book, ch. 20,
 27).
 
-:class:`EquationsOfMotion` is an immutable value: the parameters of situation, the symbols
-standing for q and q', the mass matrix and the forcing. Numbers come from compiling them once
-(common subexpressions shared, :mod:`rigidmech._core.compile`) into a first-order right-hand
-side y' = (q', M^-1 f) that the solvers of :mod:`rigidmech.ode` integrate.
+:class:`EquationsOfMotion` is an immutable value: the parameters of situation, the mass matrix
+and the forcing, written with the user's own q(t), q'(t) = ``Derivative(q(t), t)`` and t (one
+symbol world: ``subs``, evaluation and compilation accept them). Numbers come from compiling
+them once (common subexpressions shared, :mod:`rigidmech._core.compile`) into a first-order
+right-hand side y' = (q', M^-1 f) that the solvers of :mod:`rigidmech.ode` integrate; plain
+symbols stand for q and q' only inside the compiled code.
+
+Functions of time that are not parameters of situation, such as a force ``F(t)`` or a control
+torque ``u(t)``, are the *inputs* of the equations: their values are given with the
+parameters' (a number, or a Python callable of t).
 """
 
 from __future__ import annotations
 
+import logging
 import time as _time
 
 import numpy as np
@@ -16,12 +23,23 @@ import sympy as sp
 
 from .. import ode
 from .._core.compile import compile_expressions, compile_linear_solve
-from .._core.errors import ArgumentError, NumericalError
-from .._core.symbolic import free_symbols_shared
+from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError, NumericalError
+from .._core.symbolic import atoms_shared, xreplace_shared
 from ..vectors import t as _t
 from ._singularities import warn_near_singularities
 
 __all__ = ["EquationsOfMotion", "Simulation"]
+
+_log = logging.getLogger("rigidmech")
+
+
+def _name(q):
+    """The name of a coordinate: ``q`` for q(t) or for a plain symbol q."""
+    return q.func.__name__ if isinstance(q, sp.core.function.AppliedUndef) else q.name
+
+
+def _is_function_of_time(q):
+    return isinstance(q, sp.core.function.AppliedUndef) and q.args == (_t,)
 
 
 class EquationsOfMotion:
@@ -30,55 +48,108 @@ class EquationsOfMotion:
     Parameters
     ----------
     coordinates : tuple of q(t)
-        The parameters of situation.
-    q, u : tuple of sympy.Symbol
-        Symbols standing for q and q' in ``mass_matrix`` and ``forcing``.
+        The parameters of situation: functions of :data:`rigidmech.t` (``rm.coordinates`` or
+        ``sympy.physics.mechanics.dynamicsymbols``), or plain symbols for equations written
+        by hand (then ``u`` names their rates).
     mass_matrix : sympy.ImmutableMatrix, shape (n, n)
     forcing : sympy.ImmutableMatrix, shape (n, 1)
-    energy : callable returning a sympy expression or None, optional
-        Total mechanical energy, derived on demand (for the energy drift of a simulation).
+        Written with the coordinates, their rates ``Derivative(q(t), t)``, t, constant
+        symbols (the parameters) and functions of t that are not coordinates (the inputs).
+    energy : sympy expression, callable returning one, or None, optional
+        Total mechanical energy (for the energy drift of a simulation). A callable is called
+        once, on first use: it must be a snapshot, independent of later changes elsewhere.
     parameters : iterable of sympy.Symbol, optional
         The constant symbols of the equations, when the caller knows them already; found in
         ``mass_matrix`` and ``forcing`` otherwise.
+    q, u : tuple of sympy.Symbol, optional
+        Symbols that stand for the coordinates and their rates in ``mass_matrix``,
+        ``forcing`` and ``energy``: with coordinates q(t) the expressions are rewritten with
+        q(t) and q'(t); with plain-symbol coordinates ``u`` gives the rates.
+    model_parameters : iterable of sympy.Symbol or callable returning one, optional
+        Every constant of the model the equations come from. A value given for one of them
+        that is not in :attr:`parameters` (it dropped out of the equations) is accepted and
+        ignored with a note; any other unknown name is refused.
     singular_sets : sequence of OrientationSingularity, or callable returning one, optional
         Singular sets of the orientation angles among the coordinates (ch. 9.1.2), derived
         on demand; :meth:`simulate` warns when the motion comes near one.
 
+    Notes
+    -----
+    Values are substituted with sympy, in the user's symbols: ``eqs.forcing.subs(q, 0.3)``.
+    To give q and q' together, pass a dict (sympy substitutes the derivatives first):
+    ``eqs.forcing.subs({q.diff(t): 1.0, q: 0.3})``.
+
     Examples
     --------
     >>> import sympy as sp
-    >>> x, v, k = sp.symbols("x x_dot k")
-    >>> eqs = EquationsOfMotion(coordinates=(sp.Function("x")(sp.Symbol("t")),), q=(x,),
-    ...                         u=(v,), mass_matrix=sp.ImmutableMatrix([[1]]),
+    >>> import rigidmech as rm
+    >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+    >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
     ...                         forcing=sp.ImmutableMatrix([[-k * x]]))
     >>> eqs.parameters
     (k,)
     >>> eqs.accelerations()
-    Matrix([[-k*x]])
+    Matrix([[-k*x(t)]])
+    >>> eqs.accelerations().subs(x, 2)
+    Matrix([[-2*k]])
     """
 
-    __slots__ = ("_coordinates", "_q", "_u", "_M", "_f", "_energy", "_params", "_cache",
-                 "_singular")
+    __slots__ = ("_coordinates", "_q", "_u", "_a", "_M", "_f", "_energy", "_params",
+                 "_inputs", "_model", "_cache", "_singular")
 
-    def __init__(self, *, coordinates, q, u, mass_matrix, forcing, energy=None,
-                 parameters=None, singular_sets=None):
+    def __init__(self, *, coordinates, mass_matrix, forcing, energy=None, parameters=None,
+                 q=None, u=None, model_parameters=None, singular_sets=None):
         self._coordinates = tuple(coordinates)
-        self._q, self._u = tuple(q), tuple(u)
+        n = len(self._coordinates)
+        for c in self._coordinates:
+            if not (_is_function_of_time(c) or isinstance(c, sp.Symbol)):
+                raise ArgumentTypeError(
+                    f"`coordinates` must be functions of time q(t) (rm.coordinates or "
+                    f"dynamicsymbols) or plain symbols; got {c!r}.")
         self._M = sp.ImmutableMatrix(mass_matrix)
         self._f = sp.ImmutableMatrix(forcing)
-        n = len(self._q)
         if self._M.shape != (n, n) or self._f.shape != (n, 1):
             raise ArgumentError(
                 f"`mass_matrix` must be {n}x{n} and `forcing` {n}x1; got {self._M.shape} "
                 f"and {self._f.shape}.")
+        if q is not None and len(tuple(q)) != n or u is not None and len(tuple(u)) != n:
+            raise ArgumentError(f"`q` and `u` must hold {n} symbols, one per coordinate.")
+        rates, accs, back = [], [], {}
+        for k, c in enumerate(self._coordinates):
+            if isinstance(c, sp.Symbol):
+                if u is None:
+                    raise ArgumentError(
+                        f"`u` must name the rates of the plain-symbol coordinates; got none "
+                        f"for {c}.")
+                rates.append(tuple(u)[k])
+                accs.append(None)
+            else:
+                rates.append(sp.Derivative(c, _t))
+                accs.append(sp.Derivative(c, (_t, 2)))
+            if q is not None and tuple(q)[k] != c:
+                back[tuple(q)[k]] = c
+            if u is not None and tuple(u)[k] != rates[-1]:
+                back[tuple(u)[k]] = rates[-1]
+        self._q, self._u, self._a = self._coordinates, tuple(rates), tuple(accs)
+        if back:  # expressions written with stand-in symbols: back to the user's q(t)
+            memo = {}
+            self._M = sp.ImmutableMatrix(n, n, xreplace_shared(list(self._M), back, memo))
+            self._f = sp.ImmutableMatrix(n, 1, xreplace_shared(list(self._f), back, memo))
+            if isinstance(energy, sp.Basic):
+                energy = xreplace_shared([energy], back, memo)[0]
         self._energy = energy
-        known = set(self._q) | set(self._u) | {_t}
+        symbols, functions, derivatives = atoms_shared(list(self._M) + list(self._f))
+        own = {x for x in self._q + self._u if isinstance(x, sp.Symbol)}
         if parameters is None:
-            free = free_symbols_shared(list(self._M) + list(self._f)) - known
+            free = symbols - own - {_t}
         else:
             free = set(parameters)
         self._params = tuple(sorted(free, key=lambda s: s.name))
-        self._cache = {}
+        coords = set(self._coordinates)
+        self._inputs = tuple(sorted(functions - coords, key=str))
+        self._model = model_parameters
+        self._cache = {"input_derivatives": tuple(sorted(
+            (d for d in derivatives if d.expr not in coords), key=str))}
         self._singular = singular_sets
 
     @property
@@ -87,13 +158,33 @@ class EquationsOfMotion:
         return self._coordinates
 
     @property
+    def names(self) -> tuple:
+        """The names of the coordinates (``"q"`` for q(t)): the keys of ``q0`` and ``u0`` in
+        :meth:`simulate`.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> x, y = rm.coordinates("x y")
+        >>> eqs = EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+        ...                         forcing=sp.Matrix([-x, -y]))
+        >>> eqs.names
+        ('x', 'y')
+        >>> sim = eqs.simulate(t=(0, 1), q0={"y": 1.0}, n_output=3)
+        >>> sim.q[:, 0].tolist()
+        [0.0, 1.0]
+        """
+        return tuple(_name(q) for q in self._coordinates)
+
+    @property
     def q(self):
-        """Symbols standing for the parameters of situation."""
+        """What stands for the parameters of situation in the expressions: q(t)."""
         return self._q
 
     @property
     def u(self):
-        """Symbols standing for their time derivatives."""
+        """What stands for their rates in the expressions: ``Derivative(q(t), t)``."""
         return self._u
 
     @property
@@ -112,9 +203,28 @@ class EquationsOfMotion:
         return self._params
 
     @property
+    def inputs(self) -> tuple:
+        """Functions of time in the equations that are not parameters of situation (a force
+        F(t), a control torque u(t)), sorted by name; give their values like parameters'.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); F = sp.Function("F")(rm.t)
+        >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[2]]),
+        ...                         forcing=sp.ImmutableMatrix([[F]]))
+        >>> eqs.inputs
+        (F(t),)
+        >>> eqs.rhs(F=lambda t: 4 * t)(0.5, [0.0, 0.0])
+        array([0., 1.])
+        """
+        return self._inputs
+
+    @property
     def energy(self):
-        """Total mechanical energy T + V in symbol form, or None if an action has no
-        potential energy."""
+        """Total mechanical energy T + V (with q(t), q'(t)), or None if an action has no
+        potential energy. Taken from the system when the equations were derived."""
         if "energy" not in self._cache:
             e = self._energy() if callable(self._energy) else self._energy
             self._cache["energy"] = e
@@ -147,27 +257,113 @@ class EquationsOfMotion:
         return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
 
     def count_ops(self) -> int:
-        """Number of operations in M and f as derived (sympy.count_ops)."""
-        return int(sp.count_ops(list(self._M) + list(self._f)))
+        """Number of operations in M and f as compiled, q and q' being plain symbols
+        (sympy.count_ops)."""
+        _, _, _, _, M, f = self._symbolic()
+        return int(sp.count_ops(list(M) + list(f)))
 
-    # -- numbers ------------------------------------------------------------------------
-    def _param_values(self, params):
+    # -- the compiled world -------------------------------------------------------------
+    def _stand_ins(self):
+        """Plain symbols for q, q', q'' and the inputs inside compiled code, and the rule that
+        puts them in place of the user's q(t), Derivative(q(t), t), ... (Dummy symbols: no
+        clash with a constant of the same name)."""
+        if "stand_ins" not in self._cache:
+            rule = {}
+            q_s, u_s, a_s = [], [], []
+            for q, u, a in zip(self._q, self._u, self._a, strict=True):
+                name = _name(q)
+                qs = q if isinstance(q, sp.Symbol) else sp.Dummy(name, real=True)
+                us = u if isinstance(u, sp.Symbol) else sp.Dummy(name + "_dot", real=True)
+                as_ = sp.Dummy(name + "_ddot", real=True)
+                if a is not None:
+                    rule[a] = as_
+                rule[u], rule[q] = us, qs
+                q_s.append(qs)
+                u_s.append(us)
+                a_s.append(as_)
+            w_s = []
+            for w in self._inputs:
+                ws = sp.Dummy(_name(w), real=True)
+                rule[w] = ws
+                w_s.append(ws)
+            self._cache["stand_ins"] = (tuple(q_s), tuple(u_s), tuple(a_s), tuple(w_s), rule)
+        return self._cache["stand_ins"]
+
+    def _symbolic(self):
+        """M and f with the stand-in symbols (computed once, sharing subexpressions)."""
+        if "symbolic" not in self._cache:
+            q_s, u_s, a_s, w_s, rule = self._stand_ins()
+            n = len(q_s)
+            memo = {}
+            M = xreplace_shared(list(self._M), rule, memo)
+            f = xreplace_shared(list(self._f), rule, memo)
+            self._cache["symbolic"] = (q_s, u_s, w_s, rule, sp.ImmutableMatrix(n, n, M),
+                                       sp.ImmutableMatrix(n, 1, f))
+        return self._cache["symbolic"]
+
+    def _check_compilable(self):
+        bad = self._cache["input_derivatives"]
+        if bad:
+            raise CompilationError(
+                f"the equations contain {', '.join(map(str, bad))}: derivatives of inputs "
+                "cannot be given as values; substitute an expression of t for the input "
+                "first (eqs.forcing.subs(F(t), ...)) or make it a parameter of situation.")
+
+    def _model_names(self):
+        if "model" not in self._cache:
+            model = self._model() if callable(self._model) else self._model
+            self._cache["model"] = {s.name for s in (model or ())}
+        return self._cache["model"]
+
+    def _values(self, params):
+        """(parameter values, input values, notes) from keyword values, checked."""
+        names = {p.name for p in self._params}
+        input_names = [_name(w) for w in self._inputs]
         missing = [p.name for p in self._params if p.name not in params]
-        unknown = sorted(set(params) - {p.name for p in self._params})
-        if missing:
+        missing_inputs = [w for w in input_names if w not in params]
+        if missing or missing_inputs:
+            parts = []
+            if missing:
+                parts.append(f"parameters {missing}")
+            if missing_inputs:
+                parts.append(f"inputs {missing_inputs} (numbers or callables of t)")
+            example = ", ".join(f"{m}=1.0" for m in missing + missing_inputs)
             raise ArgumentError(
-                f"missing values for parameters {missing}; pass them as keywords, e.g. "
-                f"{', '.join(f'{m}=1.0' for m in missing)}.")
+                f"missing values for {' and '.join(parts)}; pass them as keywords, e.g. "
+                f"{example}.")
+        extra = sorted(set(params) - names - set(input_names))
+        dropped = [x for x in extra if x in self._model_names()]
+        unknown = [x for x in extra if x not in dropped]
         if unknown:
             raise ArgumentError(
                 f"unknown parameters {unknown}; the equations depend on "
-                f"{[p.name for p in self._params]}.")
-        return [float(params[p.name]) for p in self._params]
+                f"{[p.name for p in self._params] + input_names}.")
+        def number(name, kind):
+            try:
+                return float(params[name])
+            except (TypeError, ValueError):
+                raise ArgumentTypeError(
+                    f"the value of {kind} `{name}` must be a real number"
+                    f"{' or a callable of t' if kind == 'input' else ''}; got "
+                    f"{params[name]!r}.") from None
+
+        values = [number(p.name, "parameter") for p in self._params]
+        inputs = [params[w] if callable(params[w]) else number(w, "input")
+                  for w in input_names]
+        notes = ()
+        if dropped:
+            notes = (f"parameters {', '.join(dropped)} do not enter the equations of motion "
+                     "(they dropped out of the derivation): their values are ignored.",)
+            for note in notes:
+                _log.info(note)
+        return values, inputs, notes
 
     def _solver(self):
         if "solver" not in self._cache:
+            self._check_compilable()
+            q_s, u_s, w_s, _, M, f = self._symbolic()
             self._cache["solver"] = compile_linear_solve(
-                self._M, self._f, [_t, list(self._q), list(self._u), *self._params],
+                M, f, [_t, list(q_s), list(u_s), *self._params, *w_s],
                 symmetric=True, name="accelerations")
         return self._cache["solver"]
 
@@ -175,42 +371,98 @@ class EquationsOfMotion:
         """The first-order right-hand side ``f(t, y)`` with y = (q, q'), compiled once.
 
         Works on a single state (shape (2n,)) or a batch (shape (2n, batch)); returns a
-        fresh array each call.
+        fresh array each call. ``params`` give the values of :attr:`parameters` and of the
+        :attr:`inputs` (a number, or a callable of t). A value for a constant of the model
+        that dropped out of the equations is ignored, with a note kept in the attribute
+        ``notes`` of the returned function (and logged by the ``"rigidmech"`` logger).
 
         Examples
         --------
         >>> import sympy as sp, numpy as np
-        >>> x, v, k = sp.symbols("x x_dot k")
-        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
-        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                         forcing=sp.ImmutableMatrix([[-k * x]]))
         >>> eqs.rhs(k=4.0)(0.0, np.array([1.0, 0.0]))
         array([ 0., -4.])
         """
-        values = self._param_values(params)
+        self._check_compilable()
+        values, inputs, notes = self._values(params)
         solve = self._solver()
         n = len(self._q)
+        if not any(callable(w) for w in inputs):
+            values = values + inputs
 
-        def fun(t, y):
-            acc = solve(t, y[:n], y[n:], *values)
-            return np.concatenate((y[n:], acc), axis=0)
+            def fun(t, y):
+                acc = solve(t, y[:n], y[n:], *values)
+                return np.concatenate((y[n:], acc), axis=0)
+        else:
+            def fun(t, y):
+                w = [v(t) if callable(v) else v for v in inputs]
+                acc = solve(t, y[:n], y[n:], *values, *w)
+                return np.concatenate((y[n:], acc), axis=0)
 
+        fun.notes = notes
         return fun
 
     def _acceleration_only(self, method, params):
         """q'' = a(t, q) for the geometric (second-order) methods, which need accelerations
         independent of the velocities (separable systems)."""
-        if any(self._f.has(u) for u in self._u):
+        q_s, u_s, _, _, _, f = self._symbolic()
+        if any(f.has(u) for u in u_s):
             raise ArgumentError(
                 f"method {method!r} integrates q'' = a(t, q) only, but these equations "
                 "depend on q' (velocity products); use an explicit method such as 'dop853'.")
-        values = self._param_values(params)
+        values, inputs, notes = self._values(params)
         solve = self._solver()
         zeros = np.zeros(len(self._u))
 
         def acc(t, q):
-            return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values)
+            w = [v(t) if callable(v) else v for v in inputs]
+            return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values, *w)
 
+        acc.notes = notes
         return acc
+
+    def _initial(self, values, what, default_zero):
+        """Initial coordinates or rates from a sequence (in the order of :attr:`coordinates`)
+        or a mapping by name (missing names: 0)."""
+        n = len(self._q)
+        names = self.names
+        if values is None:
+            if default_zero:
+                return np.zeros(n)
+            raise ArgumentError(
+                f"`{what}` must give {n} initial values (a sequence in the order "
+                f"{', '.join(names)}, or a dict by name); got None.")
+        if isinstance(values, dict):
+            out = np.zeros(n)
+            unknown = []
+            for key, value in values.items():
+                if isinstance(key, str) and key in names:
+                    k = names.index(key)
+                elif key in self._coordinates:
+                    k = self._coordinates.index(key)
+                else:
+                    unknown.append(key)
+                    continue
+                out[k] = float(value)
+            if unknown:
+                raise ArgumentError(
+                    f"`{what}` names {', '.join(repr(str(x)) for x in unknown)}, which "
+                    f"{'are' if len(unknown) > 1 else 'is'} not a coordinate; the coordinates "
+                    f"are {', '.join(names)}.")
+            return out
+        try:
+            out = np.asarray(values, dtype=float)
+        except (TypeError, ValueError):
+            raise ArgumentError(
+                f"`{what}` must be {n} numbers or a dict by name; got {values!r}.") from None
+        if out.shape != (n,):
+            raise ArgumentError(
+                f"`{what}` must give {n} initial values (in the order {', '.join(names)}, or "
+                f"a dict by name); got {values!r}.")
+        return out
 
     def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
                  atol=1e-10, step=None, n_output=1001, **params) -> Simulation:
@@ -219,7 +471,11 @@ class EquationsOfMotion:
         Parameters
         ----------
         t : (t0, t1)
-        q0, u0 : sequences of n floats (u0 defaults to zeros)
+        q0, u0 : sequence of n floats, or dict by coordinate name
+            Initial coordinates and rates: a sequence in the order of :attr:`coordinates`,
+            or a dict ``{"x": 1.0, "psi": 0.2}`` keyed by :attr:`names` (or by the
+            coordinates q(t)) in which a coordinate not named starts at 0. ``u0`` defaults
+            to zeros. An unknown name is refused.
         method : str
             A method of :func:`rigidmech.ode.solve` ("dop853", "dopri5", "rk4", ...).
         rtol, atol, step
@@ -227,19 +483,17 @@ class EquationsOfMotion:
         n_output : int
             Number of evenly spaced output times.
         **params
-            Values of :attr:`parameters`.
+            Values of :attr:`parameters` and :attr:`inputs` (numbers, or callables of t for
+            the inputs). Values for constants of the model that dropped out of the equations
+            are ignored with a note (:attr:`Simulation.notes`).
 
         Returns
         -------
         Simulation
         """
-        n = len(self._q)
-        if q0 is None or len(q0) != n:
-            raise ArgumentError(f"`q0` must give {n} initial values; got {q0!r}.")
-        u0 = np.zeros(n) if u0 is None else np.asarray(u0, dtype=float)
-        if u0.shape != (n,):
-            raise ArgumentError(f"`u0` must give {n} initial values; got {u0.tolist()!r}.")
-        y0 = np.concatenate((np.asarray(q0, dtype=float), u0))
+        q0 = self._initial(q0, "q0", default_zero=False)
+        u0 = self._initial(u0, "u0", default_zero=True)
+        y0 = np.concatenate((q0, u0))
         if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
             fun = self._acceleration_only(method, params)
         else:
@@ -253,22 +507,55 @@ class EquationsOfMotion:
         if not res.success:
             raise NumericalError(f"integration failed: {res.message}")
         warn_near_singularities(self.singular_sets, self._coordinates, res, params)
-        return Simulation(self, res, params, elapsed)
+        return Simulation(self, res, params, elapsed, notes=fun.notes)
 
-    def _latex(self, printer=None):
-        acc = sp.Matrix([sp.Symbol(rf"\ddot{{{sp.latex(q)}}}") for q in self._q])
-        return (sp.latex(sp.Matrix(self._M)) + sp.latex(acc) + " = "
-                + sp.latex(sp.Matrix(self._f)))
-
-    def _repr_latex_(self):
-        """M(q) q'' = f(q, q', t) rendered in Jupyter and in the docs.
+    def display_rule(self) -> dict:
+        """Symbols to print q(t), q'(t), q''(t) as q, q_dot, q_ddot (for reading only: they
+        are not the symbols of any computation).
 
         Examples
         --------
         >>> import sympy as sp
-        >>> x, v, k = sp.symbols("x x_dot k")
-        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
-        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                         forcing=sp.ImmutableMatrix([[-k * x * x.diff(rm.t)]]))
+        >>> eqs.forcing.xreplace(eqs.display_rule())
+        Matrix([[-k*x*x_dot]])
+        """
+        rule = {}
+        for q, u, a in zip(self._q, self._u, self._a, strict=True):
+            name = _name(q)
+            if a is not None:
+                rule[a] = sp.Symbol(name + "_ddot", real=True)
+            rule[u] = sp.Symbol(name + "_dot", real=True) if not isinstance(u, sp.Symbol) else u
+            rule[q] = sp.Symbol(name, real=True) if not isinstance(q, sp.Symbol) else q
+        return rule
+
+    def _latex(self, printer=None):
+        rule = {}
+        for q, u, a in zip(self._q, self._u, self._a, strict=True):
+            name = sp.latex(sp.Symbol(_name(q)))
+            if a is not None:
+                rule[a] = sp.Symbol(rf"\ddot{{{name}}}")
+            rule[u] = sp.Symbol(rf"\dot{{{name}}}")
+            rule[q] = sp.Symbol(name)
+        acc = sp.Matrix([sp.Symbol(rf"\ddot{{{sp.latex(sp.Symbol(_name(q)))}}}")
+                         for q in self._q])
+        return (sp.latex(sp.Matrix(self._M).xreplace(rule)) + sp.latex(acc) + " = "
+                + sp.latex(sp.Matrix(self._f).xreplace(rule)))
+
+    def _repr_latex_(self):
+        """M(q) q'' = f(q, q', t) rendered in Jupyter and in the docs, q(t) and its rates
+        printed q, q dot, q double dot.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                         forcing=sp.ImmutableMatrix([[-k * x]]))
         >>> eqs._repr_latex_().startswith(r"$\\displaystyle \\left[\\begin{matrix}1")
         True
         >>> r"\\ddot{x}" in eqs._repr_latex_()
@@ -277,8 +564,9 @@ class EquationsOfMotion:
         return f"$\\displaystyle {self._latex()}$"
 
     def __repr__(self):
+        inputs = f", inputs={list(self._inputs)}" if self._inputs else ""
         return (f"EquationsOfMotion(coordinates={list(self._coordinates)}, "
-                f"n={len(self._q)}, parameters={list(self._params)})")
+                f"n={len(self._q)}, parameters={list(self._params)}{inputs})")
 
 
 class Simulation:
@@ -291,22 +579,28 @@ class Simulation:
     result : rigidmech.ode.OdeResult
     elapsed : float
         Wall time of the integration, seconds.
+    notes : tuple of str
+        What the run noted without failing: values given for constants that dropped out of
+        the equations, which were ignored.
 
     Examples
     --------
     >>> import sympy as sp
-    >>> x, v, k = sp.symbols("x x_dot k")
-    >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
-    ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]),
-    ...     energy=(v**2 + k * x**2) / 2)
+    >>> import rigidmech as rm
+    >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+    >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+    ...     forcing=sp.ImmutableMatrix([[-k * x]]),
+    ...     energy=(x.diff(rm.t)**2 + k * x**2) / 2)
     >>> sim = eqs.simulate(t=(0, 3), q0=[1.0], rtol=1e-10, atol=1e-12, k=4.0)
     >>> bool(abs(sim.q[0, -1] - np.cos(6.0)) < 1e-8), sim.energy_drift() < 1e-9
     (True, True)
+    >>> bool(np.allclose(sim.evaluate(x.diff(rm.t, 2)), -4.0 * sim.q[0]))
+    True
     """
 
-    __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed")
+    __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes")
 
-    def __init__(self, eqs, result, params, elapsed):
+    def __init__(self, eqs, result, params, elapsed, notes=()):
         self._eqs = eqs
         self.result = result
         n = len(eqs.q)
@@ -315,20 +609,74 @@ class Simulation:
         self.u = result.y[n:]
         self._params = dict(params)
         self.elapsed = elapsed
+        self.notes = tuple(notes)
 
     @property
     def equations(self) -> EquationsOfMotion:
         """The equations that were integrated."""
         return self._eqs
 
+    def _input_values(self):
+        out = []
+        for w in self._eqs.inputs:
+            v = self._params[_name(w)]
+            if callable(v):
+                try:
+                    v = np.asarray(v(self.t), dtype=float)
+                except (TypeError, ValueError):  # a callable of one float only
+                    v = np.array([float(v(x)) for x in self.t])
+            out.append(np.broadcast_to(np.asarray(v, dtype=float), self.t.shape))
+        return out
+
     def evaluate(self, expr):
-        """Evaluate a symbolic expression of q, q' (symbols), t and the parameters along the
-        motion; returns an array over the output times."""
+        """Evaluate a symbolic expression along the motion; returns an array over the output
+        times (for a Matrix, its shape followed by the times).
+
+        The expression may hold t, the coordinates q(t) and their first and second
+        derivatives (q'' is the solution of the equations of motion), the inputs and
+        constants given to :meth:`EquationsOfMotion.simulate` (including those that dropped
+        out of the equations).
+        """
         eqs = self._eqs
-        f = compile_expressions(sp.sympify(expr),
-                                [_t, list(eqs.q), list(eqs.u), *eqs.parameters])
-        values = [self._params[p.name] for p in eqs.parameters]
-        return np.broadcast_to(f(self.t, self.q, self.u, *values), self.t.shape).copy()
+        q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
+        if isinstance(expr, sp.MatrixBase):
+            shape = expr.shape
+            flat = xreplace_shared(list(expr), rule)
+            e = sp.ImmutableMatrix(*shape, flat)
+        else:
+            try:
+                flat = xreplace_shared([sp.sympify(expr)], rule)
+            except (sp.SympifyError, TypeError) as exc:
+                raise ArgumentTypeError(
+                    f"`expr` must be a sympy expression or Matrix; got {type(expr).__name__}."
+                ) from exc
+            e = flat[0]
+        symbols, functions, derivatives = atoms_shared(flat)
+        if functions or derivatives:
+            raise CompilationError(
+                f"`expr` contains {', '.join(sorted(map(str, functions | derivatives)))}, "
+                "which is neither a coordinate of the equations, one of its first two "
+                "derivatives nor an input.")
+        known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t}
+        constants = sorted(symbols - known, key=lambda s: s.name)
+        missing = [c.name for c in constants if c.name not in self._params]
+        if missing:
+            raise ArgumentError(
+                f"`expr` depends on {missing}, which the simulation has no value for; give "
+                "them to simulate().")
+        values = [float(self._params[c.name]) for c in constants]
+        f = compile_expressions(e, [_t, list(q_s), list(u_s), list(a_s), *constants,
+                                    *w_s])
+        inputs = self._input_values()
+        if any(e.has(a) for a in a_s):
+            params = [float(self._params[p.name]) for p in eqs.parameters]
+            acc = eqs._solver()(self.t, self.q, self.u, *params, *inputs)
+        else:
+            acc = np.zeros_like(self.q)
+        out = f(self.t, self.q, self.u, acc, *values, *inputs)
+        if isinstance(e, sp.MatrixBase):
+            return np.broadcast_to(out, tuple(e.shape) + self.t.shape).copy()
+        return np.broadcast_to(out, self.t.shape).copy()
 
     def energy(self):
         """Total mechanical energy along the motion."""
@@ -359,8 +707,8 @@ class Simulation:
                 import matplotlib.pyplot as plt  # imported on use (slow import)
 
                 ax = plt.subplots(figsize=(7, 4))[1]
-        for i, q in enumerate(self._eqs.q):
-            ax.plot(self.t, self.q[i], label=f"${sp.latex(q)}$")
+        for i, name in enumerate(self._eqs.names):
+            ax.plot(self.t, self.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
         ax.set_xlabel("t")
         ax.set_ylabel("parameters of situation")
         ax.legend()

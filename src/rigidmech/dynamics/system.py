@@ -23,18 +23,19 @@ exerted on them. It derives, on demand and each only once:
 
 from __future__ import annotations
 
+import re
 from functools import partial
 
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.symbolic import free_symbols_shared, xreplace_shared
+from .._core.symbolic import free_symbols_shared
 from ..actions import Action, Joint
 from ..kinematics import Solid
 from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
-from ..vectors.symbols import is_coordinate
+from ..vectors.symbols import declared_order, is_coordinate
 from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
@@ -42,16 +43,24 @@ from .equations import EquationsOfMotion
 __all__ = ["System"]
 
 
+def _natural(name):
+    """Sort key: q2 before q10."""
+    return [int(p) if p.isdigit() else p for p in re.split(r"(\d+)", name)]
+
+
 def _coordinates_in(expr_iterable):
     found = []
     for e in expr_iterable:
-        for a in sorted(sp.sympify(e).atoms(sp.core.function.AppliedUndef), key=str):
+        atoms = sp.sympify(e).atoms(sp.core.function.AppliedUndef)
+        for a in sorted(atoms, key=lambda a: _natural(str(a))):
             if is_coordinate(a) and a not in found:
                 found.append(a)
     return found
 
 
 def _frame_exprs(frame):
+    """The expressions that place ``frame``: from the root down, for each frame its origin's
+    position (components in order) and then its rotation from its parent."""
     chain = []
     f = frame
     while f is not None:
@@ -59,11 +68,39 @@ def _frame_exprs(frame):
         f = f.parent
     out = []
     for g in reversed(chain):
+        out.extend(x for _, c in g.origin.position.parts for x in c)
         out.append(g.angle)
         if g._matrix is not None:
             out.extend(x for row in g._matrix for x in row)
-        out.extend(x for _, c in g.origin.position.parts for x in c)
     return out
+
+
+def _mechanical_energy(galilean, solids, bodies, actions):
+    """T + V of ``bodies`` under ``actions`` (values, not the system: a snapshot)."""
+    T = sp.Add(*[b.kinetic_energy(galilean) for b in bodies if b.mass])
+    V = []
+    for action in actions:
+        pe = action.potential_energy(solids, galilean)
+        if pe is None:
+            return None
+        V.append(pe)
+    return T + sp.Add(*V)
+
+
+def _constants(bodies, contributions):
+    """The constant symbols of bodies (mass, inertia, centre, frames) and action torsors."""
+    exprs = []
+    for b in bodies:
+        exprs.extend(_frame_exprs(b.frame))
+        exprs.extend(x for _, c in b.centre.position.parts for x in c)
+        if b.mass is not None:
+            exprs.append(b.mass)
+        if b.inertia is not None:
+            exprs.extend(b.inertia.matrix)
+    for _, torsor, _ in contributions:
+        for v in (torsor.resultant, torsor.moment, torsor.point.position):
+            exprs.extend(x for _, c in v.parts for x in c)
+    return tuple(sorted(free_symbols_shared(exprs) - {t}, key=lambda s: s.name))
 
 
 class System:
@@ -75,7 +112,14 @@ class System:
         The Galilean reference R (ch. 18.1.2); bodies may be connected to it.
     coordinates : sequence of q(t), optional
         The parameters of situation, in the order of the equations. Default: those found in
-        the bodies' frames and mass centres, in the order the bodies were connected.
+        the bodies, in the order of :attr:`coordinates`.
+
+    Notes
+    -----
+    Every result is written with the user's parameters of situation q(t) (made with
+    :func:`rigidmech.coordinates`, or ``sympy.physics.mechanics.dynamicsymbols``), their
+    derivatives ``q.diff(t)`` and the constants: ``subs``, evaluation along a simulation and
+    compilation accept them (one symbol world).
 
     Examples
     --------
@@ -90,7 +134,9 @@ class System:
     >>> system.act(rm.gravity(g * R0.i))
     >>> eqs = system.equations_of_motion()
     >>> eqs.mass_matrix, eqs.forcing
-    (Matrix([[L**2*m/3]]), Matrix([[-L*g*m*sin(q)/2]]))
+    (Matrix([[L**2*m/3]]), Matrix([[-L*g*m*sin(q(t))/2]]))
+    >>> eqs.forcing.subs(q, 0)
+    Matrix([[0]])
     """
 
     def __init__(self, galilean: Frame, coordinates=None):
@@ -208,7 +254,30 @@ class System:
 
     @property
     def coordinates(self) -> tuple:
-        """The parameters of situation q(t) in the order of the equations."""
+        """The parameters of situation q(t) in the order of the equations.
+
+        Unless given to the constructor, they come in the order they were declared with
+        :func:`rigidmech.coordinates` (by call, then by position in the call; a name
+        declared again takes the rank of its latest declaration; see
+        :func:`rigidmech.vectors.declared_order`). Functions of time made otherwise
+        (``sympy.physics.mechanics.dynamicsymbols``) come after them, in the order they are
+        met: body by body in the order the bodies were added or connected; for a body,
+        along its frame's chain from the Galilean root down, for each frame first the
+        coordinates of its origin (x, y, z) and then its rotation angle; then the body's
+        centre of mass; coordinates met in one expression by name (q2 before q10). The
+        order is fixed when first asked.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x, y, z, psi, theta, phi = rm.coordinates("x y z psi theta phi")
+        >>> R0 = rm.Frame("R0"); G = R0.point("G", x, y, z)
+        >>> s = System(galilean=R0)
+        >>> s.add(rm.Body("b", frame=R0.euler("R", psi, theta, phi, origin=G), mass=1,
+        ...               centre=G))
+        >>> s.coordinates
+        (x(t), y(t), z(t), psi(t), theta(t), phi(t))
+        """
         if self._given_coordinates is not None:
             return self._given_coordinates
         if "coordinates" in self._cache:
@@ -217,7 +286,7 @@ class System:
         for b in self._bodies:
             exprs.extend(_frame_exprs(b.frame))
             exprs.extend(x for _, c in b.centre.position.parts for x in c)
-        found = _coordinates_in(exprs)
+        found = declared_order(_coordinates_in(exprs))
         if not found:
             raise ArgumentError("the system has no parameter of situation: nothing moves.")
         self._cache["coordinates"] = tuple(found)
@@ -225,6 +294,8 @@ class System:
 
     # -- derivations --------------------------------------------------------------------
     def _symbols(self):
+        """Plain symbols q, q_dot, q_ddot for q(t), q'(t), q''(t) and the rule between
+        them: not used in the results (which keep q(t)), offered by :meth:`symbols`."""
         if "symbols" not in self._cache:
             qs = self.coordinates
             names = [q.func.__name__ for q in qs]
@@ -272,16 +343,18 @@ class System:
         return self._cache[key]
 
     def equations_of_motion(self) -> EquationsOfMotion:
-        """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns.
+        """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns,
+        written with the coordinates q(t) and their derivatives.
 
         Derived once and cached; no connection action is derived (ARCHITECTURE.md,
-        principle 4). Nothing is simplified: ask for it on the result if wanted.
+        principle 4). Nothing is simplified: ask for it on the result if wanted. The result
+        is a snapshot: changing the system afterwards (``act``, ``connect``) leaves it as it
+        is, its energy included.
         """
         if "eom" in self._cache:
             return self._cache["eom"]
         R = self._galilean
-        q_sym, u_sym, a_sym, rule = self._symbols()
-        n = len(q_sym)
+        n = len(self.coordinates)
         no_acc = {q.diff(t, 2): 0 for q in self.coordinates}
         # Terms are collected in lists and summed once: adding to a growing sympy sum
         # re-sorts it at every step.
@@ -318,39 +391,50 @@ class System:
                 f_terms[i].append(torsor.resultant.dot(Vi))
                 f_terms[i].append(torsor.moment.dot(Wi))
         M = [[sp.Add(*M_terms[i][j]) if j >= i else None for j in range(n)] for i in range(n)]
-        f = [sp.Add(*terms) for terms in f_terms]
-        memo = {}
-        upper = xreplace_shared([M[i][j] for i in range(n) for j in range(i, n)], rule, memo)
-        fx = xreplace_shared(f, rule, memo)
-        k = 0
         for i in range(n):
-            for j in range(i, n):
-                M[i][j] = M[j][i] = upper[k]
-                k += 1
+            for j in range(i):
+                M[i][j] = M[j][i]
+        f = [sp.Add(*terms) for terms in f_terms]
+        bodies, actions = tuple(self._bodies), tuple(self._actions)
         eqs = EquationsOfMotion(
-            coordinates=self.coordinates, q=q_sym, u=u_sym,
-            mass_matrix=sp.ImmutableMatrix(M), forcing=sp.ImmutableMatrix(n, 1, fx),
-            energy=self.mechanical_energy,
-            parameters=free_symbols_shared(upper + fx) - set(q_sym) - set(u_sym) - {t},
-            singular_sets=partial(orientation_singularities, tuple(self._bodies), R))
+            coordinates=self.coordinates, mass_matrix=sp.ImmutableMatrix(M),
+            forcing=sp.ImmutableMatrix(n, 1, f),
+            energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
+            model_parameters=partial(_constants, bodies, tuple(self._contributions())),
+            singular_sets=partial(orientation_singularities, tuple(bodies), R))
         # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
         eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
-            self._bodies, self.coordinates))
+            bodies, self.coordinates))
         self._cache["eom"] = eqs
         return eqs
 
+    @property
+    def parameters(self) -> tuple:
+        """The constant symbols of the model (masses, inertia, lengths of the bodies and
+        frames, constants of the actions), sorted by name. The equations of motion depend on
+        some of them (:attr:`EquationsOfMotion.parameters`); values given for the others are
+        accepted and ignored with a note.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); m, a = rm.constants("m a", positive=True)
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, a, 0)
+        >>> s = System(galilean=R0)
+        >>> s.add(rm.Body("b", frame=R0.translated("R1", P), mass=m, centre=P))
+        >>> s.parameters, s.equations_of_motion().parameters
+        ((a, m), (m,))
+        """
+        if "parameters" not in self._cache:
+            self._cache["parameters"] = _constants(tuple(self._bodies),
+                                                   tuple(self._contributions()))
+        return self._cache["parameters"]
+
     def mechanical_energy(self):
-        """Total mechanical energy T + V in symbol form, or None if an action has no
+        """Total mechanical energy T + V with q(t), q'(t), or None if an action has no
         potential."""
-        _, _, _, rule = self._symbols()
-        T = sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
-        V = []
-        for action in self._actions:
-            pe = action.potential_energy([self._ground, *self._bodies], self._galilean)
-            if pe is None:
-                return None
-            V.append(pe)
-        return xreplace_shared([T + sp.Add(*V)], rule)[0]
+        return _mechanical_energy(self._galilean, (self._ground, *self._bodies),
+                                  tuple(self._bodies), tuple(self._actions))
 
     def kinetic_energy(self):
         """Kinetic energy of the set of bodies relative to the Galilean reference (ch. 16.3.3),
@@ -358,15 +442,15 @@ class System:
         return sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
 
     def generalized_forces(self):
-        """Power coefficients Q_i of the given actions (ch. 25.1.3), in symbol form
-        (q_i, q_i_dot): the power of the actions is sum Q_i q_i'."""
-        q_sym, _, _, rule = self._symbols()
-        Q = [sp.S.Zero] * len(q_sym)
+        """Power coefficients Q_i of the given actions (ch. 25.1.3), with q(t), q'(t): the
+        power of the actions is sum Q_i q_i'."""
+        n = len(self.coordinates)
+        Q = [[] for _ in range(n)]
         for solid, torsor, _ in self._contributions():
             parts = self._partials(solid, torsor.point)
             for i, (Wi, Vi) in enumerate(parts):
-                Q[i] += torsor.resultant.dot(Vi) + torsor.moment.dot(Wi)
-        return sp.ImmutableMatrix(len(q_sym), 1, xreplace_shared(Q, rule))
+                Q[i].append(torsor.resultant.dot(Vi) + torsor.moment.dot(Wi))
+        return sp.ImmutableMatrix(n, 1, [sp.Add(*terms) for terms in Q])
 
     def orientation_singularities(self) -> tuple:
         """The singular sets of the angles orienting the bodies (book, ch. 9.1.2): for each
@@ -387,8 +471,10 @@ class System:
         return orientation_singularities(tuple(self._bodies), self._galilean)
 
     def symbols(self):
-        """The symbols standing for q, q' and q'' in derived expressions, and the rule that
-        replaces q(t) and its derivatives by them."""
+        """Plain symbols (q, q_dot, q_ddot) for the coordinates and their first two
+        derivatives, and the rule that replaces q(t) and its derivatives by them, for whoever
+        wants expressions in plain symbols: ``expr.xreplace(rule)``. rigidmech's own results
+        keep q(t)."""
         return self._symbols()
 
     # -- connection actions -------------------------------------------------------------
@@ -406,8 +492,8 @@ class System:
         Derived only now, from the fundamental principle for the bodies carried by the
         connection: {A(parent -> child)} = sum over the carried bodies of their dynamic
         torsors minus the other actions exerted on them. Like every torsor of rigidmech it is
-        written with the parameters of situation q(t) and their derivatives; for numbers, use
-        :meth:`connection_components` (symbols q, q_dot, q_ddot, joint basis).
+        written with the parameters of situation q(t) and their derivatives; for its
+        components in the joint's basis, use :meth:`connection_components`.
 
         Examples
         --------
@@ -444,15 +530,14 @@ class System:
 
     def connection_components(self, parent, child) -> dict:
         """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
-        joint's local basis (u, v, w), moment at the joint's point, in symbol form
-        (q, q_dot, q_ddot). For a perfect joint the components it cannot transmit (N for a
-        pivot) vanish once q'' satisfies the equations of motion.
+        joint's local basis (u, v, w), moment at the joint's point, written with q(t), q'(t)
+        and q''(t) (evaluate them along a motion with :meth:`Simulation.evaluate`). For a
+        perfect joint the components it cannot transmit (N for a pivot) vanish once q''
+        satisfies the equations of motion.
         """
         T = self.connection_action(parent, child)
         joint = self._joints[self._solid(child, "child")][1]
-        _, _, _, rule = self._symbols()
-        comps = joint.components(T)
-        return dict(zip(comps, xreplace_shared(list(comps.values()), rule), strict=True))
+        return dict(joint.components(T))
 
     def joint(self, child):
         """The (parent solid, joint) of a body."""

@@ -565,7 +565,8 @@ class InertiaOperator:
 
     # -- transforms and comparison ------------------------------------------------------
     def subs(self, *args, **kwargs) -> InertiaOperator:
-        """Substitute values in the entries and in the point (sympy's ``subs``).
+        """Substitute values in the entries, the point and the frame of the basis (sympy's
+        ``subs``; frames as in :meth:`~rigidmech.vectors.Frame.subs`).
 
         Examples
         --------
@@ -575,7 +576,8 @@ class InertiaOperator:
         >>> InertiaOperator.from_products(m, m, 2 * m, frame=R0).subs(m, 3).C
         6
         """
-        return InertiaOperator._make(self._matrix.subs(*args, **kwargs), self._frame,
+        return InertiaOperator._make(self._matrix.subs(*args, **kwargs),
+                                     self._frame.subs(*args, **kwargs),
                                      self._at.subs(*args, **kwargs), self._central)
 
     def simplify(self) -> InertiaOperator:

@@ -36,8 +36,8 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     Returns
     -------
     EquationsOfMotion
-        M(q) q'' = f(q, q', t) with the same symbols as
-        :meth:`System.equations_of_motion`.
+        M(q) q'' = f(q, q', t), written like :meth:`System.equations_of_motion` with the
+        coordinates q(t) and their derivatives.
 
     Examples
     --------
@@ -53,7 +53,7 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     >>> s.act(rm.gravity(g * R0.i))
     >>> eqs = lagrange_equations(s)
     >>> eqs.mass_matrix, sp.simplify(eqs.forcing)
-    (Matrix([[L**2*m/3]]), Matrix([[-L*g*m*sin(q)/2]]))
+    (Matrix([[L**2*m/3]]), Matrix([[-L*g*m*sin(q(t))/2]]))
     """
     if not isinstance(system, System):
         raise ArgumentTypeError(f"`system` must be a System; got {type(system).__name__}.")
@@ -64,10 +64,12 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     rates = [q.diff(t) for q in qs]
     lhs = [sp.diff(sp.diff(T, r), t) - sp.diff(T, q) for q, r in zip(qs, rates, strict=True)]
     lhs = xreplace_shared(lhs, rule)
-    Q = system.generalized_forces()
+    Q = xreplace_shared(list(system.generalized_forces()), rule)
     no_acc = {a: 0 for a in a_sym}
     M = sp.ImmutableMatrix(n, n, lambda i, j: sp.diff(lhs[i], a_sym[j]))
     f = sp.ImmutableMatrix(n, 1, lambda i, _: Q[i] - lhs[i].xreplace(no_acc))
+    # the plain symbols served the differentiations only: results are written with q(t)
     return EquationsOfMotion(coordinates=qs, q=q_sym, u=u_sym, mass_matrix=M, forcing=f,
-                             energy=system.mechanical_energy,
+                             energy=system.mechanical_energy(),
+                             model_parameters=system.parameters,
                              singular_sets=system.orientation_singularities())

@@ -19,7 +19,7 @@ Examples
 """
 
 from .catalogue import Built, Parameter, Scene, catalogue, get, names
-from .pipeline import RunReport, equations_text, plot_simulation, run
+from .pipeline import RunReport, check_plot_path, equations_text, plot_simulation, run
 
 __all__ = ["Scene", "Parameter", "Built", "catalogue", "get", "names", "RunReport", "run",
-           "equations_text", "plot_simulation"]
+           "equations_text", "plot_simulation", "check_plot_path"]

@@ -7,9 +7,12 @@ integrates them, and prints the final state, the energy drift and the timings of
 figure (headless). ``scenes`` lists the catalogue. Without a NAME, ``run`` runs the default
 scene, ``double-pendulum``.
 
-Misuse (unknown scene, parameter or method, malformed value, wrong number of initial values)
-prints one line ``rigidmech: error: ...`` on stderr and exits with status 2; a failed
-integration exits with status 1.
+Every option and the ``--plot`` path are checked before the run. Misuse (unknown scene,
+parameter or method, malformed value, a non-positive value for a positive constant, wrong number
+of initial values, a plot path in a missing folder or with an unknown extension) prints one line
+``rigidmech: error: ...`` on stderr and exits with status 2; a failed integration prints one line
+and exits with status 1; Ctrl-C prints ``rigidmech: interrupted`` and exits with status 130. Any
+other failure prints one line too; ``--debug`` shows its traceback instead.
 """
 
 from __future__ import annotations
@@ -20,8 +23,9 @@ import sys
 
 from .. import ode
 from .._core.errors import NumericalError, RigidmechError, SceneError
+from .._core.version import __version__
 from .catalogue import catalogue, get, names
-from .pipeline import run
+from .pipeline import check_plot_path, run
 
 __all__ = ["main", "DEFAULT_SCENE"]
 
@@ -79,6 +83,7 @@ def _join_negative_values(argv):
 def _parser():
     p = _Parser(prog="rigidmech", description="Mechanics of rigid bodies after J.-M. "
                 "Berthelot's textbook: run the book's systems from the command line.")
+    p.add_argument("--version", action="version", version=f"rigidmech {__version__}")
     sub = p.add_subparsers(dest="command", metavar="{run,scenes}")
     sub.required = True
     r = sub.add_parser("run", help="derive, integrate and report a scene",
@@ -101,6 +106,8 @@ def _parser():
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
     r.add_argument("--pretty", action="store_true",
                    help="print the equations with sympy's 2-D pretty printer")
+    r.add_argument("--debug", action="store_true",
+                   help="show the traceback of an unexpected failure")
     sub.add_parser("scenes", help="list the catalogue of ready-made systems",
                    description="List the catalogue of ready-made systems.")
     return p
@@ -119,6 +126,8 @@ def _list_scenes(out):
 
 def _run(args, out):
     get(args.name)  # unknown scene: fail before anything else
+    if args.plot is not None:
+        check_plot_path(args.plot, "--plot")
     params = {}
     for name, value in args.param:
         if name in params:
@@ -141,15 +150,19 @@ def main(argv=None) -> int:
     0
     """
     out, err = sys.stdout, sys.stderr
+    argv = sys.argv[1:] if argv is None else list(argv)
+    debug = "--debug" in argv
     try:
-        argv = sys.argv[1:] if argv is None else list(argv)
         args = _parser().parse_args(_join_negative_values(argv))
         if args.command == "scenes":
             _list_scenes(out)
         else:
             _run(args, out)
-    except SystemExit as exc:  # --help
+    except SystemExit as exc:  # --help, --version
         return exc.code if isinstance(exc.code, int) else 0
+    except KeyboardInterrupt:
+        print("rigidmech: interrupted", file=err)
+        return 130
     except _UsageError as exc:
         print(f"rigidmech: error: {exc}", file=err)
         return 2
@@ -159,4 +172,10 @@ def main(argv=None) -> int:
     except RigidmechError as exc:
         print(f"rigidmech: error: {exc}", file=err)
         return 2
+    except Exception as exc:
+        if debug:
+            raise
+        print(f"rigidmech: internal error: {type(exc).__name__}: {exc} (run again with "
+              "--debug for the traceback)", file=err)
+        return 1
     return 0

@@ -12,6 +12,7 @@ is returned as an immutable :class:`RunReport`.
 from __future__ import annotations
 
 import math
+import os
 import re
 import time
 from types import MappingProxyType
@@ -24,7 +25,7 @@ from .._core.errors import SceneError
 from ..dynamics import EquationsOfMotion, Simulation
 from .catalogue import Scene, get
 
-__all__ = ["RunReport", "run", "equations_text", "plot_simulation"]
+__all__ = ["RunReport", "run", "equations_text", "plot_simulation", "check_plot_path"]
 
 
 def equations_text(eqs: EquationsOfMotion, *, pretty: bool = False) -> str:
@@ -43,13 +44,14 @@ def equations_text(eqs: EquationsOfMotion, *, pretty: bool = False) -> str:
     >>> print(equations_text(eqs))
     (L**2*m/3)*theta_ddot = -L*g*m*sin(theta)/2
     """
-    acc = [sp.Symbol(s.name.removesuffix("_dot") + "_ddot", real=True) for s in eqs.u]
-    M, f = eqs.mass_matrix, eqs.forcing
+    # q(t), q'(t) printed q, q_dot (reading only)
+    display = eqs.display_rule()
+    M, f = eqs.mass_matrix.xreplace(display), eqs.forcing.xreplace(display)
+    acc = [sp.Symbol(name + "_ddot", real=True) for name in eqs.names]
     n = len(acc)
     if pretty:  # dotted letters in 2-D: theta1_dot -> thetadot1, shown with a dot above
-        names = [re.fullmatch(r"(.*?)(\d*)", s.name.removesuffix("_dot")).groups()
-                 for s in eqs.u]
-        rule = {u: sp.Symbol(f"{a}dot{d}", real=True)
+        names = [re.fullmatch(r"(.*?)(\d*)", name).groups() for name in eqs.names]
+        rule = {display[u]: sp.Symbol(f"{a}dot{d}", real=True)
                 for u, (a, d) in zip(eqs.u, names, strict=True)}
         acc = [sp.Symbol(f"{a}ddot{d}", real=True) for a, d in names]
         M, f = M.xreplace(rule), f.xreplace(rule)
@@ -114,7 +116,9 @@ class RunReport:
         return equations_text(self.equations, pretty=pretty)
 
     def summary(self, *, pretty: bool = False) -> str:
-        """Several lines for a terminal: scene, equations, settings, energy drift, timings."""
+        """Several lines for a terminal: scene, equations, settings, energy drift, timings,
+        and the notes of the simulation (values given for constants that dropped out of the
+        equations, ignored)."""
         sc = self.scene
         coords = ", ".join(sc.coordinates)
         params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
@@ -137,6 +141,7 @@ class RunReport:
             f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
             f"steps), energy {ms['energy']:.1f} ms",
         ]
+        lines.extend(f"note: {note}" for note in self.simulation.notes)
         if self.plot_path is not None:
             lines.append(f"plot written to {self.plot_path}")
         return "\n".join(lines)
@@ -174,15 +179,64 @@ def _state(values, default, n, what, scene):
     return tuple(_finite(v, f"`{what}` entry {i}") for i, v in enumerate(values))
 
 
+def check_plot_path(path, argument="plot") -> str:
+    """Check, before a run, that a figure can be written at ``path``: its folder exists and
+    its extension is a file type matplotlib writes. Returns the path as a string.
+
+    Parameters
+    ----------
+    path : str or path-like
+    argument : str
+        The name of the argument in the error message (``"--plot"`` on the command line).
+
+    Raises
+    ------
+    SceneError
+        No extension, an unknown extension, or a folder that does not exist.
+
+    Examples
+    --------
+    >>> check_plot_path("pendulum.png")
+    'pendulum.png'
+    >>> check_plot_path("pendulum.xyz")                        # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.SceneError: `plot`: unknown file type '.xyz'; one of ...
+    """
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    name = f"`{argument}`" if not argument.startswith("-") else argument
+    text = str(path)
+    folder, base = os.path.split(text)
+    stem, ext = os.path.splitext(base)
+    types = sorted(FigureCanvasBase.get_supported_filetypes())
+    if not base or not ext:
+        raise SceneError(f"{name}: {text!r} has no file extension; give one of "
+                         f"{', '.join('.' + e for e in types)} (e.g. {text}.png).")
+    if ext[1:].lower() not in types:
+        raise SceneError(f"{name}: unknown file type {ext!r}; one of "
+                         f"{', '.join('.' + e for e in types)}.")
+    if folder and not os.path.isdir(folder):
+        raise SceneError(f"{name}: the folder {folder!r} does not exist; create it first.")
+    return text
+
+
+def _positive(values, built):
+    """Values of constants declared positive (``rm.constants(..., positive=True)``) must
+    be > 0: a negative mass or length gives equations with no physical meaning."""
+    eqs = built.system.equations_of_motion()
+    for symbol in eqs.parameters:
+        name = str(symbol)
+        if symbol.is_positive and name in values and not values[name] > 0:
+            raise SceneError(f"parameter `{name}` must be > 0 (the scene declares it "
+                             f"positive); got {values[name]:g}.")
+
+
 def _method(method, step):
     known = ode.methods()
     if not isinstance(method, str) or method not in known:
         raise SceneError(f"unknown method {method!r}; known methods: {', '.join(known)}.")
-    if method in ode.methods("second_order") + ode.methods("adaptive_second_order"):
-        raise SceneError(
-            f"method {method!r} integrates q'' = a(t, q) only; the equations of a scene depend "
-            "on q' too: choose another method.")
-    fixed = method in ode.methods("fixed")
+    fixed = method in ode.methods("fixed") + ode.methods("second_order")
     if fixed and step is None:
         raise SceneError(f"method {method!r} has a fixed step: give `step` (--step).")
     if not fixed and step is not None:
@@ -215,7 +269,8 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         Number of evenly spaced output times.
     plot : str or path-like, optional
         Write a figure (coordinates and relative energy error against time) there; works
-        without a display (matplotlib's Agg canvas, no pyplot).
+        without a display (matplotlib's Agg canvas, no pyplot). The path is checked before
+        the run (:func:`check_plot_path`).
 
     Returns
     -------
@@ -224,7 +279,9 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     Raises
     ------
     SceneError
-        Unknown scene, parameter or method; malformed values; wrong length of ``q0``/``u0``.
+        Unknown scene, parameter or method; malformed values; a value <= 0 for a constant
+        the scene declares positive; wrong length of ``q0``/``u0``; a plot path that cannot
+        be written; a method for q'' = a(t, q) on equations that depend on q'.
     NumericalError
         The integration failed.
 
@@ -262,12 +319,20 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     if step is None and not (rtol > 0 and atol >= 0):
         raise SceneError(f"`rtol` must be > 0 and `atol` >= 0; got rtol={rtol:g}, "
                          f"atol={atol:g}.")
+    if plot is not None:
+        check_plot_path(plot)
 
     timings = {}
     start = time.perf_counter()
     built = scene.build()
     eqs = built.system.equations_of_motion()
     timings["derive"] = time.perf_counter() - start
+    _positive(values, built)
+    if method in ode.methods("second_order") + ode.methods("adaptive_second_order") and any(
+            eqs.forcing.has(u) or eqs.mass_matrix.has(u) for u in eqs.u):
+        raise SceneError(
+            f"method {method!r} integrates q'' = a(t, q) only; the equations of scene "
+            f"{scene.name!r} depend on q' too: choose another method.")
     start = time.perf_counter()
     eqs.rhs(**values)  # compiles once; simulate() reuses the compiled function
     timings["compile"] = time.perf_counter() - start
@@ -312,8 +377,8 @@ def plot_simulation(sim: Simulation, path, *, title=None):
     has_energy = eqs.energy is not None
     fig = Figure(figsize=(7, 5.5 if has_energy else 3.5))
     axes = fig.subplots(2 if has_energy else 1, 1, sharex=True, squeeze=False)[:, 0]
-    for i, q in enumerate(eqs.q):
-        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(q)}$")
+    for i, name in enumerate(eqs.names):
+        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
     axes[0].set_ylabel("parameters of situation")
     axes[0].legend(loc="upper right")
     axes[0].grid(True, alpha=0.3)

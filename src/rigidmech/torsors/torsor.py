@@ -539,7 +539,19 @@ class Torsor:
                                self._point, like=self)
 
     def subs(self, *args, **kwargs) -> Torsor:
-        """Substitute values in the resultant, the moment and the point of reduction."""
+        """Substitute values in the resultant, the moment and the point of reduction, frames
+        included (see :meth:`Vector.subs`): the result no longer depends on what was
+        substituted.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame, Torsor, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> T = Torsor(resultant=R1.i, moment=Vector.zero(), at=R0.origin).subs(q, 0)
+        >>> T.resultant.components(R0).T
+        Matrix([[1, 0, 0]])
+        """
         return type(self)._new(self._resultant.subs(*args, **kwargs),
                                self._moment.subs(*args, **kwargs),
                                self._point.subs(*args, **kwargs), like=self)

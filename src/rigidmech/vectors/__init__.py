@@ -29,7 +29,7 @@ from .reference_change import (
     common_origin_map,
 )
 from .singularities import OrientationSingularity, orientation_singularity
-from .symbols import constants, coordinates, is_coordinate, t, time_derivative
+from .symbols import constants, coordinates, declared_order, is_coordinate, t, time_derivative
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
 __all__ = [
@@ -41,6 +41,7 @@ __all__ = [
     "affine_map", "change_of_coordinates", "common_axis_map", "common_origin_map",
     "derivation_formula", "derivative", "jacobian", "partial",
     "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
+    "declared_order",
     "OrientationSingularity", "orientation_singularity",
     "euler_parameter_matrix", "euler_parameter_rates", "euler_parameters_of",
 ]

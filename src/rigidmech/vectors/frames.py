@@ -17,6 +17,7 @@ from ._rotations import ONE, ZERO, FrameBase, direction_cosines
 from .euler_parameters import euler_parameter_matrix
 from .points import Point
 from .singularities import orientation_singularity
+from .symbols import t
 from .vector import Vector, rotation_vector
 
 __all__ = ["Frame"]
@@ -111,7 +112,7 @@ class Frame(FrameBase):
         nonzero = [n for n in range(3) if c[n] != 0]
         if not nonzero:
             raise FrameError("`about` must be a non-zero vector; got the zero vector.")
-        if any(x.atoms(sp.core.function.AppliedUndef) or x.has(sp.Symbol("t", real=True))
+        if any(x.atoms(sp.core.function.AppliedUndef) or x.has(t)
                for x in c):
             raise FrameError(
                 f"`about` must be a fixed axis of {self._name}; got {about!r}, which moves "
@@ -195,6 +196,48 @@ class Frame(FrameBase):
         R0.i
         """
         return Frame._child(name, self, axis=2, angle=ZERO, origin=self._check_origin(origin))
+
+    def subs(self, *args, **kwargs) -> Frame:
+        """The frame with values substituted in its angle (or rotation matrix), its origin and
+        those of its ancestors (sympy's ``subs`` arguments).
+
+        The result keeps the names; it is the same frame (``is``) when nothing changes. A
+        root frame is returned as it is.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R1.subs(q, 0.5).angle
+        0.500000000000000
+        >>> R1.subs(q, 0).dcm(R0)
+        Matrix([
+        [1, 0, 0],
+        [0, 1, 0],
+        [0, 0, 1]])
+        """
+        return self._subs(args, kwargs, {})
+
+    def _subs(self, args, kwargs, memo):
+        if self._parent is None:
+            return self
+        hit = memo.get(self)
+        if hit is not None:
+            return hit
+        parent = self._parent._subs(args, kwargs, memo)
+        angle = sp.sympify(self._angle).subs(*args, **kwargs)
+        matrix = self._matrix if self._matrix is None else tuple(
+            tuple(sp.sympify(x).subs(*args, **kwargs) for x in row) for row in self._matrix)
+        origin = self._origin._subs(args, kwargs, memo)
+        if (parent is self._parent and angle == self._angle and matrix == self._matrix
+                and origin == self._origin):
+            out = self
+        else:
+            out = Frame._child(self._name, parent, axis=self._axis, angle=angle, matrix=matrix,
+                               origin=origin)
+        memo[self] = out
+        return out
 
     def _check_origin(self, origin):
         if origin is None:

@@ -179,8 +179,24 @@ class Point:
         return self.velocity(frame).dt(frame)
 
     def subs(self, *args, **kwargs) -> Point:
-        """The point with values substituted in its position."""
-        return Point._make(self._name, self._position.subs(*args, **kwargs), self._root)
+        """The point with values substituted in its position, including the angles and
+        origins of the frames whose bases the position uses (see :meth:`Frame.subs`).
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> q = coordinates("q")
+        >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R0.origin.moved("A", 2 * R1.i).subs(q, 0).coordinates(R0).T
+        Matrix([[2, 0, 0]])
+        """
+        return self._subs(args, kwargs, {})
+
+    def _subs(self, args, kwargs, memo):
+        position = self._position._subs(args, kwargs, memo)
+        if position == self._position:
+            return self
+        return Point._make(self._name, position, self._root)
 
     def __eq__(self, other):
         if not isinstance(other, Point):

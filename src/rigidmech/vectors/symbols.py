@@ -3,20 +3,27 @@
 The parameters of situation of a mechanical system (the book's name for generalized
 coordinates) are functions of time. rigidmech represents them as sympy undefined functions
 applied to the time symbol :data:`t`, so that sympy's differentiation applies the chain rule.
+
+:data:`t` is sympy's own time symbol, ``sympy.physics.mechanics.dynamicsymbols._t``: the
+``dynamicsymbols`` of :mod:`sympy.physics.mechanics` are parameters of situation of rigidmech
+too, and expressions of either library mix freely.
 """
 
 from __future__ import annotations
 
 from functools import lru_cache
+from itertools import count
 
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative"]
+__all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative",
+           "declared_order"]
 
-#: The time variable shared by every time-dependent quantity of rigidmech.
-t = sp.Symbol("t", real=True)
+#: The time variable shared by every time-dependent quantity of rigidmech: ``Symbol("t")``,
+#: the same symbol as ``sympy.physics.mechanics.dynamicsymbols._t``.
+t = sp.Symbol("t")
 
 
 def _split_names(names, argument):
@@ -54,7 +61,34 @@ def coordinates(names):
     """
     parts = _split_names(names, "names")
     out = tuple(sp.Function(n, real=True)(t) for n in parts)
+    for q in out:  # the latest declaration of a name sets its rank (see declared_order)
+        _DECLARED[q] = next(_RANKS)
     return out[0] if len(out) == 1 else out
+
+
+# Rank of each parameter of situation in the order of declaration by `coordinates`.
+_DECLARED: dict = {}
+_RANKS = count()
+
+
+def declared_order(coordinates) -> tuple:
+    """Sort parameters of situation in the order they were declared with
+    :func:`coordinates`: by call, then by position in the call. A name declared again takes
+    the rank of its latest declaration. Functions of time not made by :func:`coordinates`
+    (``sympy.physics.mechanics.dynamicsymbols``) come after, in their given order. The
+    ranks are shared by the whole session: to fix the order of a model whatever else was
+    declared, give it explicitly (``System(coordinates=...)``).
+
+    Examples
+    --------
+    >>> theta, x = coordinates("theta x")
+    >>> psi = coordinates("psi")
+    >>> declared_order([psi, x, theta])
+    (theta(t), x(t), psi(t))
+    """
+    given = list(coordinates)
+    ranked = sorted((q for q in given if q in _DECLARED), key=_DECLARED.__getitem__)
+    return tuple(ranked + [q for q in given if q not in _DECLARED])
 
 
 def constants(names, **assumptions):
@@ -92,6 +126,9 @@ def is_coordinate(expr) -> bool:
     True
     >>> is_coordinate(t)
     False
+    >>> from sympy.physics.mechanics import dynamicsymbols
+    >>> is_coordinate(dynamicsymbols("q"))
+    True
     """
     return isinstance(expr, sp.core.function.AppliedUndef) and expr.args == (t,)
 

@@ -497,20 +497,35 @@ class Vector:
         )
 
     def subs(self, *args, **kwargs) -> Vector:
-        """Substitute in every component (sympy's ``subs``).
+        """Substitute in every component and in the frames whose bases the vector uses
+        (their angles and origins, see :meth:`Frame.subs`), with sympy's ``subs``
+        arguments: the result no longer depends on what was substituted.
 
         Examples
         --------
         >>> import sympy as sp
-        >>> from rigidmech.vectors import Frame
+        >>> from rigidmech.vectors import Frame, coordinates
         >>> a = sp.Symbol("a"); R0 = Frame("R0")
         >>> (a * R0.i).subs(a, 2)
         2*R0.i
+        >>> q = coordinates("q"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> R1.i.subs(q, 0).components(R0).T
+        Matrix([[1, 0, 0]])
         """
-        return self.applyfunc(lambda x: x.subs(*args, **kwargs))
+        return self._subs(args, kwargs, {})
+
+    def _subs(self, args, kwargs, memo):
+        acc = {}
+        for f, c in self._parts:
+            g = f._subs(args, kwargs, memo)
+            cc = tuple(x.subs(*args, **kwargs) for x in c)
+            old = acc.get(g)
+            acc[g] = cc if old is None else tuple(a + b for a, b in zip(old, cc, strict=True))
+        return Vector._from_parts((g, c) for g, c in acc.items() if _any_nonzero(c))
 
     def xreplace(self, rule) -> Vector:
-        """Exact structural replacement in every component (sympy's ``xreplace``)."""
+        """Exact structural replacement in every component (sympy's ``xreplace``); unlike
+        :meth:`subs`, the frames are left as they are."""
         return self.applyfunc(lambda x: x.xreplace(rule))
 
     def simplify(self, frame=None) -> Vector:

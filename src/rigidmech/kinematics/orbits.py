@@ -1,0 +1,500 @@
+"""Kepler orbits, numerically: the conic from a state, the state at a time, transfers
+(book, ch. 8.2 and the space problems of ch. 27.3).
+
+A point moving under the central acceleration a = -mu OM / r^3 (Newton's attraction of a
+centre of gravitational parameter mu = G M, ch. 12) describes a conic with a focus at the
+centre (ch. 8.2). From one state (r0, v0) the invariants are
+
+.. math::
+    \\mathbf{h} = \\mathbf{r}\\wedge\\mathbf{v},\\qquad
+    \\varepsilon = \\tfrac12 v^2 - \\frac{\\mu}{r},\\qquad
+    \\mathbf{e} = \\frac{\\mathbf{v}\\wedge\\mathbf{h}}{\\mu} - \\frac{\\mathbf{r}}{r},
+
+the semi-latus rectum p = h^2/mu, the semi-major axis a = -mu/(2 epsilon) and the
+polar equation r = p / (1 + e cos nu). The position at a time follows from Kepler's equation
+M = E - e sin E (ellipse), M = e sinh H - H (hyperbola) or Barker's equation (parabola),
+M being the mean anomaly.
+
+This module is numeric (numpy, scipy): it needs no frame nor symbol, only arrays of three
+components in any inertial frame centred at the attracting centre. It belongs to kinematics
+because the motion is known from the central acceleration alone (ch. 8); the force that
+produces it is in :mod:`rigidmech.actions.gravitation`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+
+__all__ = ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
+           "circular_speed", "escape_speed", "hohmann_transfer"]
+
+_MAX_ITER = 200
+
+
+def _positive(x, argument):
+    try:
+        x = float(x)
+    except (TypeError, ValueError) as exc:
+        raise ArgumentTypeError(
+            f"`{argument}` must be a positive number; got {type(x).__name__}.") from exc
+    if not (math.isfinite(x) and x > 0):
+        raise ArgumentError(f"`{argument}` must be a positive finite number; got {x}.")
+    return x
+
+
+def _vector3(x, argument):
+    a = np.asarray(x, dtype=float)
+    if a.shape != (3,):
+        raise ArgumentError(f"`{argument}` must hold 3 components; got shape {a.shape}.")
+    if not np.all(np.isfinite(a)):
+        raise ArgumentError(f"`{argument}` must be finite; got {a}.")
+    return a
+
+
+def _newton(f, fprime, x0, what):
+    # monotone Newton: the starts below lie where f >= 0 on a convex increasing branch, so the
+    # iterates decrease to the root; stop when a step no longer shrinks.
+    x = np.array(x0, dtype=float)
+    active = np.ones(x.shape, dtype=bool)
+    last = np.full(x.shape, np.inf)
+    for _ in range(_MAX_ITER):
+        step = np.where(active, f(x) / fprime(x), 0.0)
+        x = x - step
+        size = np.abs(step)
+        tol = 4 * np.finfo(float).eps * np.maximum(1.0, np.abs(x))
+        # converged, or rounding noise (a small step that no longer shrinks)
+        active &= ~((size <= tol) | ((size >= last) & (size < 1e-8)))
+        last = np.where(active, size, last)
+        if not active.any():
+            return x
+    raise NumericalError(f"{what}: Newton's method did not converge in {_MAX_ITER} "
+                         "iterations.")
+
+
+def _check_e_M(e, low, high, mean_anomaly):
+    e = np.asarray(e, dtype=float)
+    bad = ~((e >= low) & (e < high)) if high != np.inf else ~((e > low) & np.isfinite(e))
+    if np.any(bad):
+        span = f"[{low}, {high})" if high != np.inf else f"({low}, inf)"
+        raise ArgumentError(f"`e` must lie in {span}; got {e[bad] if e.ndim else e}.")
+    M = np.asarray(mean_anomaly, dtype=float)
+    if not np.all(np.isfinite(M)):
+        raise ArgumentError(f"`mean_anomaly` must be finite; got {mean_anomaly}.")
+    return e, M
+
+
+def kepler_elliptic(mean_anomaly, e):
+    """The eccentric anomaly E solving Kepler's equation E - e sin E = M, 0 <= e < 1.
+
+    Newton's method started at min(abs(M) + e, pi) on the reduced anomaly abs(M) in [0, pi], where
+    the function is convex and increasing: the iterates decrease monotonically to the root for
+    every e < 1 (no divergence near e = 1). Broadcasts over arrays.
+
+    Parameters
+    ----------
+    mean_anomaly : float or array
+        M in radians, any value (the result keeps its turn: E - M is in [-pi, pi]).
+    e : float or array
+        Eccentricity in [0, 1).
+
+    Returns
+    -------
+    float or ndarray
+
+    Examples
+    --------
+    >>> E = kepler_elliptic(1.0, 0.5)
+    >>> round(float(E - 0.5 * np.sin(E)), 12)
+    1.0
+    """
+    e, M = _check_e_M(e, 0.0, 1.0, mean_anomaly)
+    turns = np.round(M / (2 * np.pi))
+    Mr = M - 2 * np.pi * turns  # in [-pi, pi]
+    s = np.where(Mr < 0, -1.0, 1.0)
+    m = np.abs(Mr)
+    E = _newton(lambda E: E - e * np.sin(E) - m, lambda E: 1 - e * np.cos(E),
+                np.minimum(m + e, np.pi) + 0 * e, "kepler_elliptic")
+    out = s * E + 2 * np.pi * turns
+    return float(out) if out.ndim == 0 else out
+
+
+def kepler_hyperbolic(mean_anomaly, e):
+    """The hyperbolic anomaly H solving e sinh H - H = M, e > 1.
+
+    Newton's method started at asinh(abs(M) / (e - 1)), where the (convex, increasing) function is
+    non-negative: the iterates decrease monotonically to the root. Broadcasts over arrays.
+
+    Examples
+    --------
+    >>> H = kepler_hyperbolic(2.0, 1.5)
+    >>> round(float(1.5 * np.sinh(H) - H), 12)
+    2.0
+    """
+    e, M = _check_e_M(e, 1.0, np.inf, mean_anomaly)
+    s = np.where(M < 0, -1.0, 1.0)
+    m = np.abs(M)
+    H = _newton(lambda H: e * np.sinh(H) - H - m, lambda H: e * np.cosh(H) - 1,
+                np.arcsinh(m / (e - 1)), "kepler_hyperbolic")
+    out = s * H
+    return float(out) if out.ndim == 0 else out
+
+
+def circular_speed(mu, r) -> float:
+    """Speed sqrt(mu / r) on a circular orbit of radius r (ch. 8.2).
+
+    Examples
+    --------
+    >>> circular_speed(4.0, 1.0)
+    2.0
+    """
+    return math.sqrt(_positive(mu, "mu") / _positive(r, "r"))
+
+
+def escape_speed(mu, r) -> float:
+    """Escape (parabolic) speed sqrt(2 mu / r) at distance r: zero specific energy.
+
+    Examples
+    --------
+    >>> escape_speed(2.0, 1.0)
+    2.0
+    """
+    return math.sqrt(2 * _positive(mu, "mu") / _positive(r, "r"))
+
+
+class Orbit:
+    """The Kepler conic described from an initial state under a = -mu r / r^3.
+
+    Parameters
+    ----------
+    position, velocity : array_like, shape (3,)
+        r0 and v0 relative to the attracting centre, in an inertial frame.
+    mu : float
+        Gravitational parameter G M > 0.
+    epoch : float, optional
+        The time t0 of the state (default 0).
+    parabolic_tol : float, optional
+        abs(e - 1) below which the conic is treated as a parabola (default 1e-12).
+
+    Raises
+    ------
+    ArgumentError
+        Zero angular momentum (radial motion: no conic), r0 = 0, mu <= 0.
+
+    Notes
+    -----
+    ``argument_of_periapsis`` is the angle from the ascending node to the periapsis in the
+    plane of the orbit (the usual omega). For an orbit in the plane z = 0, where the node is
+    undefined, it is measured from the x axis in the sense of the motion. For a circle
+    (e = 0) the periapsis is the position at the epoch.
+
+    Examples
+    --------
+    >>> o = Orbit([1.0, 0, 0], [0, 1.2, 0], mu=1.0)
+    >>> o.kind, round(o.eccentricity, 12), round(o.periapsis, 12)
+    ('ellipse', 0.44, 1.0)
+    >>> r, v = o.state_at(o.period)
+    >>> bool(np.allclose(r, [1, 0, 0], atol=1e-12))
+    True
+    """
+
+    __slots__ = ("_mu", "_r0", "_v0", "_epoch", "_h", "_e_vec", "_e", "_p", "_energy",
+                 "_kind", "_P", "_Q", "_nu0", "_tp")
+
+    def __init__(self, position, velocity, *, mu, epoch=0.0, parabolic_tol=1e-12):
+        mu = _positive(mu, "mu")
+        if not (isinstance(parabolic_tol, int | float) and 0 <= parabolic_tol < 1):
+            raise ArgumentError(f"`parabolic_tol` must be a number in [0, 1); got "
+                                f"{parabolic_tol!r}.")
+        r0 = _vector3(position, "position")
+        v0 = _vector3(velocity, "velocity")
+        r = np.linalg.norm(r0)
+        if r == 0:
+            raise ArgumentError("`position` must not be the attracting centre; got r0 = 0.")
+        h = np.cross(r0, v0)
+        hn = np.linalg.norm(h)
+        if hn <= 1e-14 * r * max(np.linalg.norm(v0), math.sqrt(mu / r)):
+            raise ArgumentError(
+                "the angular momentum r0 ^ v0 is zero (radial motion): there is no conic; "
+                f"got position {r0} and velocity {v0}, which are parallel.")
+        e_vec = np.cross(v0, h) / mu - r0 / r
+        e = float(np.linalg.norm(e_vec))
+        self._mu, self._r0, self._v0 = mu, r0, v0
+        self._epoch = float(epoch)
+        self._h, self._e_vec = h, e_vec
+        self._p = float(hn**2 / mu)
+        self._energy = float(v0 @ v0 / 2 - mu / r)
+        if abs(e - 1) < parabolic_tol:
+            e, kind = 1.0, "parabola"
+        elif e < 1:
+            kind = "circle" if e == 0 else "ellipse"
+        else:
+            kind = "hyperbola"
+        self._e, self._kind = e, kind
+        w = h / hn
+        P = e_vec / np.linalg.norm(e_vec) if np.linalg.norm(e_vec) > 0 else r0 / r
+        self._P = P
+        self._Q = np.cross(w, P)
+        nu0 = math.atan2(r0 @ self._Q, r0 @ P)
+        self._nu0 = nu0
+        self._tp = self._epoch - self._time_since_periapsis(nu0)
+        for a in (self._r0, self._v0, self._h, self._e_vec, self._P, self._Q):
+            a.setflags(write=False)
+
+    @property
+    def mu(self) -> float:
+        """Gravitational parameter mu."""
+        return self._mu
+
+    @property
+    def kind(self) -> str:
+        """``"circle"``, ``"ellipse"``, ``"parabola"`` or ``"hyperbola"``."""
+        return self._kind
+
+    @property
+    def is_bound(self) -> bool:
+        """True for a circle or an ellipse (negative specific energy)."""
+        return self._kind in ("circle", "ellipse")
+
+    @property
+    def eccentricity(self) -> float:
+        """The eccentricity e."""
+        return self._e
+
+    @property
+    def eccentricity_vector(self) -> np.ndarray:
+        """The eccentricity (Laplace-Runge-Lenz) vector, pointing to the periapsis."""
+        return self._e_vec
+
+    @property
+    def angular_momentum(self) -> np.ndarray:
+        """The specific angular momentum h = r ^ v (the areal constant vector, ch. 8.1.3)."""
+        return self._h
+
+    @property
+    def specific_energy(self) -> float:
+        """epsilon = v^2/2 - mu/r."""
+        return self._energy
+
+    @property
+    def semi_latus_rectum(self) -> float:
+        """p = h^2 / mu."""
+        return self._p
+
+    @property
+    def semi_major_axis(self) -> float:
+        """a = -mu / (2 epsilon): positive for an ellipse, negative for a hyperbola, inf for
+        a parabola."""
+        if self._kind == "parabola":
+            return math.inf
+        return self._p / (1 - self._e**2)
+
+    @property
+    def periapsis(self) -> float:
+        """Distance of closest approach p / (1 + e)."""
+        return self._p / (1 + self._e)
+
+    @property
+    def apoapsis(self) -> float:
+        """Greatest distance p / (1 - e) (inf if unbound)."""
+        return self._p / (1 - self._e) if self.is_bound else math.inf
+
+    @property
+    def period(self) -> float:
+        """2 pi sqrt(a^3 / mu) (inf if unbound)."""
+        if not self.is_bound:
+            return math.inf
+        return 2 * math.pi * math.sqrt(self.semi_major_axis**3 / self._mu)
+
+    @property
+    def periapsis_direction(self) -> np.ndarray:
+        """Unit vector from the centre to the periapsis."""
+        return self._P
+
+    @property
+    def normal(self) -> np.ndarray:
+        """Unit normal h / norm(h) to the plane of the orbit."""
+        return np.cross(self._P, self._Q)
+
+    @property
+    def inclination(self) -> float:
+        """Angle between h and the z axis, in [0, pi]."""
+        return math.acos(max(-1.0, min(1.0, self.normal[2])))
+
+    @property
+    def argument_of_periapsis(self) -> float:
+        """omega in [0, 2 pi): from the ascending node (from the x axis for an orbit in
+        the plane z = 0) to the periapsis, in the sense of the motion."""
+        w = self.normal
+        node = np.cross([0.0, 0.0, 1.0], w)
+        if np.linalg.norm(node) < 1e-14:
+            node = np.array([1.0, 0.0, 0.0])
+        node = node / np.linalg.norm(node)
+        angle = math.atan2(np.cross(node, self._P) @ w, node @ self._P)
+        return angle % (2 * math.pi)
+
+    @property
+    def true_anomaly_at_epoch(self) -> float:
+        """nu0, the angle from the periapsis to r0, in (-pi, pi]."""
+        return self._nu0
+
+    @property
+    def time_of_periapsis(self) -> float:
+        """A time of passage at the periapsis (the last one before or at the epoch for an
+        ellipse)."""
+        return self._tp
+
+    def radius_at(self, true_anomaly):
+        """r = p / (1 + e cos nu), the polar equation of the conic (ch. 8.2).
+
+        Examples
+        --------
+        >>> Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0).radius_at(2.0)
+        1.0
+        """
+        nu = np.asarray(true_anomaly, dtype=float)
+        out = self._p / (1 + self._e * np.cos(nu))
+        return float(out) if out.ndim == 0 else out
+
+    def _time_since_periapsis(self, nu):
+        e, mu, p = self._e, self._mu, self._p
+        if self._kind == "parabola":
+            D = math.tan(nu / 2)
+            return math.sqrt(p**3 / mu) / 2 * (D + D**3 / 3)
+        if self.is_bound:
+            E = math.atan2(math.sqrt(1 - e * e) * math.sin(nu), e + math.cos(nu))
+            a = p / (1 - e * e)
+            return (E - e * math.sin(E)) * math.sqrt(a**3 / mu)
+        H = math.asinh(math.sqrt(e * e - 1) * math.sin(nu) / (1 + e * math.cos(nu)))
+        a = p / (e * e - 1)
+        return (e * math.sinh(H) - H) * math.sqrt(a**3 / mu)
+
+    def state_at(self, time):
+        """Position and velocity at ``time`` (scalar or array of shape (n,)).
+
+        Returns
+        -------
+        (r, v) : ndarray, shape (3,) or (n, 3) each
+
+        Examples
+        --------
+        Half a period after the periapsis the point is at the apoapsis:
+
+        >>> o = Orbit([1.0, 0, 0], [0, 1.2, 0], mu=1.0)
+        >>> r, v = o.state_at(o.period / 2)
+        >>> bool(np.isclose(np.linalg.norm(r), o.apoapsis, rtol=1e-12))
+        True
+        """
+        t = np.asarray(time, dtype=float)
+        if not np.all(np.isfinite(t)):
+            raise ArgumentError(f"`time` must be finite; got {time}.")
+        e, mu, p = self._e, self._mu, self._p
+        dt = t - self._tp
+        if self._kind == "parabola":
+            # Barker's equation D + D^3/3 = 2 sqrt(mu/p^3) dt, solved in closed form
+            B = 3 * math.sqrt(mu / p**3) * dt
+            z = np.cbrt(np.abs(B) + np.sqrt(B * B + 1))
+            D = np.sign(B) * (z - 1 / z)
+            cos_nu, sin_nu = (1 - D * D) / (1 + D * D), 2 * D / (1 + D * D)
+            r = p / (1 + cos_nu)
+            x, y = r * cos_nu, r * sin_nu
+            k = math.sqrt(mu / p)
+            vx, vy = -k * sin_nu, k * (1 + cos_nu)
+        elif self.is_bound:
+            a = p / (1 - e * e)
+            n = math.sqrt(mu / a**3)
+            E = np.asarray(kepler_elliptic(n * dt, e))
+            b = a * math.sqrt(1 - e * e)
+            r = a * (1 - e * np.cos(E))
+            x, y = a * (np.cos(E) - e), b * np.sin(E)
+            vx = -math.sqrt(mu * a) / r * np.sin(E)
+            vy = math.sqrt(mu * a * (1 - e * e)) / r * np.cos(E)
+        else:
+            a = p / (e * e - 1)
+            n = math.sqrt(mu / a**3)
+            H = np.asarray(kepler_hyperbolic(n * dt, e))
+            r = a * (e * np.cosh(H) - 1)
+            x, y = a * (e - np.cosh(H)), a * math.sqrt(e * e - 1) * np.sinh(H)
+            vx = -math.sqrt(mu * a) / r * np.sinh(H)
+            vy = math.sqrt(mu * a * (e * e - 1)) / r * np.cosh(H)
+        P, Q = self._P, self._Q
+        pos = np.multiply.outer(x, P) + np.multiply.outer(y, Q)
+        vel = np.multiply.outer(vx, P) + np.multiply.outer(vy, Q)
+        return pos, vel
+
+    def __repr__(self):
+        return (f"Orbit({self._kind}: e={self._e:.6g}, p={self._p:.6g}, "
+                f"energy={self._energy:.6g}, mu={self._mu:.6g})")
+
+
+class HohmannTransfer:
+    """The Hohmann transfer between coplanar circular orbits of radii r1 and r2 (ch. 27.3).
+
+    Attributes are read-only: ``r1``, ``r2``, ``mu``, ``semi_major_axis`` = (r1 + r2)/2,
+    ``delta_v1``, ``delta_v2`` (speed changes at departure and arrival, positive when
+    speeding up), ``total_delta_v`` (sum of their magnitudes), ``time`` (half the period of
+    the transfer ellipse).
+
+    Examples
+    --------
+    >>> h = hohmann_transfer(1.0, 1.0, 4.0)
+    >>> round(h.time, 12) == round(np.pi * 2.5**1.5, 12)
+    True
+    """
+
+    __slots__ = ("_r1", "_r2", "_mu")
+
+    def __init__(self, mu, r1, r2):
+        self._mu = _positive(mu, "mu")
+        self._r1 = _positive(r1, "r1")
+        self._r2 = _positive(r2, "r2")
+
+    r1 = property(lambda self: self._r1, doc="Radius of the departure circle.")
+    r2 = property(lambda self: self._r2, doc="Radius of the arrival circle.")
+    mu = property(lambda self: self._mu, doc="Gravitational parameter.")
+
+    @property
+    def semi_major_axis(self) -> float:
+        """(r1 + r2) / 2."""
+        return (self._r1 + self._r2) / 2
+
+    @property
+    def delta_v1(self) -> float:
+        """sqrt(mu/r1) (sqrt(2 r2/(r1 + r2)) - 1)."""
+        r1, r2 = self._r1, self._r2
+        return math.sqrt(self._mu / r1) * (math.sqrt(2 * r2 / (r1 + r2)) - 1)
+
+    @property
+    def delta_v2(self) -> float:
+        """sqrt(mu/r2) (1 - sqrt(2 r1/(r1 + r2)))."""
+        r1, r2 = self._r1, self._r2
+        return math.sqrt(self._mu / r2) * (1 - math.sqrt(2 * r1 / (r1 + r2)))
+
+    @property
+    def total_delta_v(self) -> float:
+        """abs(delta_v1) + abs(delta_v2)."""
+        return abs(self.delta_v1) + abs(self.delta_v2)
+
+    @property
+    def time(self) -> float:
+        """pi sqrt(a^3 / mu), half a period of the transfer ellipse."""
+        return math.pi * math.sqrt(self.semi_major_axis**3 / self._mu)
+
+    def __repr__(self):
+        return (f"HohmannTransfer(mu={self._mu:g}, r1={self._r1:g}, r2={self._r2:g}: "
+                f"dv1={self.delta_v1:.6g}, dv2={self.delta_v2:.6g}, time={self.time:.6g})")
+
+
+def hohmann_transfer(mu, r1, r2) -> HohmannTransfer:
+    """The Hohmann transfer from the circle of radius r1 to that of radius r2 (ch. 27.3).
+
+    Examples
+    --------
+    >>> h = hohmann_transfer(3.986004418e14, 6678e3, 42164e3)   # LEO to GEO, SI units
+    >>> round(h.delta_v1), round(h.delta_v2)
+    (2426, 1467)
+    """
+    return HohmannTransfer(mu, r1, r2)
