@@ -27,7 +27,9 @@ from ._core.errors import (
     FrameError,
     NumericalError,
     RigidmechError,
+    RigidmechWarning,
     SceneError,
+    SingularityWarning,
     SingularMassMatrixError,
 )
 
@@ -41,4 +43,6 @@ __all__ = [
     "NumericalError",
     "CompilationError",
     "SceneError",
+    "RigidmechWarning",
+    "SingularityWarning",
 ]

@@ -18,6 +18,8 @@ __all__ = [
     "NumericalError",
     "CompilationError",
     "SceneError",
+    "RigidmechWarning",
+    "SingularityWarning",
 ]
 
 
@@ -109,5 +111,30 @@ class SceneError(RigidmechError, ValueError):
     Examples
     --------
     >>> issubclass(SceneError, ValueError)
+    True
+    """
+
+
+class RigidmechWarning(UserWarning):
+    """Root of the warnings that rigidmech issues on purpose.
+
+    Examples
+    --------
+    >>> issubclass(SingularityWarning, RigidmechWarning)
+    True
+    """
+
+
+class SingularityWarning(RigidmechWarning, RuntimeWarning):
+    """A simulation came near the singular set of an orientation parametrisation (book,
+    ch. 9.1.2): Euler angles near sin(theta) = 0, Cardan angles near cos(theta) = 0.
+
+    There the mass matrix is nearly singular: the integration needs many small steps and
+    loses accuracy. The message names the frame, the time and the distance, and suggests
+    another sequence of rotations.
+
+    Examples
+    --------
+    >>> issubclass(SingularityWarning, RuntimeWarning)
     True
     """

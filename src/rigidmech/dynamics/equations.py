@@ -26,6 +26,7 @@ from .._core.compile import compile_expressions, compile_linear_solve
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError, NumericalError
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..vectors import t as _t
+from ._singularities import warn_near_singularities
 
 __all__ = ["EquationsOfMotion", "Simulation"]
 
@@ -68,6 +69,9 @@ class EquationsOfMotion:
         Every constant of the model the equations come from. A value given for one of them
         that is not in :attr:`parameters` (it dropped out of the equations) is accepted and
         ignored with a note; any other unknown name is refused.
+    singular_sets : sequence of OrientationSingularity, or callable returning one, optional
+        Singular sets of the orientation angles among the coordinates (ch. 9.1.2), derived
+        on demand; :meth:`simulate` warns when the motion comes near one.
 
     Notes
     -----
@@ -91,10 +95,10 @@ class EquationsOfMotion:
     """
 
     __slots__ = ("_coordinates", "_q", "_u", "_a", "_M", "_f", "_energy", "_params",
-                 "_inputs", "_model", "_cache")
+                 "_inputs", "_model", "_cache", "_singular")
 
     def __init__(self, *, coordinates, mass_matrix, forcing, energy=None, parameters=None,
-                 q=None, u=None, model_parameters=None):
+                 q=None, u=None, model_parameters=None, singular_sets=None):
         self._coordinates = tuple(coordinates)
         n = len(self._coordinates)
         for c in self._coordinates:
@@ -146,6 +150,7 @@ class EquationsOfMotion:
         self._model = model_parameters
         self._cache = {"input_derivatives": tuple(sorted(
             (d for d in derivatives if d.expr not in coords), key=str))}
+        self._singular = singular_sets
 
     @property
     def coordinates(self):
@@ -224,6 +229,27 @@ class EquationsOfMotion:
             e = self._energy() if callable(self._energy) else self._energy
             self._cache["energy"] = e
         return self._cache["energy"]
+
+    @property
+    def singular_sets(self) -> tuple:
+        """Singular sets of the orientation angles (ch. 9.1.2), as
+        :class:`~rigidmech.vectors.OrientationSingularity`; empty if none is known.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> psi, theta, phi = rm.coordinates("psi theta phi")
+        >>> R0 = rm.Frame("R0"); R = R0.euler("R", psi, theta, phi)
+        >>> system = rm.System(galilean=R0)
+        >>> system.add(rm.Body("b", frame=R, mass=1,
+        ...     inertia=rm.InertiaOperator.from_products(1, 2, 3, frame=R)))
+        >>> system.equations_of_motion().singular_sets[0].condition
+        Eq(sin(theta(t)), 0)
+        """
+        if "singular_sets" not in self._cache:
+            s = self._singular() if callable(self._singular) else self._singular
+            self._cache["singular_sets"] = tuple(s or ())
+        return self._cache["singular_sets"]
 
     def accelerations(self, simplify: bool = False) -> sp.ImmutableMatrix:
         """q'' = M^-1 f symbolically (small systems: the expressions grow fast)."""
@@ -484,6 +510,7 @@ class EquationsOfMotion:
         if not res.success:
             raise NumericalError(f"integration failed: {res.message}")
         _check_finite_motion(res)
+        warn_near_singularities(self.singular_sets, self._coordinates, res, params)
         return Simulation(self, res, params, elapsed, notes=fun.notes)
 
     def display_rule(self) -> dict:

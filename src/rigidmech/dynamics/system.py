@@ -36,6 +36,8 @@ from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import declared_order, is_coordinate
+from . import _euler_parameters
+from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 
 __all__ = ["System"]
@@ -515,7 +517,11 @@ class System:
             coordinates=self.coordinates, mass_matrix=sp.ImmutableMatrix(M),
             forcing=sp.ImmutableMatrix(n, 1, f),
             energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
-            model_parameters=partial(_constants, bodies, tuple(self._contributions())))
+            model_parameters=partial(_constants, bodies, tuple(self._contributions())),
+            singular_sets=partial(orientation_singularities, tuple(bodies), R))
+        # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
+        eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
+            bodies, self.coordinates))
         self._cache["eom"] = eqs
         return eqs
 
@@ -562,6 +568,24 @@ class System:
             for i, (Wi, Vi) in enumerate(parts):
                 Q[i].append(torsor.resultant.dot(Vi) + torsor.moment.dot(Wi))
         return sp.ImmutableMatrix(n, 1, [sp.Add(*terms) for terms in Q])
+
+    def orientation_singularities(self) -> tuple:
+        """The singular sets of the angles orienting the bodies (book, ch. 9.1.2): for each
+        body frame whose angles relative to the nearest frame it is built from (the Galilean
+        frame, another body's frame or the root) have one, an
+        :class:`~rigidmech.vectors.OrientationSingularity`. Simulations warn near them.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> psi, theta, phi = rm.coordinates("psi theta phi")
+        >>> R0 = rm.Frame("R0"); R = R0.euler("R", psi, theta, phi)
+        >>> system = System(galilean=R0)
+        >>> system.add(rm.Body("b", frame=R, mass=1))
+        >>> system.orientation_singularities()[0].condition
+        Eq(sin(theta(t)), 0)
+        """
+        return orientation_singularities(tuple(self._bodies), self._galilean)
 
     def symbols(self):
         """Plain symbols (q, q_dot, q_ddot) for the coordinates and their first two

@@ -8,6 +8,7 @@ of reference system, derivatives of vector functions, curves and the Frenet trih
 
 from .basis import Basis, double_cross, linear_dependence, linearly_independent
 from .curves import Curve, FrenetSamples, FrenetTrihedron, frenet_numeric
+from .euler_parameters import euler_parameter_matrix, euler_parameter_rates, euler_parameters_of
 from .frames import Frame
 from .functions import derivation_formula, derivative, jacobian, partial
 from .geometry import (
@@ -27,6 +28,7 @@ from .reference_change import (
     common_axis_map,
     common_origin_map,
 )
+from .singularities import OrientationSingularity, orientation_singularity
 from .symbols import constants, coordinates, declared_order, is_coordinate, t, time_derivative
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
@@ -40,4 +42,6 @@ __all__ = [
     "derivation_formula", "derivative", "jacobian", "partial",
     "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
     "declared_order",
+    "OrientationSingularity", "orientation_singularity",
+    "euler_parameter_matrix", "euler_parameter_rates", "euler_parameters_of",
 ]

@@ -15,7 +15,9 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from .._core.validation import finite_real
 from ._rotations import ONE, ZERO, FrameBase, direction_cosines
+from .euler_parameters import euler_parameter_matrix
 from .points import Point
+from .singularities import orientation_singularity
 from .symbols import t
 from .vector import Vector, rotation_vector
 
@@ -167,6 +169,30 @@ class Frame(FrameBase):
         f1 = self.rotated(name + "_psi", about=self.k, angle=precession, origin=origin)
         f2 = f1.rotated(name + "_theta", about=f1.i, angle=nutation)
         return f2.rotated(name, about=f2.k, angle=spin)
+
+    def euler_parameters(self, name: str, e0, e1, e2, e3, *, origin=None) -> Frame:
+        """Frame oriented by four Euler parameters (a quaternion) relative to this one: no
+        singular set, unlike any three angles (book, ch. 9.1.2).
+
+        The direction cosines are those of :math:`e / |e|` (see
+        :func:`rigidmech.vectors.euler_parameter_matrix`): e0 = cos(alpha/2) and
+        (e1, e2, e3) = sin(alpha/2) n for the rotation by alpha about n. Equations of motion
+        keep :math:`|e|` constant; initial rates follow from the rotation vector with
+        :func:`rigidmech.vectors.euler_parameter_rates`.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> e0, e1, e2, e3 = coordinates("e0 e1 e2 e3")
+        >>> R = Frame("R0").euler_parameters("R", e0, e1, e2, e3)
+        >>> R.dcm(R.parent)[2, 2] * (e0**2 + e1**2 + e2**2 + e3**2)
+        e0(t)**2 - e1(t)**2 - e2(t)**2 + e3(t)**2
+        >>> R.singular_set() is None
+        True
+        """
+        e = [finite_real(x, f"e{n}", hint=_ANGLE_HINT) for n, x in enumerate((e0, e1, e2, e3))]
+        return Frame._child(name, self, matrix=euler_parameter_matrix(*e),
+                            origin=self._check_origin(origin))
 
     def translated(self, name: str, origin: Point) -> Frame:
         """Frame with the same basis as this one and the origin ``origin``.
@@ -330,6 +356,26 @@ class Frame(FrameBase):
         (Derivative(q1(t), t) + Derivative(q2(t), t))*R2.k
         """
         return rotation_vector(self, relative_to)
+
+    def singular_set(self, relative_to=None):
+        """The singular set of the angles orienting this frame relative to ``relative_to``
+        (default: the root), or None if they have none (book, ch. 9.1.2).
+
+        Euler angles z-x-z are singular where sin(theta) = 0, Cardan sequences where the
+        cosine of the middle angle vanishes; see
+        :func:`rigidmech.vectors.orientation_singularity`.
+
+        Examples
+        --------
+        >>> from rigidmech.vectors import Frame, coordinates
+        >>> psi, theta, phi = coordinates("psi theta phi")
+        >>> R0 = Frame("R0")
+        >>> R0.euler("R", psi, theta, phi).singular_set().condition
+        Eq(sin(theta(t)), 0)
+        >>> R0.rotated("R1", about=R0.k, angle=psi).singular_set() is None
+        True
+        """
+        return orientation_singularity(self, relative_to)
 
     def __repr__(self):
         if self._parent is None:
