@@ -244,3 +244,21 @@ def test_a_value_that_is_not_a_number_is_named():
         eqs.rhs(m=np.cos, F=1.0)
     with pytest.raises(TypeError, match="input `F` must be a real number or a callable"):
         eqs.rhs(m=1.0, F="strong")
+
+
+def test_declaring_a_name_again_does_not_reorder_a_built_system():
+    """Re-creating ``theta`` (e.g. to write a condition) after the body joined the system
+    must not move it: a ``q0`` given by position would be silently misassigned."""
+    psi, theta, phi = rm.coordinates("psi theta phi")
+    R0 = rm.Frame("R0")
+    R = R0.euler("R", psi, theta, phi)
+    s = rm.System(galilean=R0)
+    s.add(rm.Body("b", frame=R, mass=1,
+                  inertia=rm.InertiaOperator.from_products(1, 2, 3, frame=R)))
+    rm.coordinates("theta")
+    assert s.coordinates == (psi, theta, phi)
+    # a system built after the new declaration follows it, as documented
+    s2 = rm.System(galilean=R0)
+    s2.add(rm.Body("b", frame=R, mass=1,
+                   inertia=rm.InertiaOperator.from_products(1, 2, 3, frame=R)))
+    assert s2.coordinates == (psi, phi, theta)

@@ -35,7 +35,7 @@ from ..kinematics import Solid
 from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
-from ..vectors.symbols import declared_order, is_coordinate
+from ..vectors.symbols import declared_order, declared_ranks, is_coordinate
 from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
@@ -182,6 +182,9 @@ class System:
                     f"rm.coordinates; got {bad}.")
             self._given_coordinates = coords
         self._cache: dict = {}
+        # declaration ranks of the coordinates when their body joined the system: a name
+        # declared again afterwards does not reorder this system's coordinates
+        self._ranks: dict = {}
 
     # -- building -----------------------------------------------------------------------
     def _solid(self, s, argument):
@@ -225,6 +228,8 @@ class System:
     def _append(self, body):
         self._register_frames(body.frame, body.name)
         self._bodies.append(body)
+        for q, rank in declared_ranks(_body_coordinates(body)).items():
+            self._ranks.setdefault(q, rank)
         self._cache.clear()
 
     # -- validation (issue: never silently wrong) ---------------------------------------
@@ -375,7 +380,8 @@ class System:
 
         Unless given to the constructor, they come in the order they were declared with
         :func:`rigidmech.coordinates` (by call, then by position in the call; a name
-        declared again takes the rank of its latest declaration; see
+        declared again takes the rank of its latest declaration *before its body joined the
+        system*: declaring it again later does not reorder an existing system; see
         :func:`rigidmech.vectors.declared_order`). Functions of time made otherwise
         (``sympy.physics.mechanics.dynamicsymbols``) come after them, in the order they are
         met: body by body in the order the bodies were added or connected; for a body,
@@ -403,7 +409,7 @@ class System:
         for b in self._bodies:
             exprs.extend(_frame_exprs(b.frame))
             exprs.extend(x for _, c in b.centre.position.parts for x in c)
-        found = declared_order(_coordinates_in(exprs))
+        found = declared_order(_coordinates_in(exprs), ranks=self._ranks)
         if not found:
             raise ArgumentError("the system has no parameter of situation: nothing moves.")
         self._cache["coordinates"] = tuple(found)

@@ -19,7 +19,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 
 __all__ = ["t", "coordinates", "constants", "is_coordinate", "time_derivative",
-           "declared_order"]
+           "declared_order", "declared_ranks"]
 
 #: The time variable shared by every time-dependent quantity of rigidmech: ``Symbol("t")``,
 #: the same symbol as ``sympy.physics.mechanics.dynamicsymbols._t``.
@@ -71,10 +71,27 @@ _DECLARED: dict = {}
 _RANKS = count()
 
 
-def declared_order(coordinates) -> tuple:
+def declared_ranks(coordinates) -> dict:
+    """The current declaration rank of each of ``coordinates`` made by :func:`coordinates`
+    (the others are left out): a snapshot for :func:`declared_order`, so that a model's order
+    does not change when a name is declared again later.
+
+    Examples
+    --------
+    >>> a, b = coordinates("a b")
+    >>> ranks = declared_ranks([b, a])
+    >>> b_again = coordinates("a")
+    >>> declared_order([b, a]), declared_order([b, a], ranks=ranks)
+    ((b(t), a(t)), (a(t), b(t)))
+    """
+    return {q: _DECLARED[q] for q in coordinates if q in _DECLARED}
+
+
+def declared_order(coordinates, ranks=None) -> tuple:
     """Sort parameters of situation in the order they were declared with
     :func:`coordinates`: by call, then by position in the call. A name declared again takes
-    the rank of its latest declaration. Functions of time not made by :func:`coordinates`
+    the rank of its latest declaration (``ranks``, a snapshot from :func:`declared_ranks`,
+    fixes them instead). Functions of time not made by :func:`coordinates`
     (``sympy.physics.mechanics.dynamicsymbols``) come after, in their given order. The
     ranks are shared by the whole session: to fix the order of a model whatever else was
     declared, give it explicitly (``System(coordinates=...)``).
@@ -87,8 +104,9 @@ def declared_order(coordinates) -> tuple:
     (theta(t), x(t), psi(t))
     """
     given = list(coordinates)
-    ranked = sorted((q for q in given if q in _DECLARED), key=_DECLARED.__getitem__)
-    return tuple(ranked + [q for q in given if q not in _DECLARED])
+    ranks = _DECLARED if ranks is None else ranks
+    ranked = sorted((q for q in given if q in ranks), key=ranks.__getitem__)
+    return tuple(ranked + [q for q in given if q not in ranks])
 
 
 def constants(names, **assumptions):
