@@ -2,7 +2,9 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
+from .dampers import Damper, TorsionalDamper, TorsionSpring, wire_torsional_stiffness
 from .joints import Cylindrical, Joint, Pivot, Prismatic, Spherical
 
 __all__ = ["Action", "Couple", "Force", "Gravity", "Spring", "gravity", "power", "Joint",
-           "Pivot", "Prismatic", "Cylindrical", "Spherical"]
+           "Pivot", "Prismatic", "Cylindrical", "Spherical",
+           "Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
