@@ -31,6 +31,16 @@ from .one_dof import (
     support_motion_response,
     transmissibility,
 )
+from .rotors import (
+    balancing_masses,
+    bearing_forces,
+    centre_of_percussion,
+    compound_pendulum_period,
+    equivalent_length,
+    kater_conjugate,
+    rotor_bearing_action,
+    torsion_pendulum_period,
+)
 
 __all__ = [
     "natural_frequency", "damping_ratio", "damped_frequency", "logarithmic_decrement",
@@ -41,4 +51,7 @@ __all__ = [
     "Modes", "natural_modes", "harmonic_response_direct", "plot_frequency_response",
     "LinearSystem", "linearize", "equilibria", "stability", "potential_stability",
     "Bifurcation", "bifurcation",
+    "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
+    "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
+    "torsion_pendulum_period",
 ]
