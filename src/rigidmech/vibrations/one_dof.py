@@ -165,7 +165,7 @@ def damping_case(zeta) -> str:
         return "undamped"
     if z < 1:
         return "underdamped"
-    return "critical" if z == 1 else "overdamped"
+    return "critical" if float(z) == 1.0 else "overdamped"
 
 
 def free_response(t, x0, v0, omega0, zeta=0, *, case=None):
@@ -380,14 +380,15 @@ def coulomb_stop(x0, omega0, friction_displacement):
 
     Examples
     --------
-    >>> coulomb_stop(1.0, 2.0, 0.1)
-    (5, 7.853981633974483, -0.0)
+    >>> n, t_stop, x_stop = coulomb_stop(1.0, 2.0, 0.1)
+    >>> n, round(t_stop, 12), round(x_stop, 12)
+    (5, 7.853981633974, -0.0)
     """
     x0, w0, a = _coulomb_check(x0, omega0, friction_displacement)
     if abs(x0) <= a:
         return 0, 0.0, x0
     n = math.ceil((abs(x0) - a) / (2 * a) - 1e-12)
-    stop = math.copysign(abs(x0) - 2 * n * a, x0) * (-1) ** n
+    stop = math.copysign(1.0, x0) * (-1) ** n * (abs(x0) - 2 * n * a)
     return n, n * math.pi / w0, stop
 
 
@@ -411,7 +412,7 @@ def coulomb_free_response(t, x0, omega0, friction_displacement):
     n_stop, t_stop, x_stop = coulomb_stop(x0, w0, a)
     t = np.asarray(t, dtype=float)
     n = np.clip(np.floor(t * w0 / math.pi), 0, max(n_stop - 1, 0)).astype(int)
-    turning = np.copysign(abs(x0) - 2 * n * a, x0) * np.where(n % 2 == 0, 1.0, -1.0)
+    turning = math.copysign(1.0, x0) * (abs(x0) - 2 * n * a) * np.where(n % 2 == 0, 1.0, -1.0)
     centre = np.sign(turning) * a
     x = centre + (turning - centre) * np.cos(w0 * (t - n * math.pi / w0))
     return np.where(t >= t_stop, x_stop, x)
