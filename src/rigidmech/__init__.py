@@ -5,7 +5,7 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, inertia, ode, scenes
+from . import actions, inertia, ode, scenes, vibrations
 from . import actions as joints
 from .actions import Couple, Force, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
@@ -60,4 +60,5 @@ __all__ = [
     "Body",
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
+    "vibrations",
 ]

@@ -330,6 +330,11 @@ class Bifurcation:
         self.equilibria = equilibria_
         self.stabilities = stabilities
 
+    def __setattr__(self, name, value):
+        if hasattr(self, name):
+            raise AttributeError(f"Bifurcation is immutable: cannot set `{name}`.")
+        object.__setattr__(self, name, value)
+
     def points(self, coordinate):
         """Flat arrays (parameter value, position of ``coordinate``, stable?) for a scatter
         plot; 'stable' and 'asymptotically stable' count as stable."""

@@ -91,6 +91,11 @@ class LinearSystem:
         self.parameters = tuple(sorted(free, key=lambda s: s.name))
         self._cache = {}
 
+    def __setattr__(self, name, value):
+        if hasattr(self, name):
+            raise AttributeError(f"LinearSystem is immutable: cannot set `{name}`.")
+        object.__setattr__(self, name, value)
+
     @property
     def n(self) -> int:
         """Number of degrees of freedom."""
