@@ -230,3 +230,19 @@ def test_frequency_response_of_the_linearised_oscillator():
     w = np.array([0.5, 2.0, 3.5])
     H = lin.frequency_response(w, input="F", m=2.0, k=8.0, c=0.4)[0]
     assert_allclose(H, 1 / (8.0 - 2.0 * w**2 + 0.4j * w), rtol=1e-13)
+
+
+def test_linearisation_accepts_sympy_mechanics_dynamicsymbols():
+    """Equations written with sympy.physics.mechanics dynamicsymbols (their own time symbol)
+    linearise like the others."""
+    from sympy.physics.mechanics import dynamicsymbols
+
+    th = dynamicsymbols("theta")
+    tt = dynamicsymbols._t
+    m, g, L = sp.symbols("m g L", positive=True)
+    eqs = rm.EquationsOfMotion(coordinates=(th,), q=(th,), u=(th.diff(tt),),
+                               mass_matrix=sp.ImmutableMatrix([[m * L**2]]),
+                               forcing=sp.ImmutableMatrix([[-m * g * L * sp.sin(th)
+                                                            - th.diff(tt)]]))
+    lin = linearize(eqs, {th: sp.pi})
+    assert (lin.C[0], lin.K[0]) == (1, -g * L * m)

@@ -65,8 +65,11 @@ def normalise(eqs) -> Normalised:
     rule = {}
     for n, c in enumerate(coords):
         if isinstance(c, sp.core.function.AppliedUndef) or c.has(_t):
-            rule[sp.Derivative(c, (_t, 2))] = a[n]
-            rule[sp.Derivative(c, _t)] = u[n]
+            # the time of the function itself (rigidmech's t, or sympy.physics.mechanics'
+            # dynamicsymbols._t)
+            time = c.args[0] if isinstance(c, sp.core.function.AppliedUndef) else _t
+            rule[sp.Derivative(c, (time, 2))] = a[n]
+            rule[sp.Derivative(c, time)] = u[n]
         rule[c] = q[n]
     for n, (qs, us) in enumerate(zip(eqs.q, eqs.u, strict=True)):
         rule[us] = u[n]
