@@ -179,3 +179,32 @@ def test_bead_on_a_rotating_hoop():
         .frequencies[0]
     assert w == pytest.approx(1.01 * crit * math.sin(side), rel=1e-10)
     assert_allclose(np.cos(side), 9.81 / (0.3 * (1.01 * crit) ** 2), rtol=1e-14)
+
+
+def test_ch25_4_3_double_pendulum_of_two_uniform_rods_natural_modes():
+    """Two uniform rods m, L, absolute angles: M = m L^2 [[4/3, 1/2], [1/2, 1/3]],
+    K = m g L [[3/2, 0], [0, 1/2]]; with x = w^2 L/g, det(K - w^2 M) = 0 reads
+    7 x^2 - 42 x + 27 = 0, x = 3 -+ 6 sqrt(7)/7; theta2/theta1 = (-1 +- 2 sqrt 7)/3."""
+    th1, th2 = rm.coordinates("theta1 theta2")
+    m, L, g = rm.constants("m L g", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=th1)
+    R2 = R0.rotated("R2", about=R0.k, angle=th2)
+    A = R0.origin.moved("A", L * R1.i)
+    G1 = R0.origin.moved("G1", L / 2 * R1.i)
+    G2 = A.moved("G2", L / 2 * R2.i)
+    s = rm.System(galilean=R0)
+    b1 = rm.Body("b1", frame=R1, mass=m, centre=G1, inertia=rm.inertia.rod(m, L, axis=R1.i))
+    b2 = rm.Body("b2", frame=R2, mass=m, centre=G2, inertia=rm.inertia.rod(m, L, axis=R2.i))
+    s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(b1, b2, rm.joints.Pivot(at=A, axis=R0.k))
+    s.act(rm.gravity(g * R0.i))
+    lin = linearize(s.equations_of_motion())
+    assert lin.M == sp.Matrix([[4, sp.Rational(3, 2)], [sp.Rational(3, 2), 1]]) * m * L**2 / 3
+    assert lin.K == sp.Matrix([[3, 0], [0, 1]]) * m * g * L / 2
+    modes = lin.modes()
+    for w, sign in zip(modes.frequencies, (-1, 1), strict=True):
+        assert sp.simplify(w**2 - g / L * (3 + sign * 6 * sp.sqrt(7) / 7)) == 0
+    for r, sign in enumerate((1, -1)):
+        ratio = modes.shapes[1, r] / modes.shapes[0, r]
+        assert sp.simplify(ratio - (-1 + sign * 2 * sp.sqrt(7)) / 3) == 0
