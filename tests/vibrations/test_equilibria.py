@@ -146,3 +146,32 @@ def test_bad_arguments(kwargs, match):
     eqs, *_ = hoop()
     with pytest.raises(ArgumentError, match=match):
         equilibria(eqs, **kwargs)
+
+
+def test_symbolic_equilibria_of_several_coordinates_and_a_free_one():
+    """Double pendulum (absolute angles): the four combinations of 0 and pi; spherical
+    pendulum: theta = 0 or pi with phi free (any azimuth)."""
+    q1, q2 = rm.coordinates("q1 q2")
+    m, l, g = rm.constants("m l g", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    R2 = R0.rotated("R2", about=R0.k, angle=q2)
+    A = R0.origin.moved("A", l * R1.i)
+    s = rm.System(galilean=R0)
+    b1 = rm.Body("b1", frame=R1, mass=m, centre=A)
+    s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(b1, rm.Body("b2", frame=R2, mass=m, centre=A.moved("B", l * R2.i)),
+              rm.joints.Pivot(at=A, axis=R0.k))
+    s.act(rm.gravity(g * R0.i))
+    found = {(e["q1"], e["q2"]) for e in equilibria(s.equations_of_motion())}
+    assert found == {(a, b) for a in (0, sp.pi) for b in (0, sp.pi)}
+    phi, theta = rm.coordinates("phi theta")
+    Ra = R0.rotated("Ra", about=R0.k, angle=phi)
+    Rb = Ra.rotated("Rb", about=Ra.j, angle=theta)
+    s2 = rm.System(galilean=R0)
+    s2.connect(R0, rm.Body("bob", frame=Rb, mass=m, centre=R0.origin.moved("Q", -l * Rb.k)),
+               rm.joints.Spherical(at=R0.origin))
+    s2.act(rm.gravity(-g * R0.k))
+    found2 = equilibria(s2.equations_of_motion())
+    assert sorted(e["theta"] for e in found2) == [0, sp.pi]
+    assert all(e["free"] == ["phi"] for e in found2)
