@@ -1,7 +1,7 @@
 """Dampers and torsion springs (book, ch. 11.2, 21.3, 22.2.2).
 
 A viscous damper (dashpot) between a point A of one solid and a point B of another pulls
-along AB against the rate of change of the length l = |AB|: the force on B is
+along AB against the rate of change of the length l = AB: the force on B is
 :math:`-c\\,\\dot l\\,\\mathbf{e}`, :math:`\\mathbf{e} = \\mathbf{AB}/l`, and the opposite
 force acts on A. Its Rayleigh dissipation function is :math:`\\mathcal{D} = c\\,\\dot l^2/2`
 (the power it develops is :math:`-2\\mathcal{D}`), so that Lagrange's equations with
@@ -115,7 +115,8 @@ class Damper(Action):
         return ab, ab.dot(ab.dt(self._a.root))
 
     def length_rate(self) -> sp.Expr:
-        """The rate l' of the length |AB|: (AB . d AB/dt) / |AB|.
+        """The rate l' of the length l = AB: :math:`\\dot l = \\mathbf{AB}\\cdot
+        \\frac{d\\mathbf{AB}}{dt} / l` (the same in every reference).
 
         Examples
         --------

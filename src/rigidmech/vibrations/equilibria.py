@@ -1,8 +1,8 @@
 """Equilibria of equations of motion, their stability and their bifurcations (book, ch. 14,
 20, 21.1, 25).
 
-A position q* is an equilibrium when the system can stay there at rest: q' = q'' = 0 solves
-M(q) q'' = f(q, q', t), that is f(q*, 0) = 0 (with every input at its nominal value). In a
+A position ``q*`` is an equilibrium when the system can stay there at rest: q' = q'' = 0 solves
+M(q) q'' = f(q, q', t), that is ``f(q*, 0) = 0`` (with every input at its nominal value). In a
 reference that turns at a prescribed rate (a bead on a rotating hoop) these are the relative
 equilibria.
 
@@ -136,7 +136,8 @@ def _numeric(norm, params, within, samples, xtol):
 
 
 def equilibria(eqs, *, within=None, samples=None, xtol=1e-12, **params) -> list:
-    """The equilibrium positions of ``eqs``: the solutions q* of f(q*, 0) = 0 (ch. 20, 25).
+    """The equilibrium positions of ``eqs``: the solutions ``q*`` of ``f(q*, 0) = 0``
+    (ch. 20, 25).
 
     Parameters
     ----------

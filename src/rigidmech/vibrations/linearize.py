@@ -49,9 +49,9 @@ class LinearSystem:
     coordinates : tuple
         The parameters of situation q(t) of the equations, in order.
     about : dict
-        Name of each coordinate -> its value q* at the reference state.
+        Name of each coordinate -> its value ``q*`` at the reference state.
     velocities : dict
-        Name -> q'* (zero for an equilibrium).
+        Name -> ``q'*`` (zero for an equilibrium).
     M, C, K : sympy.ImmutableMatrix (n, n)
     B : sympy.ImmutableMatrix (n, p)
         One column per input.
@@ -277,10 +277,10 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ----------
     eqs : EquationsOfMotion
     about : dict or sequence, optional
-        The reference configuration q* (by coordinate q(t), symbol or name); default 0.
+        The reference configuration ``q*`` (by coordinate q(t), symbol or name); default 0.
         Values may be symbolic (a symbolic equilibrium).
     velocities : dict or sequence, optional
-        Constant rates q'* of a steady motion (a cyclic coordinate turning at a constant
+        Constant rates ``q'*`` of a steady motion (a cyclic coordinate turning at a constant
         rate); default 0 (an equilibrium).
     inputs : sequence of symbols or names
         Parameters of the equations that are inputs (forces, torques): their column of B.
@@ -289,9 +289,10 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     parameters : dict, optional
         Values of some parameters (by name), substituted before linearising.
     check : bool
-        Check that the reference state is one (f(q*, q'*) = 0) and that M(q*) is invertible.
+        Check that the reference state is one (``f(q*, q'*) = 0``) and that ``M(q*)`` is
+        invertible.
     tol : float
-        Absolute tolerance on a numeric residual f(q*, q'*) (a numerically found
+        Absolute tolerance on a numeric residual ``f(q*, q'*)`` (a numerically found
         equilibrium satisfies f = 0 to round-off only).
     simplify : bool
         Simplify the entries of M, C, K, B (small systems; turn off for large ones).
@@ -304,9 +305,9 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ------
     ArgumentError
         If the state is not an equilibrium / steady motion: the message gives the residual
-        f(q*, q'*).
+        ``f(q*, q'*)``.
     SingularMassMatrixError
-        If M(q*) is singular.
+        If ``M(q*)`` is singular.
 
     Examples
     --------
