@@ -270,7 +270,7 @@ def _input_symbols(inputs, eqs):
 
 
 def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
-              parameters=None, check=True, tol=1e-9, simplify=True) -> LinearSystem:
+              parameters=None, check=True, tol=1e-9, simplify=None) -> LinearSystem:
     """Linearise equations of motion about an equilibrium or a steady motion (ch. 25.4).
 
     Parameters
@@ -294,8 +294,9 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     tol : float
         Absolute tolerance on a numeric residual ``f(q*, q'*)`` (a numerically found
         equilibrium satisfies f = 0 to round-off only).
-    simplify : bool
-        Simplify the entries of M, C, K, B (small systems; turn off for large ones).
+    simplify : bool, optional
+        Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
+        (``sympy.simplify`` costs more than the linearisation beyond).
 
     Returns
     -------
@@ -366,6 +367,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
                 f"{residual} at q* = {about_named}, q'* = {vel_named}. Find the equilibria "
                 f"with rigidmech.vibrations.equilibria.")
         _check_mass(M0, about_named)
+    if simplify is None:
+        simplify = n <= 4
     post = sp.simplify if simplify else (lambda x: x)
     K = sp.ImmutableMatrix(n, n, lambda i, j: post(-jac[i][j]))
     C = sp.ImmutableMatrix(n, n, lambda i, j: post(-jac[i][n + j]))
