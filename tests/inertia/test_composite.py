@@ -72,8 +72,12 @@ def test_composite_operator_is_the_sum_of_the_parts_moved_by_huygens(specs):
     J = sum(Jc + _huygens(m, np.asarray(pos) - G) for m, pos, Jc in data)
     assert float(p.mass) == pytest.approx(expected_mass, rel=1e-12)
     assert_allclose(np.array(p.centre.coordinates(R0), dtype=float).ravel(), G, atol=1e-12)
+    # round-off is relative to the parts' own terms m (d^2 + size^2), not to the total
+    # (which may vanish: one point mass at G)
+    scale = sum(m * (1 + np.dot(pos, pos) + max(dims) ** 2)
+                for (_, m, pos, _, dims) in specs)
     assert_allclose(np.array(p.inertia.matrix.tolist(), dtype=float), J,
-                    rtol=1e-10, atol=1e-10 * np.max(np.abs(J)))
+                    rtol=1e-10, atol=1e-12 * scale)
 
 
 def test_point_masses_give_the_discrete_sums():
