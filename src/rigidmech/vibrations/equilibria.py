@@ -86,15 +86,18 @@ def _box(within, n):
     return [(float(a), float(b)) for a, b in box]
 
 
-def _numeric(norm, params, within, samples, xtol):
+def _static_function(norm, syms):
+    n = len(norm.q)
+    return compile_expressions(sp.ImmutableMatrix(n, 1, _static_forcing(norm)),
+                               [list(norm.q), *syms], name="static_forcing")
+
+
+def _search(norm, f, values, within, samples, xtol):
+    """All the roots of the compiled f(q, *values) in the box (the strategy of the module's
+    docstring)."""
     import scipy.optimize  # imported on use (slow import)
 
-    names = _params(norm, params)
     n = len(norm.q)
-    syms = [names[k] for k in sorted(names)]
-    values = [float(params[k]) for k in sorted(names)]
-    f = compile_expressions(sp.ImmutableMatrix(n, 1, _static_forcing(norm)),
-                            [list(norm.q), *syms], name="static_forcing")
     box = _box(within, n)
     roots = []
 
@@ -118,14 +121,13 @@ def _numeric(norm, params, within, samples, xtol):
     else:
         axes = [np.linspace(a, b, samples or 7) for a, b in box]
         points = []
-        scale = 1.0
         for start in itertools.product(*axes):
             sol = scipy.optimize.root(fun, np.array(start), method="hybr", tol=xtol * 1e-2)
             x = sol.x
             if not sol.success or not all(a - xtol <= xi <= b + xtol
                                           for xi, (a, b) in zip(x, box, strict=True)):
                 continue
-            if np.max(np.abs(fun(x))) > 1e-8 * max(scale, 1.0):
+            if np.max(np.abs(fun(x))) > 1e-8:
                 continue
             points.append(x)
     merged = []
@@ -133,6 +135,13 @@ def _numeric(norm, params, within, samples, xtol):
         if not any(np.max(np.abs(x - y)) <= 10 * xtol for y in merged):
             merged.append(x)
     return [{name: float(x[i]) for i, name in enumerate(norm.names)} for x in merged]
+
+
+def _numeric(norm, params, within, samples, xtol):
+    names = _params(norm, params)
+    syms = [names[k] for k in sorted(names)]
+    values = [float(params[k]) for k in sorted(names)]
+    return _search(norm, _static_function(norm, syms), values, within, samples, xtol)
 
 
 def equilibria(eqs, *, within=None, samples=None, xtol=1e-12, **params) -> list:
@@ -224,7 +233,18 @@ def stability(eqs, at, *, tol=1e-9, **params) -> str:
     at = {k: v for k, v in at.items() if k != "free"} if isinstance(at, dict) else at
     lin = linearize(eqs, at, parameters=params, simplify=False)
     M, C, K, _ = lin.numeric()
-    s = lin.eigenvalues()
+    return _classify(M, C, K, tol)
+
+
+def _classify(M, C, K, tol=1e-9):
+    """The verdict of :func:`stability` from numeric M, C, K."""
+    n = M.shape[0]
+    try:
+        A = np.block([[np.zeros((n, n)), np.eye(n)],
+                      [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
+    except np.linalg.LinAlgError:
+        return "undecided"
+    s = np.linalg.eigvals(A)
     scale = max(np.max(np.abs(s)), 1e-300)
     if np.max(s.real) > tol * scale:
         return "unstable"
@@ -398,12 +418,32 @@ def bifurcation(eqs, parameter, values, *, within, samples=None, **params) -> Bi
     """
     name = parameter.name if isinstance(parameter, sp.Symbol) else str(parameter)
     norm = normalise(eqs)
-    _params(norm, params, exclude=(name,))
+    names = _params(norm, params, exclude=(name,))
+    if name not in names:
+        raise ArgumentError(f"`parameter` must be one of {sorted(names)}; got {parameter!r}.")
+    syms = [names[k] for k in sorted(names)]
+    # compiled once: f(q, 0) and the matrices of the linearised equations at (q, 0)
+    f = _static_function(norm, syms)
+    n = len(norm.q)
+    at_rest = dict.fromkeys(norm.u, 0)
+    f_rest = sp.Matrix(_static_forcing(norm))
+    K = -f_rest.jacobian(list(norm.q))
+    C = -sp.Matrix(list(norm.f)).jacobian(list(norm.u)).xreplace(at_rest)
+    M = norm.M
+    matrices = compile_expressions((sp.ImmutableMatrix(M), sp.ImmutableMatrix(C),
+                                    sp.ImmutableMatrix(K)), [list(norm.q), *syms],
+                                   name="linearised")
     found, stab = [], []
     for v in np.asarray(values, dtype=float):
         p = dict(params, **{name: float(v)})
-        e = equilibria(eqs, within=within, samples=samples, **p)
+        vals = [float(p[k]) for k in sorted(names)]
+        e = _search(norm, f, vals, within, samples, 1e-12)
         found.append(e)
-        stab.append([stability(eqs, [x[k] for k in norm.names], **p) for x in e])
+        verdicts = []
+        for x in e:
+            Mn, Cn, Kn = (np.asarray(X, dtype=float).reshape(n, n) for X in
+                          matrices(np.array([x[k] for k in norm.names]), *vals))
+            verdicts.append(_classify(Mn, Cn, Kn))
+        stab.append(verdicts)
     return Bifurcation(name, values, found, stab)
 
