@@ -208,3 +208,25 @@ def test_ch25_4_3_double_pendulum_of_two_uniform_rods_natural_modes():
     for r, sign in enumerate((1, -1)):
         ratio = modes.shapes[1, r] / modes.shapes[0, r]
         assert sp.simplify(ratio - (-1 + sign * 2 * sp.sqrt(7)) / 3) == 0
+
+
+def test_ch21_3_3_steady_forced_response_measured_on_a_simulation():
+    """m = 1, k = 100, c = 4 (w0 = 10, zeta = 0.2) driven by F0 cos(w t), F0 = 2, w = 8:
+    after the transient (decaying as exp(-zeta w0 t) = exp(-2 t)) the simulated motion of the
+    System is X cos(w t - phi) with X, phi of ch. 21.3.3."""
+    x = rm.coordinates("x")
+    m, k, c = rm.constants("m k c", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.translated("R1", R0.point("P", x, 0, 0))
+    block = rm.Body("block", frame=R1, mass=m)
+    s = rm.System(galilean=R0)
+    s.connect(R0, block, rm.joints.Prismatic(at=R1.origin, axis=R0.i))
+    s.act(rm.Spring(k, 0, a=R0.origin, b=R1.origin, on_b=block))
+    s.act(Damper(c, a=R0.point("A", -1, 0, 0), b=R1.origin, on_b=block))
+    s.act(rm.Force(on=block, vector=2 * sp.cos(8 * rm.t) * R0.i, at=R1.origin))
+    eqs = s.equations_of_motion()
+    sim = eqs.simulate(t=(0, 20), q0=[0.0], rtol=1e-12, atol=1e-14, n_output=4001,
+                       m=1.0, k=100.0, c=4.0)
+    X, phi = harmonic_response(8.0, 10.0, 0.2, 2.0 / 100.0)
+    late = sim.t > 17
+    assert_allclose(sim.q[0][late], X * np.cos(8.0 * sim.t[late] - phi), atol=1e-10)
