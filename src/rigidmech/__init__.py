@@ -5,7 +5,7 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, errors, inertia, ode, regimes, scenes, statics
+from . import actions, errors, inertia, ode, regimes, scenes, statics, vibrations
 from . import actions as joints
 from ._core.version import __version__ as __version__
 from .actions import Contact, Coulomb, Couple, Force, Spring, gravity, power
@@ -67,6 +67,7 @@ __all__ = [
     "System", "EquationsOfMotion", "Simulation", "lagrange_equations",
     "ode", "scenes",
     "errors",
+    "vibrations",
 ]
 __all__ += ["velocity_composition", "acceleration_composition"]
 __all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]

@@ -3,6 +3,7 @@ connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
 from .contact_laws import Contact, Coulomb, PivotingResistance, RollingResistance
+from .dampers import Damper, TorsionalDamper, TorsionSpring, wire_torsional_stiffness
 from .gravitation import (
     GRAVITATIONAL_CONSTANT,
     Attractor,
@@ -57,3 +58,4 @@ __all__ += ["Helical", "SphericalWithFinger", "PlanarSupport", "LinearAnnular",
 from .contacts import GearMesh, RollingContact  # noqa: E402  (ch. 10.1.3, 10.2)
 
 __all__ += ["RollingContact", "GearMesh"]
+__all__ += ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]

@@ -28,7 +28,9 @@ from .catalogue import (
     cylindrical_shell,
     disk,
     ellipsoid,
+    hemisphere,
     hollow_cylinder,
+    point_mass,
     rectangular_plate,
     ring,
     rod,
@@ -36,6 +38,7 @@ from .catalogue import (
     spherical_shell,
     tube,
 )
+from .composite import MassProperties, Part, composite, mass_properties
 from .operator import InertiaOperator
 from .principal import PrincipalAxes, principal_axes
 
@@ -43,4 +46,5 @@ __all__ = [
     "InertiaOperator", "PrincipalAxes", "principal_axes",
     "rod", "ring", "disk", "cylinder", "tube", "hollow_cylinder", "cylindrical_shell",
     "cone", "sphere", "spherical_shell", "block", "rectangular_plate", "ellipsoid",
+    "hemisphere", "point_mass", "Part", "MassProperties", "composite", "mass_properties",
 ]

@@ -24,6 +24,8 @@ cylinder, R, L        m R^2 / 2              m (3 R^2 + L^2) / 12
 tube, r1, r2, L       m (r1^2 + r2^2) / 2    m (3 (r1^2 + r2^2) + L^2) / 12
 cylindrical shell     m R^2                  m (6 R^2 + L^2) / 12
 cone, R, height h     3 m R^2 / 10           3 m (4 R^2 + h^2) / 80
+hemisphere, R         2 m R^2 / 5            83 m R^2 / 320
+point mass            0                      0
 sphere, R             2 m R^2 / 5            (same)
 spherical shell, R    2 m R^2 / 3            (same)
 ====================  =====================  ==================================
@@ -41,6 +43,7 @@ from .operator import UNPLACED, InertiaOperator
 __all__ = [
     "rod", "ring", "disk", "cylinder", "tube", "hollow_cylinder", "cylindrical_shell",
     "cone", "sphere", "spherical_shell", "block", "rectangular_plate", "ellipsoid",
+    "hemisphere", "point_mass",
 ]
 
 _R = sp.Rational
@@ -327,3 +330,41 @@ def ellipsoid(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
     return _central(centre=centre, op=InertiaOperator.from_products(
         m * (b**2 + c**2) / 5, m * (c**2 + a**2) / 5, m * (a**2 + b**2) / 5, frame=frame,
         at=centre))
+
+
+def hemisphere(mass, radius, *, axis, centre=None) -> InertiaOperator:
+    """Solid homogeneous hemisphere of radius ``radius``, ``axis`` along its axis of
+    symmetry, at its mass centre G (on the axis at 3R/8 from the flat face), ch. 15.5.3.
+
+    2 m R^2 / 5 about the axis; about the normal axes through G, the 2 m R^2 / 5 of the
+    centre of the flat face less m (3R/8)^2 (Huygens): 83 m R^2 / 320.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from rigidmech.vectors import Frame
+    >>> m, R = sp.symbols("m R", positive=True)
+    >>> hemisphere(m, R, axis=Frame("R0").k).matrix.diagonal()
+    Matrix([[83*R**2*m/320, 83*R**2*m/320, 2*R**2*m/5]])
+    """
+    m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
+    return _revolution(axis, _R(2, 5) * m * R**2, _R(83, 320) * m * R**2, centre)
+
+
+def point_mass(mass, *, frame, centre=None) -> InertiaOperator:
+    """A point mass (particle): the zero operator at its position (ch. 15.5.1). Its
+    operator at any other point comes from Huygens' term alone.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from rigidmech.vectors import Frame
+    >>> R0 = Frame("R0")
+    >>> m, a = sp.symbols("m a", positive=True)
+    >>> P = R0.point("P", a, 0, 0)
+    >>> point_mass(m, frame=R0, centre=P).moved(R0.origin, mass=m, centre=P).C
+    a**2*m
+    """
+    check_frame(frame, "frame")
+    nonnegative(mass, "mass")
+    return _central(InertiaOperator.from_products(0, 0, 0, frame=frame, at=centre))

@@ -1,0 +1,395 @@
+"""Linearisation of equations of motion about an equilibrium or a steady motion (book,
+ch. 21.1, 25.4, 27.5.2).
+
+Near a state :math:`(q^*, \\dot q^*)` with :math:`\\ddot q^* = 0` that satisfies
+:math:`M(q^*)\\,\\ddot q^* = f(q^*, \\dot q^*)`, i.e. :math:`f(q^*, \\dot q^*) = 0`, the
+small deviations :math:`\\delta q` obey
+
+.. math:: M\\,\\delta\\ddot q + C\\,\\delta\\dot q + K\\,\\delta q = B\\,\\delta w,\\qquad
+          M = M(q^*),\\ C = -\\frac{\\partial f}{\\partial \\dot q},\\
+          K = -\\frac{\\partial f}{\\partial q},\\ B = \\frac{\\partial f}{\\partial w},
+
+all at the reference state (the term :math:`\\partial M/\\partial q\\,\\ddot q^*` vanishes
+since :math:`\\ddot q^* = 0`), w being the inputs (forces or torques named by symbols). The
+first-order form for x = (δq, δq') is :math:`\\dot x = A x + B_1 w` with
+:math:`A = [[0, I], [-M^{-1}K, -M^{-1}C]]`, :math:`B_1 = [[0], [M^{-1}B]]`.
+
+The derivatives are taken at the point in one pass over the expression DAG (values and
+gradients together), so M, C, K, B come out symbolic in the parameters without differentiating
+the full expressions. Equations with rolling (nonholonomic) constraints must have them
+eliminated first: this module linearises M(q) q'' = f(q, q', t) as given.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from .._core.errors import ArgumentError, SingularMassMatrixError
+from ._jet import values_and_jacobian
+from ._symbols import normalise
+from .modes import Modes, harmonic_response_direct, natural_modes
+
+__all__ = ["LinearSystem", "linearize"]
+
+
+def _is_zero(x, tol=0.0):
+    if x == 0:
+        return True
+    if x.is_number:
+        return abs(complex(x)) <= tol
+    return sp.simplify(x) == 0
+
+
+class LinearSystem:
+    """M δq'' + C δq' + K δq = B δw about a reference state (ch. 25.4).
+
+    Attributes
+    ----------
+    coordinates : tuple
+        The parameters of situation q(t) of the equations, in order.
+    about : dict
+        Name of each coordinate -> its value ``q*`` at the reference state.
+    velocities : dict
+        Name -> ``q'*`` (zero for an equilibrium).
+    M, C, K : sympy.ImmutableMatrix (n, n)
+    B : sympy.ImmutableMatrix (n, p)
+        One column per input.
+    inputs : tuple of sympy.Symbol
+    parameters : tuple of sympy.Symbol
+        Symbols left in M, C, K, B.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from rigidmech import EquationsOfMotion
+    >>> x, v, k, c, m, F = sp.symbols("x x_dot k c m F")
+    >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+    ...     mass_matrix=sp.ImmutableMatrix([[m]]),
+    ...     forcing=sp.ImmutableMatrix([[-k * x - c * v + F]]))
+    >>> lin = linearize(eqs, inputs=[F])
+    >>> lin.M, lin.C, lin.K, lin.B
+    (Matrix([[m]]), Matrix([[c]]), Matrix([[k]]), Matrix([[1]]))
+    >>> lin.first_order()[0]
+    Matrix([
+    [   0,    1],
+    [-k/m, -c/m]])
+    """
+
+    __slots__ = ("coordinates", "about", "velocities", "M", "C", "K", "B", "inputs",
+                 "parameters", "_cache")
+
+    def __init__(self, coordinates, about, velocities, M, C, K, B, inputs):
+        self.coordinates = tuple(coordinates)
+        self.about = dict(about)
+        self.velocities = dict(velocities)
+        self.M, self.C, self.K, self.B = (sp.ImmutableMatrix(X) for X in (M, C, K, B))
+        self.inputs = tuple(inputs)
+        free = set()
+        for X in (self.M, self.C, self.K, self.B):
+            free |= X.free_symbols
+        self.parameters = tuple(sorted(free, key=lambda s: s.name))
+        self._cache = {}
+
+    def __setattr__(self, name, value):
+        if hasattr(self, name):
+            raise AttributeError(f"LinearSystem is immutable: cannot set `{name}`.")
+        object.__setattr__(self, name, value)
+
+    @property
+    def n(self) -> int:
+        """Number of degrees of freedom."""
+        return self.M.shape[0]
+
+    @property
+    def is_symmetric(self) -> bool:
+        """Whether M and K are symmetric (they are for conservative holonomic systems about
+        an equilibrium; a gyroscopic or circulatory system has C or K not symmetric)."""
+        return all(_is_zero(X[i, j] - X[j, i]) for X in (self.M, self.K)
+                   for i in range(self.n) for j in range(i))
+
+    def first_order(self):
+        """(A, B1) of the first-order form x' = A x + B1 w, x = (δq, δq').
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech import EquationsOfMotion
+        >>> x, v = sp.symbols("x x_dot")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[2]]), forcing=sp.ImmutableMatrix([[-8 * x]]))
+        >>> linearize(eqs).first_order()
+        (Matrix([
+        [ 0, 1],
+        [-4, 0]]), Matrix(2, 0, []))
+        """
+        if "first" not in self._cache:
+            n = self.n
+            MK = self.M.LUsolve(self.K).applyfunc(sp.simplify)
+            MC = self.M.LUsolve(self.C).applyfunc(sp.simplify)
+            MB = self.M.LUsolve(self.B).applyfunc(sp.simplify) if self.B.shape[1] else self.B
+            A = sp.ImmutableMatrix(sp.BlockMatrix([[sp.zeros(n), sp.eye(n)],
+                                                   [-MK, -MC]]).as_explicit())
+            B1 = sp.ImmutableMatrix.vstack(sp.zeros(n, self.B.shape[1]), MB)
+            self._cache["first"] = (A, sp.ImmutableMatrix(B1))
+        return self._cache["first"]
+
+    def numeric(self, **params):
+        """(M, C, K, B) as float arrays, with values for :attr:`parameters` given by name.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech import EquationsOfMotion
+        >>> x, v, k = sp.symbols("x x_dot k")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> linearize(eqs).numeric(k=4.0)[2].tolist()
+        [[4.0]]
+        """
+        names = {p.name: p for p in self.parameters}
+        missing = sorted(set(names) - set(params))
+        if missing:
+            raise ArgumentError(
+                f"missing values for parameters {missing}; pass them as keywords, e.g. "
+                f"{', '.join(f'{m}=1.0' for m in missing)}.")
+        values = {names[k]: v for k, v in params.items() if k in names}
+        out = []
+        for X in (self.M, self.C, self.K, self.B):
+            out.append(np.array(X.xreplace(values).evalf().tolist(), dtype=float)
+                       .reshape(X.shape))
+        return tuple(out)
+
+    def modes(self, **params) -> Modes:
+        """Natural modes of M δq'' + K δq = 0 (damping ignored): closed form for symbolic
+        2-dof, numeric otherwise (values of the parameters as keywords).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech import EquationsOfMotion
+        >>> x, v, k, m = sp.symbols("x x_dot k m", positive=True)
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[m]]), forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> linearize(eqs).modes().frequencies
+        (sqrt(k)/sqrt(m),)
+        >>> linearize(eqs).modes(k=4.0, m=1.0).frequencies.tolist()
+        [2.0]
+        """
+        if params or not self.parameters:
+            M, _, K, _ = self.numeric(**params)
+            return natural_modes(M, K)
+        return natural_modes(self.M, self.K)
+
+    def eigenvalues(self, **params):
+        """Eigenvalues of A (numeric): the exponents of the free motions about the reference
+        state. All real parts < 0: asymptotically stable; one > 0: unstable.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech import EquationsOfMotion
+        >>> x, v = sp.symbols("x x_dot")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-x - 2*v]]))
+        >>> linearize(eqs).eigenvalues().real.round(6).tolist()
+        [-1.0, -1.0]
+        """
+        M, C, K, _ = self.numeric(**params)
+        n = self.n
+        A = np.block([[np.zeros((n, n)), np.eye(n)],
+                      [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
+        return np.linalg.eigvals(A)
+
+    def frequency_response(self, omega, force=None, *, input=None, **params):
+        """Complex amplitudes of the steady response to a harmonic force
+        :math:`\\Re(F e^{i\\omega t})` (direct solution with C, ch. 21.3.3), shape (n, m).
+
+        Parameters
+        ----------
+        omega : array of angular frequencies
+        force : array (n,), optional
+            Generalised force amplitudes; or
+        input : symbol or name, optional
+            One of :attr:`inputs` with unit amplitude (the column of B).
+        **params : values of the parameters
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> from rigidmech import EquationsOfMotion
+        >>> x, v, F = sp.symbols("x x_dot F")
+        >>> eqs = EquationsOfMotion(coordinates=(x,), q=(x,), u=(v,),
+        ...     mass_matrix=sp.ImmutableMatrix([[1]]), forcing=sp.ImmutableMatrix([[-4*x + F]]))
+        >>> abs(linearize(eqs, inputs=[F]).frequency_response([1.0], input="F")).tolist()
+        [[0.3333333333333333]]
+        """
+        M, C, K, B = self.numeric(**params)
+        if (force is None) == (input is None):
+            raise ArgumentError("give exactly one of `force` (an array) and `input` (a name).")
+        if input is not None:
+            names = [s.name for s in self.inputs]
+            key = input.name if isinstance(input, sp.Symbol) else input
+            if key not in names:
+                raise ArgumentError(f"`input` must be one of {names}; got {input!r}.")
+            force = B[:, names.index(key)]
+        return harmonic_response_direct(M, C, K, force, omega)
+
+    def __repr__(self):
+        return (f"LinearSystem(coordinates={list(self.coordinates)}, about={self.about}, "
+                f"inputs={list(self.inputs)})")
+
+
+def _values(spec, norm, name, default=0):
+    n = len(norm.q)
+    if spec is None:
+        return [sp.sympify(default)] * n
+    if isinstance(spec, dict):
+        out = [sp.sympify(default)] * n
+        for key, value in spec.items():
+            out[norm.index(key)] = sp.sympify(value)
+        return out
+    values = list(spec) if not isinstance(spec, sp.Basic | int | float) else [spec]
+    if len(values) != n:
+        raise ArgumentError(f"`{name}` must give {n} values (or a dict by coordinate); got "
+                            f"{len(values)}: {spec!r}.")
+    return [sp.sympify(v) for v in values]
+
+
+def _input_symbols(inputs, eqs):
+    by_name = {p.name: p for p in eqs.parameters}
+    out = []
+    for w in inputs:
+        key = w.name if isinstance(w, sp.Symbol) else w
+        if key not in by_name:
+            raise ArgumentError(
+                f"`inputs` must name parameters of the equations {sorted(by_name)}; got "
+                f"{w!r}.")
+        out.append(by_name[key])
+    return out
+
+
+def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
+              parameters=None, check=True, tol=1e-9, simplify=None) -> LinearSystem:
+    """Linearise equations of motion about an equilibrium or a steady motion (ch. 25.4).
+
+    Parameters
+    ----------
+    eqs : EquationsOfMotion
+    about : dict or sequence, optional
+        The reference configuration ``q*`` (by coordinate q(t), symbol or name); default 0.
+        Values may be symbolic (a symbolic equilibrium).
+    velocities : dict or sequence, optional
+        Constant rates ``q'*`` of a steady motion (a cyclic coordinate turning at a constant
+        rate); default 0 (an equilibrium).
+    inputs : sequence of symbols or names
+        Parameters of the equations that are inputs (forces, torques): their column of B.
+    input_values : dict, optional
+        Nominal values of the inputs (default 0).
+    parameters : dict, optional
+        Values of some parameters (by name), substituted before linearising.
+    check : bool
+        Check that the reference state is one (``f(q*, q'*) = 0``) and that ``M(q*)`` is
+        invertible.
+    tol : float
+        Absolute tolerance on a numeric residual ``f(q*, q'*)`` (a numerically found
+        equilibrium satisfies f = 0 to round-off only).
+    simplify : bool, optional
+        Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
+        (``sympy.simplify`` costs more than the linearisation beyond).
+
+    Returns
+    -------
+    LinearSystem
+
+    Raises
+    ------
+    ArgumentError
+        If the state is not an equilibrium / steady motion: the message gives the residual
+        ``f(q*, q'*)``.
+    SingularMassMatrixError
+        If ``M(q*)`` is singular.
+
+    Examples
+    --------
+    The simple pendulum m L^2 θ'' = -m g L sin θ about θ = 0 and θ = π:
+
+    >>> import sympy as sp
+    >>> from rigidmech import EquationsOfMotion, coordinates
+    >>> th = coordinates("theta")
+    >>> q, u = sp.symbols("theta theta_dot")
+    >>> m, g, L = sp.symbols("m g L", positive=True)
+    >>> eqs = EquationsOfMotion(coordinates=(th,), q=(q,), u=(u,),
+    ...     mass_matrix=sp.ImmutableMatrix([[m * L**2]]),
+    ...     forcing=sp.ImmutableMatrix([[-m * g * L * sp.sin(q)]]))
+    >>> linearize(eqs).K, linearize(eqs, about={th: sp.pi}).K
+    (Matrix([[L*g*m]]), Matrix([[-L*g*m]]))
+    >>> linearize(eqs, about=[1])
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `about` is not an equilibrium ...
+    f(q*, q'*) = [-L*g*m*sin(1)] ...
+    """
+    norm = normalise(eqs)
+    n = len(norm.q)
+    q_star = _values(about, norm, "about")
+    u_star = _values(velocities, norm, "velocities")
+    w = _input_symbols(inputs, eqs)
+    w_star = [sp.sympify((input_values or {}).get(s.name, (input_values or {}).get(s, 0)))
+              for s in w]
+    point = dict(zip(norm.q, q_star, strict=True))
+    point |= dict(zip(norm.u, u_star, strict=True))
+    point |= dict(zip(w, w_star, strict=True))
+    if parameters:
+        by_name = {p.name: p for p in eqs.parameters}
+        unknown = sorted(set(parameters) - set(by_name))
+        if unknown:
+            raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
+                                f"{sorted(by_name)}.")
+        point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
+    variables = list(norm.q) + list(norm.u) + w
+    f_values, jac = values_and_jacobian(list(norm.f), point, variables)
+    M0 = sp.ImmutableMatrix(n, n, values_and_jacobian(list(norm.M), point, [])[0])
+    leftover = set()
+    for e in list(M0) + f_values:
+        leftover |= e.free_symbols & (set(norm.q) | set(norm.u) | set(norm.a))
+    if leftover:
+        raise ArgumentError(f"the equations depend on {leftover} beyond q and q'.")
+    about_named = dict(zip(norm.names, q_star, strict=True))
+    vel_named = dict(zip(norm.names, u_star, strict=True))
+    if check:
+        residual = [sp.simplify(r) if not r.is_number else r for r in f_values]
+        bad = [r for r in residual if not _is_zero(r, tol)]
+        if bad:
+            kind = "an equilibrium" if all(v == 0 for v in u_star) else "a steady motion"
+            raise ArgumentError(
+                f"`about` is not {kind} (q''* = 0 needs f(q*, q'*) = 0): f(q*, q'*) = "
+                f"{residual} at q* = {about_named}, q'* = {vel_named}. Find the equilibria "
+                f"with rigidmech.vibrations.equilibria.")
+        _check_mass(M0, about_named)
+    if simplify is None:
+        simplify = n <= 4
+    post = sp.simplify if simplify else (lambda x: x)
+    K = sp.ImmutableMatrix(n, n, lambda i, j: post(-jac[i][j]))
+    C = sp.ImmutableMatrix(n, n, lambda i, j: post(-jac[i][n + j]))
+    B = sp.ImmutableMatrix(n, len(w), lambda i, j: post(jac[i][2 * n + j]))
+    M = M0.applyfunc(post)
+    return LinearSystem(eqs.coordinates, about_named, vel_named, M, C, K, B, w)
+
+
+def _check_mass(M0, about):
+    n = M0.shape[0]
+    if all(x.is_number for x in M0):
+        Mn = np.array(M0.tolist(), dtype=float)
+        s = np.linalg.svd(Mn, compute_uv=False)
+        singular = s[-1] <= 1e-12 * max(s[0], 1e-300)
+    elif n <= 3:
+        singular = _is_zero(M0.det())
+    else:
+        return
+    if singular:
+        raise SingularMassMatrixError(
+            f"the mass matrix is singular at q* = {about}: M(q*) = {M0.tolist()}; the "
+            "accelerations are not defined there (a degenerate configuration of the "
+            "parameters of situation, such as a gimbal lock). Linearise about another state "
+            "or choose other coordinates.")

@@ -1,0 +1,523 @@
+"""Vibrations of a system with one degree of freedom (book, ch. 21).
+
+The equation of motion of ch. 21.3.1,
+
+.. math:: m\\,\\ddot x + c\\,\\dot x + k\\,x = F(t),
+
+has the natural (angular) frequency :math:`\\omega_0 = \\sqrt{k/m}`, the damping ratio
+:math:`\\zeta = c / (2\\sqrt{k m})` and, for :math:`\\zeta < 1`, the damped frequency
+:math:`\\omega_d = \\omega_0\\sqrt{1-\\zeta^2}`. Every function here is a closed form and works
+on numbers (numpy arrays broadcast) or on sympy expressions (then the result is symbolic),
+except :func:`duhamel_response`, which integrates numerically.
+
+Conventions: a harmonic force is :math:`F_0\\cos\\omega t`; the steady response is
+:math:`X\\cos(\\omega t - \\varphi)` with the phase lag :math:`\\varphi \\in [0, \\pi]`;
+:math:`r = \\omega/\\omega_0` is the frequency ratio.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import sympy as sp
+
+from .._core.errors import ArgumentError
+
+__all__ = [
+    "natural_frequency", "damping_ratio", "damped_frequency", "logarithmic_decrement",
+    "damping_case", "free_response", "harmonic_response", "resonance",
+    "half_power_frequencies", "quality_factor", "transmissibility", "support_motion_response",
+    "coulomb_stop", "coulomb_free_response", "equivalent_viscous_damping",
+    "dry_friction_equivalent_damping", "structural_equivalent_damping", "duhamel_response",
+]
+
+
+def _symbolic(*args):
+    return any(isinstance(a, sp.Basic) and not isinstance(a, sp.Float | sp.Integer)
+               for a in args)
+
+
+def _lib(*args):
+    return sp if _symbolic(*args) else np
+
+
+def _as(x, lib):
+    return sp.sympify(x) if lib is sp else np.asarray(x, dtype=float)
+
+
+def _nonnegative(x, name):
+    if isinstance(x, sp.Basic):
+        if x.is_negative:
+            raise ArgumentError(f"`{name}` must be >= 0; got {x}.")
+        return x
+    arr = np.asarray(x, dtype=float)
+    if np.any(arr < 0) or not np.all(np.isfinite(arr)):
+        raise ArgumentError(f"`{name}` must be finite and >= 0; got {x}.")
+    return x
+
+
+def _positive(x, name):
+    if isinstance(x, sp.Basic):
+        if x.is_nonpositive:
+            raise ArgumentError(f"`{name}` must be > 0; got {x}.")
+        return x
+    arr = np.asarray(x, dtype=float)
+    if np.any(arr <= 0) or not np.all(np.isfinite(arr)):
+        raise ArgumentError(f"`{name}` must be finite and > 0; got {x}.")
+    return x
+
+
+def natural_frequency(stiffness, mass):
+    """Natural angular frequency :math:`\\omega_0 = \\sqrt{k/m}` (ch. 21.2.2), rad/s.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> k, m = sp.symbols("k m", positive=True)
+    >>> natural_frequency(k, m)
+    sqrt(k)/sqrt(m)
+    >>> float(natural_frequency(400.0, 4.0))
+    10.0
+    >>> natural_frequency(1.0, -1.0)
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `mass` must be finite and > 0; got -1.0.
+    """
+    _nonnegative(stiffness, "stiffness")
+    _positive(mass, "mass")
+    lib = _lib(stiffness, mass)
+    return lib.sqrt(_as(stiffness, lib) / _as(mass, lib))
+
+
+def damping_ratio(damping, stiffness, mass):
+    """Damping ratio :math:`\\zeta = c / (2\\sqrt{k m})` (ch. 21.3.2): c over the critical
+    damping :math:`c_c = 2\\sqrt{k m}`.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> c, k, m = sp.symbols("c k m", positive=True)
+    >>> damping_ratio(c, k, m)
+    c/(2*sqrt(k)*sqrt(m))
+    >>> float(damping_ratio(4.0, 400.0, 4.0))
+    0.05
+    """
+    _nonnegative(damping, "damping")
+    _positive(stiffness, "stiffness")
+    _positive(mass, "mass")
+    lib = _lib(damping, stiffness, mass)
+    return _as(damping, lib) / (2 * lib.sqrt(_as(stiffness, lib) * _as(mass, lib)))
+
+
+def damped_frequency(omega0, zeta):
+    """Damped angular frequency :math:`\\omega_d = \\omega_0 \\sqrt{1 - \\zeta^2}` (ζ < 1,
+    ch. 21.3.2).
+
+    Examples
+    --------
+    >>> round(float(damped_frequency(10.0, 0.6)), 12)
+    8.0
+    """
+    lib = _lib(omega0, zeta)
+    z = _as(zeta, lib)
+    if lib is np and np.any(z >= 1):
+        raise ArgumentError(f"`zeta` must be < 1 for a damped oscillation; got {zeta}.")
+    return _as(omega0, lib) * lib.sqrt(1 - z**2)
+
+
+def logarithmic_decrement(zeta):
+    """Logarithmic decrement :math:`\\delta = \\ln(x_n / x_{n+1}) = 2\\pi\\zeta/\\sqrt{1 -
+    \\zeta^2}`, the log of the ratio of two maxima one damped period apart (ch. 21.3.2).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> logarithmic_decrement(sp.Rational(3, 5))
+    3*pi/2
+    >>> round(float(logarithmic_decrement(0.05)), 6)
+    0.314553
+    """
+    lib = _lib(zeta)
+    z = _as(zeta, lib)
+    if lib is np and np.any((z < 0) | (z >= 1)):
+        raise ArgumentError(f"`zeta` must be in [0, 1); got {zeta}.")
+    return 2 * lib.pi * z / lib.sqrt(1 - z**2)
+
+
+def damping_case(zeta) -> str:
+    """'undamped', 'underdamped' (ζ < 1), 'critical' (ζ = 1) or 'overdamped' (ζ > 1),
+    ch. 21.3.2.
+
+    Examples
+    --------
+    >>> damping_case(0.1), damping_case(1), damping_case(2.5)
+    ('underdamped', 'critical', 'overdamped')
+    """
+    z = sp.sympify(zeta)
+    if not z.is_number:
+        raise ArgumentError(
+            f"`zeta` must be a number to decide the damping case; got {zeta}. Substitute "
+            "values, or pass `case=` explicitly.")
+    if z < 0:
+        raise ArgumentError(f"`zeta` must be >= 0; got {zeta}.")
+    if z == 0:
+        return "undamped"
+    if z < 1:
+        return "underdamped"
+    return "critical" if float(z) == 1.0 else "overdamped"
+
+
+def free_response(t, x0, v0, omega0, zeta=0, *, case=None):
+    """Free response x(t) of :math:`\\ddot x + 2\\zeta\\omega_0\\dot x + \\omega_0^2 x = 0`
+    from x(0) = x0, x'(0) = v0 (ch. 21.2.2, 21.3.2), in closed form:
+
+    - ζ < 1: :math:`e^{-\\zeta\\omega_0 t}\\,(x_0\\cos\\omega_d t + \\frac{v_0 +
+      \\zeta\\omega_0 x_0}{\\omega_d}\\sin\\omega_d t)`;
+    - ζ = 1: :math:`e^{-\\omega_0 t}\\,(x_0 + (v_0 + \\omega_0 x_0)\\,t)`;
+    - ζ > 1: :math:`A e^{s_1 t} + B e^{s_2 t}`, :math:`s_{1,2} = -\\omega_0(\\zeta \\mp
+      \\sqrt{\\zeta^2 - 1})`, A = (v0 - s2 x0)/(s1 - s2), B = (s1 x0 - v0)/(s1 - s2).
+
+    Parameters
+    ----------
+    t : float, array or sympy expression
+    x0, v0, omega0, zeta : numbers or sympy expressions
+    case : {'underdamped', 'critical', 'overdamped'}, optional
+        Needed only when ζ is symbolic (the case cannot be decided).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> t, w = sp.symbols("t omega_0", positive=True)
+    >>> free_response(t, 1, 0, w, 1)
+    (omega_0*t + 1)*exp(-omega_0*t)
+    >>> round(float(free_response(0.3, 1.0, 0.0, 10.0, 0.0)), 12) == round(math.cos(3.0), 12)
+    True
+    """
+    case = case or damping_case(zeta)
+    lib = _lib(t, x0, v0, omega0, zeta)
+    t, x0, v0, w, z = (_as(a, lib) for a in (t, x0, v0, omega0, zeta))
+    if case in ("undamped", "underdamped"):
+        wd = w * lib.sqrt(1 - z**2)
+        return lib.exp(-z * w * t) * (x0 * lib.cos(wd * t) + (v0 + z * w * x0) / wd
+                                      * lib.sin(wd * t))
+    if case == "critical":
+        return lib.exp(-w * t) * (x0 + (v0 + w * x0) * t)
+    if case == "overdamped":
+        root = lib.sqrt(z**2 - 1)
+        s1, s2 = -w * (z - root), -w * (z + root)
+        return ((v0 - s2 * x0) * lib.exp(s1 * t) + (s1 * x0 - v0) * lib.exp(s2 * t)) / (s1 - s2)
+    raise ArgumentError(
+        f"`case` must be 'underdamped', 'critical' or 'overdamped'; got {case!r}.")
+
+
+def harmonic_response(omega, omega0, zeta=0, static_deflection=1):
+    """Steady response to a harmonic force :math:`F_0\\cos\\omega t` (ch. 21.2.3, 21.3.3):
+    amplitude and phase lag.
+
+    .. math:: X = \\frac{F_0/k}{\\sqrt{(1 - r^2)^2 + (2\\zeta r)^2}},\\qquad
+              \\varphi = \\operatorname{atan2}(2\\zeta r,\\ 1 - r^2),\\qquad r = \\omega/\\omega_0.
+
+    Parameters
+    ----------
+    omega : float, array or sympy expression
+        Angular frequency of the force.
+    omega0, zeta : natural frequency and damping ratio
+    static_deflection : F0 / k (default 1: the amplification factor)
+
+    Returns
+    -------
+    (amplitude, phase)
+
+    Examples
+    --------
+    >>> X, phi = harmonic_response(10.0, 10.0, 0.05)
+    >>> round(float(X), 12), round(float(phi), 12)
+    (10.0, 1.570796326795)
+    """
+    lib = _lib(omega, omega0, zeta, static_deflection)
+    w, w0, z, xs = (_as(a, lib) for a in (omega, omega0, zeta, static_deflection))
+    r = w / w0
+    amplitude = xs / lib.sqrt((1 - r**2) ** 2 + (2 * z * r) ** 2)
+    phase = lib.atan2(2 * z * r, 1 - r**2) if lib is sp else np.arctan2(2 * z * r, 1 - r**2)
+    return amplitude, phase
+
+
+def resonance(omega0, zeta, static_deflection=1):
+    """Peak of the amplitude of the forced response (ch. 21.3.3): frequency
+    :math:`\\omega_r = \\omega_0\\sqrt{1 - 2\\zeta^2}` and amplitude
+    :math:`X_r = (F_0/k) / (2\\zeta\\sqrt{1-\\zeta^2})`, for :math:`\\zeta < 1/\\sqrt 2`
+    (above, the amplitude decreases from :math:`F_0/k` at ω = 0: no resonance).
+
+    Returns
+    -------
+    (peak frequency, peak amplitude)
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> w0, z = sp.symbols("omega_0 zeta", positive=True)
+    >>> resonance(w0, z)
+    (omega_0*sqrt(1 - 2*zeta**2), 1/(2*zeta*sqrt(1 - zeta**2)))
+    >>> resonance(1.0, 0.8)
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `zeta` must be < 1/sqrt(2) = 0.7071 for a resonance ...
+    """
+    lib = _lib(omega0, zeta, static_deflection)
+    w0, z, xs = (_as(a, lib) for a in (omega0, zeta, static_deflection))
+    if lib is np and np.any((z <= 0) | (z >= 1 / math.sqrt(2))):
+        raise ArgumentError(
+            f"`zeta` must be < 1/sqrt(2) = 0.7071 for a resonance peak; got {zeta}."
+            if np.any(z > 0) else f"`zeta` must be > 0 for a finite peak; got {zeta}.")
+    return w0 * lib.sqrt(1 - 2 * z**2), xs / (2 * z * lib.sqrt(1 - z**2))
+
+
+def half_power_frequencies(omega0, zeta):
+    """The two frequencies where the amplitude is the peak amplitude over √2 (ch. 21.3.3),
+    exactly: :math:`\\omega_{1,2} = \\omega_0\\sqrt{1 - 2\\zeta^2 \\mp 2\\zeta\\sqrt{1 -
+    \\zeta^2}}`. Their difference, the half-power bandwidth, is :math:`\\approx 2\\zeta
+    \\omega_0` for light damping.
+
+    Examples
+    --------
+    >>> w1, w2 = half_power_frequencies(10.0, 0.01)
+    >>> round(float(w2 - w1), 4)
+    0.2
+    """
+    lib = _lib(omega0, zeta)
+    w0, z = _as(omega0, lib), _as(zeta, lib)
+    s = 2 * z * lib.sqrt(1 - z**2)
+    if lib is np and np.any(1 - 2 * z**2 - s <= 0):
+        raise ArgumentError(
+            f"`zeta` too large for a lower half-power frequency (needs 1 - 2 zeta^2 > 2 zeta "
+            f"sqrt(1 - zeta^2), zeta < 0.3827); got {zeta}.")
+    return w0 * lib.sqrt(1 - 2 * z**2 - s), w0 * lib.sqrt(1 - 2 * z**2 + s)
+
+
+def quality_factor(zeta):
+    """Quality factor :math:`Q = 1/(2\\zeta)`: the amplification at ω = ω0, and
+    :math:`\\omega_0 / \\Delta\\omega` to first order in ζ (ch. 21.3.3).
+
+    Examples
+    --------
+    >>> quality_factor(0.05)
+    10.0
+    """
+    _positive(zeta, "zeta")
+    lib = _lib(zeta)
+    return 1 / (2 * _as(zeta, lib)) if lib is sp else 1.0 / (2.0 * float(zeta))
+
+
+def transmissibility(r, zeta=0):
+    """Transmissibility :math:`T = \\sqrt{1 + (2\\zeta r)^2} / \\sqrt{(1 - r^2)^2 +
+    (2\\zeta r)^2}` (ch. 21.3.6): the ratio of the amplitude of the motion of the mass to
+    that of a harmonic motion of the support (displacement transmissibility), and equally the
+    ratio of the force transmitted to the support by spring and damper to a harmonic force on
+    the mass (force transmissibility). T < 1 (isolation) for :math:`r > \\sqrt 2`.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> transmissibility(sp.sqrt(2), sp.Symbol("zeta", positive=True))
+    1
+    >>> round(float(transmissibility(3.0, 0.0)), 12)
+    0.125
+    """
+    lib = _lib(r, zeta)
+    r, z = _as(r, lib), _as(zeta, lib)
+    num = 1 + (2 * z * r) ** 2
+    den = (1 - r**2) ** 2 + (2 * z * r) ** 2
+    return lib.sqrt(num / den) if lib is np else sp.simplify(lib.sqrt(num) / lib.sqrt(den))
+
+
+def support_motion_response(omega, omega0, zeta, amplitude):
+    """Steady response to a harmonic motion :math:`y = Y\\cos\\omega t` of the support
+    (ch. 21.3.6), spring and damper between the support and the mass.
+
+    Returns
+    -------
+    (absolute amplitude X, phase lag of x behind y, relative amplitude Z of x - y)
+        :math:`X = T\\,Y`,
+        :math:`\\varphi = \\operatorname{atan2}(2\\zeta r^3,\\ 1 - r^2 + (2\\zeta r)^2)`,
+        :math:`Z = r^2 Y / \\sqrt{(1-r^2)^2 + (2\\zeta r)^2}`.
+
+    Examples
+    --------
+    >>> X, phi, Z = support_motion_response(30.0, 10.0, 0.0, 0.01)
+    >>> round(float(X), 12), round(float(Z), 12)
+    (0.00125, 0.01125)
+    """
+    lib = _lib(omega, omega0, zeta, amplitude)
+    w, w0, z, Y = (_as(a, lib) for a in (omega, omega0, zeta, amplitude))
+    r = w / w0
+    den = lib.sqrt((1 - r**2) ** 2 + (2 * z * r) ** 2)
+    X = Y * lib.sqrt(1 + (2 * z * r) ** 2) / den
+    atan2 = sp.atan2 if lib is sp else np.arctan2
+    phase = atan2(2 * z * r**3, 1 - r**2 + (2 * z * r) ** 2)
+    return X, phase, r**2 * Y / den
+
+
+def _coulomb_check(x0, omega0, a):
+    for value, name in ((omega0, "omega0"), (a, "friction_displacement")):
+        if not float(value) > 0:
+            raise ArgumentError(f"`{name}` must be > 0; got {value}.")
+    return float(x0), float(omega0), float(a)
+
+
+def coulomb_stop(x0, omega0, friction_displacement):
+    """Where and when a spring-mass with dry (Coulomb) friction, released at rest from x0,
+    stops (ch. 21.4.2).
+
+    With :math:`a = F/k` (friction force over stiffness), each half-cycle lasts
+    :math:`\\pi/\\omega_0` and the turning-point amplitude drops by 2a (4a = 4F/k per cycle).
+    The mass stops at the first turning point inside the band :math:`|x| \\le a`, where the
+    spring cannot overcome friction (static and kinetic friction taken equal).
+
+    Returns
+    -------
+    (number of half-cycles N, stop time N π/ω0, stop position)
+
+    Examples
+    --------
+    >>> n, t_stop, x_stop = coulomb_stop(1.0, 2.0, 0.1)
+    >>> n, round(t_stop, 12), round(x_stop, 12)
+    (5, 7.853981633974, -0.0)
+    """
+    x0, w0, a = _coulomb_check(x0, omega0, friction_displacement)
+    if abs(x0) <= a:
+        return 0, 0.0, x0
+    n = math.ceil((abs(x0) - a) / (2 * a) - 1e-12)
+    stop = math.copysign(1.0, x0) * (-1) ** n * (abs(x0) - 2 * n * a)
+    return n, n * math.pi / w0, stop
+
+
+def coulomb_free_response(t, x0, omega0, friction_displacement):
+    """Free motion with dry friction from rest at x0 (ch. 21.4.2), piecewise in closed form.
+
+    During half-cycle n (:math:`n\\pi/\\omega_0 \\le t < (n+1)\\pi/\\omega_0`) the mass moves
+    one way and friction, constant, shifts the centre of the oscillation to
+    :math:`\\pm a`: :math:`x = s_n a + (x_n - s_n a)\\cos\\omega_0(t - n\\pi/\\omega_0)`
+    with :math:`x_n` the n-th turning point and :math:`s_n = \\operatorname{sign} x_n`; after
+    the stop (:func:`coulomb_stop`) x stays constant.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x = coulomb_free_response(np.array([0.0, np.pi / 2, np.pi, 100.0]), 1.0, 2.0, 0.1)
+    >>> np.round(x, 12).tolist()
+    [1.0, -0.8, 0.6, -0.0]
+    """
+    x0, w0, a = _coulomb_check(x0, omega0, friction_displacement)
+    n_stop, t_stop, x_stop = coulomb_stop(x0, w0, a)
+    t = np.asarray(t, dtype=float)
+    n = np.clip(np.floor(t * w0 / math.pi), 0, max(n_stop - 1, 0)).astype(int)
+    turning = math.copysign(1.0, x0) * (abs(x0) - 2 * n * a) * np.where(n % 2 == 0, 1.0, -1.0)
+    centre = np.sign(turning) * a
+    x = centre + (turning - centre) * np.cos(w0 * (t - n * math.pi / w0))
+    return np.where(t >= t_stop, x_stop, x)
+
+
+def equivalent_viscous_damping(energy_per_cycle, omega, amplitude):
+    """Viscous damping coefficient dissipating the same energy per cycle of a harmonic
+    motion :math:`X\\cos\\omega t` (ch. 21.5): :math:`c_{eq} = \\Delta E / (\\pi \\omega X^2)`,
+    from :math:`\\Delta E = \\pi c \\omega X^2` for a viscous damper (ch. 21.5.2).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> c, w, X = sp.symbols("c omega X", positive=True)
+    >>> equivalent_viscous_damping(sp.pi * c * w * X**2, w, X)
+    c
+    """
+    lib = _lib(energy_per_cycle, omega, amplitude)
+    e, w, X = (_as(a, lib) for a in (energy_per_cycle, omega, amplitude))
+    return e / (lib.pi * w * X**2)
+
+
+def dry_friction_equivalent_damping(friction_force, omega, amplitude):
+    """Equivalent viscous damping of dry friction F (ch. 21.5.4): the energy dissipated per
+    cycle is 4 F X, so :math:`c_{eq} = 4F / (\\pi\\omega X)`.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> F, w, X = sp.symbols("F omega X", positive=True)
+    >>> dry_friction_equivalent_damping(F, w, X)
+    4*F/(pi*X*omega)
+    """
+    _nonnegative(friction_force, "friction_force")
+    return equivalent_viscous_damping(4 * friction_force * amplitude, omega, amplitude)
+
+
+def structural_equivalent_damping(loss_coefficient, omega):
+    """Equivalent viscous damping of structural (hysteretic) damping (ch. 21.5.3): the energy
+    dissipated per cycle is :math:`\\Delta E = \\alpha X^2`, independent of the frequency,
+    so :math:`c_{eq} = \\alpha / (\\pi\\omega)`. With a loss factor η of a spring k,
+    :math:`\\alpha = \\pi\\eta k` and :math:`c_{eq} = \\eta k/\\omega`.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> alpha, w = sp.symbols("alpha omega", positive=True)
+    >>> structural_equivalent_damping(alpha, w)
+    alpha/(pi*omega)
+    """
+    _nonnegative(loss_coefficient, "loss_coefficient")
+    X = sp.Symbol("X", positive=True)
+    if _symbolic(loss_coefficient, omega):
+        return sp.simplify(equivalent_viscous_damping(loss_coefficient * X**2, omega, X))
+    return float(loss_coefficient) / (math.pi * np.asarray(omega, dtype=float))
+
+
+def duhamel_response(force, t, *, mass, omega0, zeta=0.0, x0=0.0, v0=0.0, rtol=1e-10):
+    """Response to an arbitrary force F(t) by Duhamel's integral (ch. 21.3.5), numerically:
+
+    .. math:: x(t) = x_{free}(t) + \\int_0^t F(\\tau)\\,h(t - \\tau)\\,d\\tau,
+
+    with the impulse response h(s) the free response from x = 0, x' = 1/m (closed form,
+    :func:`free_response`, any damping case) and the integral by ``scipy.integrate.quad``
+    at each time.
+
+    Parameters
+    ----------
+    force : callable F(tau) -> float
+    t : array of times >= 0
+    mass, omega0, zeta, x0, v0 : floats
+    rtol : relative tolerance of each quadrature
+
+    Examples
+    --------
+    A step force F0 on an undamped oscillator: x = (F0/k)(1 - cos ω0 t).
+
+    >>> import numpy as np
+    >>> x = duhamel_response(lambda tau: 2.0, np.array([0.5, 1.0]), mass=1.0, omega0=2.0)
+    >>> bool(np.allclose(x, 0.5 * (1 - np.cos(2.0 * np.array([0.5, 1.0]))), rtol=1e-9))
+    True
+    """
+    import scipy.integrate  # imported on use (slow import)
+
+    if not callable(force):
+        raise ArgumentError(f"`force` must be a callable F(tau); got {type(force).__name__}.")
+    _positive(mass, "mass")
+    _positive(omega0, "omega0")
+    _nonnegative(zeta, "zeta")
+    times = np.atleast_1d(np.asarray(t, dtype=float))
+    if np.any(times < 0):
+        raise ArgumentError("`t` must hold times >= 0 (the force acts from t = 0).")
+    case = damping_case(float(zeta))
+    m, w0, z = float(mass), float(omega0), float(zeta)
+
+    def h(s):
+        return free_response(s, 0.0, 1.0 / m, w0, z, case=case)
+
+    out = np.empty_like(times)
+    for n, ti in enumerate(times):
+        if ti == 0:
+            out[n] = 0.0
+            continue
+        limit = max(50, int(4 * ti * w0))
+        out[n] = scipy.integrate.quad(lambda tau, ti=ti: float(force(tau)) * float(h(ti - tau)),
+                                      0.0, ti, epsrel=rtol, epsabs=0.0, limit=limit)[0]
+    out = out + free_response(times, float(x0), float(v0), w0, z, case=case)
+    return out if np.ndim(t) else float(out[0])
