@@ -184,8 +184,8 @@ def test_ch22_3_3_balancing_by_two_masses_in_two_planes(centre, products):
         float(total.mass), [float(x) for x in total.centre.coordinates(R1)],
         lambda R, P: rm.InertiaOperator.from_matrix(J_O.matrix, frame=R, at=P))
     comps = s.connection_components(s.galilean, body)
-    q_s, u_s, a_s, _ = s.symbols()
+    q_s, u_s, a_s, rule = s.symbols()
     for value in comps.values():
-        for angle in (0.0, 0.7, 2.1):
-            v = value.xreplace({a_s[0]: 0, u_s[0]: 300.0, q_s[0]: angle})
+        for angle in (0.0, 0.7, 2.1):  # results are in q(t): to the symbols, then values
+            v = value.xreplace(rule).xreplace({a_s[0]: 0, u_s[0]: 300.0, q_s[0]: angle})
             assert abs(float(v)) < 1e-9

@@ -367,4 +367,4 @@ def point_mass(mass, *, frame, centre=None) -> InertiaOperator:
     """
     check_frame(frame, "frame")
     nonnegative(mass, "mass")
-    return _central(InertiaOperator.from_products(0, 0, 0, frame=frame, at=centre))
+    return _central(InertiaOperator.from_products(0, 0, 0, frame=frame, at=centre), centre)
