@@ -42,3 +42,13 @@ def test_moved_mass(value, error, match):
     J = rm.inertia.disk(1, 1, axis=R0.k)
     with pytest.raises(error, match=rf"`mass` must be (a )?{match}"):
         J.moved(R0.point("P", 1, 0, 0), mass=value, centre=R0.origin)
+
+
+def test_overflowing_moments_are_an_error():
+    # found by the fuzz test: sphere(1, 1e300) has moments 4e599, which overflow a float; the
+    # eigenvalue check then raised numpy's LinAlgError instead of a rigidmech error
+    with pytest.raises(ArgumentError, match=r"overflow floating-point numbers"):
+        rm.inertia.sphere(1, 1e300, frame=R0)
+    with pytest.raises(ArgumentError, match=r"`matrix` gives moments .* that overflow"):
+        rm.InertiaOperator.from_matrix([[sp.Float(1e300) ** 2, 0, 0], [0, 1, 0], [0, 0, 1]],
+                                       frame=R0)

@@ -133,6 +133,11 @@ def check_inertia(matrix, argument, *, products=False, scale=None):
     """
     diag = [matrix[n, n] for n in range(3)]
     values = _numeric(matrix)
+    if values is not None and not np.isfinite(values).all():
+        raise ArgumentError(
+            f"`{argument}` gives moments or products of inertia that overflow floating-point "
+            f"numbers (|value| > 1.8e308); got A={sp.sstr(diag[0])}, B={sp.sstr(diag[1])}, "
+            f"C={sp.sstr(diag[2])}. Choose other units.")
     if values is not None:
         size = float(np.max(np.abs(values)))
         reference = None if scale is None else _numeric(scale)
