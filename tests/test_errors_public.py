@@ -13,7 +13,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 def test_every_error_class_is_public_and_the_same_object():
     defined = {name for name, obj in vars(core_errors).items()
-               if inspect.isclass(obj) and issubclass(obj, core_errors.RigidmechError)}
+               if inspect.isclass(obj) and issubclass(
+                   obj, core_errors.RigidmechError | core_errors.RigidmechWarning)}
     assert set(errors.__all__) == defined
     for name in defined:
         assert getattr(errors, name) is getattr(core_errors, name)
@@ -23,7 +24,11 @@ def test_every_error_class_is_public_and_the_same_object():
 def test_specific_errors_subclass_a_builtin():
     for name in errors.__all__:
         cls = getattr(errors, name)
-        if cls is errors.RigidmechError:
+        if cls in (errors.RigidmechError, errors.RigidmechWarning):
+            continue
+        if issubclass(cls, Warning):  # warnings: rigidmech's, and a builtin category
+            assert issubclass(cls, errors.RigidmechWarning), name
+            assert issubclass(cls, RuntimeWarning | UserWarning), name
             continue
         assert issubclass(cls, errors.RigidmechError)
         assert issubclass(cls, ValueError | TypeError | ArithmeticError), name

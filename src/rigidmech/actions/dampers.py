@@ -82,7 +82,7 @@ class Damper(Action):
     >>> s.act(rm.Spring(k, 0, a=R0.origin, b=R1.origin, on_b=block))
     >>> s.act(Damper(c, a=R0.point("A", -1, 0, 0), b=R1.origin, on_b=block))
     >>> eqs = s.equations_of_motion()
-    >>> sp.simplify(eqs.forcing[0])
+    >>> sp.simplify(eqs.forcing[0]).xreplace(eqs.display_rule())
     -c*x_dot - k*x
     >>> Damper(-1, a=R0.origin, b=R1.origin, on_b=block)
     Traceback (most recent call last):

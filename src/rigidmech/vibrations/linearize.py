@@ -26,6 +26,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
+from .._core.symbolic import is_identically_zero
 from ._jet import values_and_jacobian
 from ._symbols import normalise
 from .modes import Modes, harmonic_response_direct, natural_modes
@@ -33,12 +34,12 @@ from .modes import Modes, harmonic_response_direct, natural_modes
 __all__ = ["LinearSystem", "linearize"]
 
 
-def _is_zero(x, tol=0.0):
-    if x == 0:
-        return True
+def _residual_vanishes(x, tol):
+    """Whether a residual f(q*, q'*) is zero: within ``tol`` for a number (a point found
+    numerically), identically otherwise (``is_identically_zero``)."""
     if x.is_number:
         return abs(complex(x)) <= tol
-    return sp.simplify(x) == 0
+    return is_identically_zero(x)
 
 
 class LinearSystem:
@@ -105,7 +106,7 @@ class LinearSystem:
     def is_symmetric(self) -> bool:
         """Whether M and K are symmetric (they are for conservative holonomic systems about
         an equilibrium; a gyroscopic or circulatory system has C or K not symmetric)."""
-        return all(_is_zero(X[i, j] - X[j, i]) for X in (self.M, self.K)
+        return all(is_identically_zero(X[i, j] - X[j, i]) for X in (self.M, self.K)
                    for i in range(self.n) for j in range(i))
 
     def first_order(self):
@@ -359,7 +360,7 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     vel_named = dict(zip(norm.names, u_star, strict=True))
     if check:
         residual = [sp.simplify(r) if not r.is_number else r for r in f_values]
-        bad = [r for r in residual if not _is_zero(r, tol)]
+        bad = [r for r in residual if not _residual_vanishes(r, tol)]
         if bad:
             kind = "an equilibrium" if all(v == 0 for v in u_star) else "a steady motion"
             raise ArgumentError(
@@ -384,7 +385,7 @@ def _check_mass(M0, about):
         s = np.linalg.svd(Mn, compute_uv=False)
         singular = s[-1] <= 1e-12 * max(s[0], 1e-300)
     elif n <= 3:
-        singular = _is_zero(M0.det())
+        singular = is_identically_zero(M0.det())
     else:
         return
     if singular:
