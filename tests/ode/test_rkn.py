@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 from rigidmech import ode
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from rigidmech.ode import rkn
-from rigidmech.ode.problems import kepler, pendulum
+from rigidmech.testing.problems import kepler, pendulum
 
 PAIRS = [rkn.DPRKN6, rkn.DPRKN12]
 #: DPRKN6 is exact in Q(sqrt(8581)); the published DPRKN12 rationals are ~50-digit

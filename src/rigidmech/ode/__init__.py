@@ -54,5 +54,5 @@ def __getattr__(name):
 # --- methods: importing a module registers its methods with rigidmech.ode._registry ---------
 from . import adaptive, extrapolation, radau, runge_kutta  # noqa: E402, F401, I001
 # --- part B (multistep, geometric) adds its import line here ----------------------------------
-from . import geometric, multistep, problems  # noqa: E402, F401, I001
+from . import geometric, multistep  # noqa: E402, F401, I001
 from . import adams, rkn  # noqa: E402, F401, I001

@@ -14,7 +14,53 @@ import numpy as np
 from ._dense import DenseSolution
 from ._result import OdeResult
 
-__all__ = ["Problem", "Recorder", "initial_step", "fail_message"]
+__all__ = ["Problem", "Recorder", "Stops", "initial_step", "fail_message", "flat_tolerance"]
+
+
+class Stops:
+    """Times the steps must land on (``t_eval`` of a method sampled at its steps), in order.
+
+    Examples
+    --------
+    >>> s = Stops([0.5, 1.0, 1.5], (0.0, 2.0))
+    >>> s.after(0.0), s.after(0.5), s.after(1.7)
+    (0.5, 1.0, 2.0)
+    """
+
+    __slots__ = ("_times", "_i", "_end", "_sign")
+
+    def __init__(self, t_eval, t_span):
+        self._times = [] if t_eval is None else [float(v) for v in t_eval]
+        self._i = 0
+        self._end = float(t_span[1])
+        self._sign = 1.0 if t_span[1] >= t_span[0] else -1.0
+
+    def after(self, t):
+        """The first stop strictly beyond `t` in the direction of integration, else the end."""
+        times, sign = self._times, self._sign
+        while self._i < len(times) and sign * (times[self._i] - t) <= 0:
+            self._i += 1
+        return times[self._i] if self._i < len(times) else self._end
+
+
+def flat_tolerance(atol, shape):
+    """`atol` as a fresh flat array of ``prod(shape)`` floats.
+
+    `atol` is a number, an array of the flat size (as :func:`~rigidmech.ode.solve` passes it),
+    an array of shape ``(n,)`` (one tolerance per component, shared by a batch) or of `shape`.
+
+    Examples
+    --------
+    >>> flat_tolerance([1.0, 2.0], (2, 3)).tolist()
+    [1.0, 1.0, 1.0, 2.0, 2.0, 2.0]
+    """
+    a = np.asarray(atol, dtype=float)
+    size = math.prod(shape)
+    if a.size == size:
+        return a.reshape(-1).copy()
+    if a.ndim == 1 and len(shape) == 2:
+        a = a[:, None]
+    return np.broadcast_to(a, shape).reshape(-1).copy()
 
 
 class Problem:
@@ -41,13 +87,12 @@ class Problem:
     (1.0, 0)
     """
 
-    __slots__ = ("fun", "shape", "batch", "nfev", "flat")
+    __slots__ = ("fun", "shape", "batch", "nfev")
 
     def __init__(self, fun, shape):
         self.fun = fun
         self.shape = tuple(shape)
         self.batch = len(self.shape) == 2
-        self.flat = not self.batch
         self.nfev = 0
 
     def __call__(self, t, y, out):
@@ -59,13 +104,6 @@ class Problem:
         else:
             out[...] = self.fun(t, y)
         return out
-
-    def sumsq(self, x):
-        """Sum of squares of `x`: a float, or one per trajectory of a batch."""
-        if self.batch:
-            x = x.reshape(self.shape)
-            return np.einsum("ij,ij->j", x, x)
-        return float(np.dot(x, x))
 
     def norm(self, x):
         """Weighted RMS norm of an already scaled vector `x` (max over a batch)."""
@@ -124,7 +162,7 @@ class Recorder:
         Form of the dense coefficients (see :class:`DenseSolution`).
     """
 
-    __slots__ = ("ts", "ys", "cs", "shape", "dense", "events", "form", "status", "message",
+    __slots__ = ("ts", "ys", "cs", "shape", "events", "form", "status", "message",
                  "_last_full_end")
 
     def __init__(self, t0, y0, shape, dense, events, form="power"):
@@ -132,20 +170,20 @@ class Recorder:
         self.ys = [y0.copy()]
         self.cs = [] if dense else None
         self.shape = shape
-        self.dense = dense
         self.events = events
         self.form = form
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
 
-    def accept(self, t_new, y_new, coeffs=None):
+    def accept(self, t_new, y_new, coeffs=None, exact=None):
         """Record one accepted step; return True if a terminal event fired.
 
         `y_new` is kept as it is: the integrators pass a fresh array that they never modify.
 
         `coeffs` holds the dense coefficients of the step, or a zero-argument callable
         computing them (called only if they are needed: dense output, or a sign change of an
-        event function).
+        event function). `exact`, if given, is ``s -> y(s)`` inside the step as accurate as the
+        step (for a method whose interpolant is less so): event times are refined on it.
         """
         t_old = self.ts[-1]
         y_old = self.ys[-1]
@@ -165,7 +203,7 @@ class Recorder:
                                      self.shape)
                 return step(t)
 
-            if self.events.check(t_old, t_new, y_new.reshape(self.shape), interp):
+            if self.events.check(t_old, t_new, y_new.reshape(self.shape), interp, exact):
                 if callable(box[0]):
                     box[0] = box[0]()
                 if self.cs is not None:

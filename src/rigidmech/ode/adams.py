@@ -71,7 +71,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
-from ._driver import Recorder
+from ._driver import flat_tolerance, Recorder
 from ._floatpath import FLOAT_PATH_MAX_N
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
@@ -550,7 +550,7 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     rounding). 15 stiff checks (6 others in a row reset the count, as in Hairer's test) raise a
     :class:`~rigidmech.ode.StiffnessWarning`. Measured on Van der Pol (mu = 1000), Robertson's
     kinetics and a stiff linear equation: the warning comes after 20-160 checks at rtol 1e-3
-    to 1e-12; never on the reference problems of :mod:`~rigidmech.ode.problems`.
+    to 1e-12; never on the reference problems of :mod:`~rigidmech.testing.problems`.
 
     The first step is Shampine and Gordon's
     ``0.25 / sqrt(||f(t0, y0)||)`` (weighted norm), bounded by the interval, `max_step` and
@@ -653,7 +653,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y)
         return rec.result("adams", nfev, 0)
-    atol_arr = np.broadcast_to(np.asarray(atol, dtype=float), shape).reshape(-1).copy()
+    atol_arr = flat_tolerance(atol, shape)
     if batch:
         def norm(v):
             v = v.reshape(shape)

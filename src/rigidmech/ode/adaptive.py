@@ -103,7 +103,7 @@ def _use_float_path(shape, fun, t0, y0):
         return False, None
     f0 = fun(t0, y0.copy())
     ok = type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64
-    return ok, f0
+    return ok, (f0.copy() if ok else f0)  # `fun` may return the same buffer at every call
 
 
 def _next_step(err, h_abs, err_old, rejected, exponent, pi, pi_alpha, pi_beta):

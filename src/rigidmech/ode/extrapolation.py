@@ -38,7 +38,7 @@ from rigidmech._core.errors import ArgumentError
 
 from . import _registry
 from ._dense import hermite_coefficients
-from ._driver import Problem, Recorder, initial_step
+from ._driver import Problem, Recorder, Stops, initial_step
 from ._floatpath import FLOAT_PATH_MAX_N
 
 __all__ = ["gbs"]
@@ -48,13 +48,21 @@ _FAC_MIN, _FAC_MAX = 0.02, 4.0
 
 
 def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-        max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, k_max=8):
+        max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, k_max=8,
+        t_eval=None):
     """Gragg-Bulirsch-Stoer extrapolation with adaptive order and step.
 
     Called through :func:`rigidmech.ode.solve` (``method="gbs"``), which validates the common
     arguments. `k_max` (int in [3, 12], default 8) is the largest number of columns of the
     extrapolation tableau (order ``2 k_max``). ``stats["orders"]`` gives how many accepted
     steps used each order.
+
+    The dense output ``sol`` is the cubic Hermite interpolant (order 3, less accurate than
+    the steps). So that samples and events are as accurate as the steps, the steps land on
+    the times of `t_eval` (passed by :func:`~rigidmech.ode.solve`, which returns the values
+    of those steps), and each event time located on the interpolant is refined on the
+    extrapolated solution itself (one extrapolation from the step's start to each trial
+    time, at the step's order).
 
     Returns
     -------
@@ -72,11 +80,11 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return _gbs(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                     max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                    events=events, k_max=k_max)
+                    events=events, k_max=k_max, stops=Stops(t_eval, t_span))
 
 
 def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output, events,
-         k_max):
+         k_max, stops):
     if isinstance(k_max, bool) or not isinstance(k_max, int | np.integer) or not (
         3 <= k_max <= 12
     ):
@@ -128,6 +136,7 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
     if floats:
         atols = np.broadcast_to(np.asarray(atol, dtype=float), (N,)).tolist()
         midpoint = _midpoint_floats(N)
+    t_goal = stops.after(t0)
     while direction * (t - t_end) < 0:
         if naccpt >= max_steps:
             rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
@@ -139,8 +148,8 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
         while True:
             h = h_abs * direction
             t_new = t + h
-            if direction * (t_new - t_end) >= 0:
-                t_new = t_end
+            if direction * (t_new - t_goal) >= 0:
+                t_new = t_goal
                 h = t_new - t
                 h_abs = abs(h)
             errs = [inf] * (k_max + 1)
@@ -234,7 +243,9 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
             fac = min(fac, 1.0)
             k_new = min(k_new, kc)
         coeffs = hermite_coefficients(y, y_new, f0, f_new, h) if want_dense else None
-        stop = rec.accept(t_new, y_new, coeffs)
+        exact = _point(prob, t, y, f0, kc, nseq, coef) if events is not None else None
+        stop = rec.accept(t_new, y_new, coeffs, exact=exact)
+        t_goal = stops.after(t_new)
         t, y, f0 = t_new, y_new, f_new
         k = k_new
         h_abs = min(h_abs * fac, max_step)
@@ -242,6 +253,34 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
             break
     stats = {"orders": dict(sorted(orders.items()))}
     return rec.result("gbs", prob.nfev, nrej, stats)
+
+
+def _point(prob, t, y, f0, kc, nseq, coef):
+    """``s -> y(s)`` by one extrapolation of columns ``0..kc`` from ``(t, y)`` (order
+    ``2 (kc + 1)``, that of the accepted step): the solution inside a step as accurate as the
+    step itself, for the refinement of event times."""
+    y, f0 = y.copy(), f0.copy()
+
+    def at(s):
+        h = s - t
+        if h == 0.0:
+            return y.reshape(prob.shape).copy()
+        fi = np.empty_like(y)
+        rows = []
+        for j in range(kc + 1):
+            nj = nseq[j]
+            hs = h / nj
+            y_prev, y_cur = y, y + hs * f0
+            for i in range(1, nj):
+                prob(t + i * hs, y_cur, fi)
+                y_prev, y_cur = y_cur, y_prev + (2.0 * hs) * fi
+            row = [y_cur]
+            for m in range(1, j + 1):
+                row.append(row[m - 1] + (row[m - 1] - rows[m - 1]) * coef[j][m])
+            rows = row
+        return rows[kc].reshape(prob.shape)
+
+    return at
 
 
 def _norm_floats(a, b, y, atols, rtol):
@@ -290,4 +329,4 @@ def _midpoint_floats(n):
     return _MIDPOINTS[n]
 
 
-_registry.register("gbs", gbs, kind="adaptive")
+_registry.register("gbs", gbs, kind="adaptive", capabilities=("t_eval_at_steps",))

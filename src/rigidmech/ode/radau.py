@@ -57,6 +57,7 @@ NEWTON_MAXITER = 6
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 _EPS = np.finfo(float).eps
+_SQRT_EPS = _EPS**0.5
 
 
 class _Linear:
@@ -78,13 +79,23 @@ class _Linear:
         return self.flat(Minv @ self.stack(v))
 
 
-def _finite_difference_jac(prob, lin, t, y, f):
+def _finite_difference_jac(prob, lin, t, y, f, atol):
+    """Forward differences, each component perturbed by ``sqrt(eps) max(|y_j|, atol_j)``.
+
+    The perturbation follows the scale of ``y`` (as scipy's ``num_jac``, with `atol` as the
+    threshold below which ``|y_j|`` counts as zero), so that the Jacobian of ``s u(t)`` is that
+    of ``u(t)`` for any scale ``s``: neither lost below the resolution of ``y`` (``|y| >=
+    1e17``) nor far too large (``|y| ~ 1e-20``).
+    """
     n, b = lin.n, lin.b
     J = np.empty((b, n, n))
     Y = y.reshape(n, b) if lin.batch else y[:, None]
+    floor = np.broadcast_to(np.asarray(atol, dtype=float).reshape(-1), (y.size,))
+    floor = floor.reshape(n, b) if lin.batch else floor[:, None]
     out = np.empty_like(y)
     for j in range(n):
-        d = np.sqrt(_EPS * np.maximum(1e-5, np.abs(Y[j])))
+        d = _SQRT_EPS * np.maximum(np.abs(Y[j]), floor[j])
+        d[d == 0.0] = _SQRT_EPS
         yp = Y.copy()
         yp[j] += d
         d = yp[j] - Y[j]  # the perturbation actually represented
@@ -162,7 +173,7 @@ def _radau(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dens
         njev += 1
         if jac is not None:
             return _user_jac(jac, lin, t, y, shape)
-        return _finite_difference_jac(prob, lin, t, y, f)
+        return _finite_difference_jac(prob, lin, t, y, f, atol)
 
     J = jacobian(t0, y, f)
     current_jac = True
@@ -266,7 +277,9 @@ def _radau(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dens
 
 def _predict(h_abs, h_abs_old, err, err_old):
     """Gustafsson's predictive step-size factor (HNW II, IV.8, eq. (8.25))."""
-    if err_old is None or h_abs_old is None or err == 0:
+    if err == 0:  # an exact step (y' = 1, free fall): grow as much as allowed
+        return MAX_FACTOR
+    if err_old is None or h_abs_old is None:
         mult = 1.0
     else:
         mult = h_abs / h_abs_old * (err_old / err) ** 0.25

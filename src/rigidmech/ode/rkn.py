@@ -38,7 +38,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _rkn12_coefficients as _rkn12
-from ._driver import Recorder
+from ._driver import Recorder, Stops
 from ._registry import register
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
@@ -330,7 +330,7 @@ def _dense_coeffs(h, q0, v0, a0, q1, v1, a1):
 
 
 def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-         dense_output, events):
+         dense_output, events, t_eval=None):
     t0, t1, y = _check_common(fun, t_span, y0)
     d = y.shape[0] // 2
     direction = 1.0 if t1 > t0 else -1.0
@@ -418,6 +418,17 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     nacc = 0
     inv2d = 1.0 / (2 * d)
     facmax = fmax
+    stops = Stops(t_eval, (t0, t1))
+    t_goal = stops.after(t0)
+    extra = [0]  # evaluations of the steps to trial event times
+
+    def exact_from(ta, qa, va, aa):
+        def at(s):
+            extra[0] += per_step
+            q_, v_, _, _ = kern(fun, ta, qa, va, aa, s - ta, 0.0, None, None, False)
+            return np.concatenate([np.asarray(q_, dtype=float), np.asarray(v_, dtype=float)])
+        return at
+
     with np.errstate(over="ignore", invalid="ignore"):
         while direction * (t1 - t) > 0:
             if nacc >= max_steps:
@@ -426,20 +437,22 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
             if h < 10 * abs(np.nextafter(t, direction * np.inf) - t):
                 rec.fail("Step size underflow", t, rec.ys[-1])
                 break
-            last = h >= abs(t1 - t) * (1 - 1e-12)
-            hs = (t1 - t) if last else direction * h
+            last = h >= abs(t_goal - t) * (1 - 1e-12)
+            hs = (t_goal - t) if last else direction * h
             q1, v1, a1, err2 = kern(fun, t, q, v, a, hs, rtol, aq, av, True)
             nfev += per_step
             err = math.sqrt(err2 * inv2d)
             if err <= 1.0:
-                tn = t1 if last else t + hs
+                tn = t_goal if last else t + hs
                 y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
                 if not np.all(np.isfinite(y1)):
                     rec.fail("Non-finite state", tn, y1)
                     break
                 nacc += 1
-                stop = rec.accept(tn, y1, coeffs_of(hs, q, v, a, q1, v1, a1))
+                stop = rec.accept(tn, y1, coeffs_of(hs, q, v, a, q1, v1, a1),
+                                  exact=exact_from(t, q, v, a) if events is not None else None)
                 t, q, v, a = tn, q1, v1, a1
+                t_goal = stops.after(t)
                 if stop:
                     break
                 fac = facmax if err == 0.0 else min(facmax, max(0.2, safety * err ** -expo))
@@ -450,11 +463,11 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
                 fac = 0.2 if not math.isfinite(err) else max(0.2, safety * err ** -expo)
                 h = abs(hs) * fac
                 facmax = 1.0
-    return rec.result(pair.name, nfev, nrej, stats={"stages": pair.stages})
+    return rec.result(pair.name, nfev + extra[0], nrej, stats={"stages": pair.stages})
 
 
 def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-          max_step=np.inf, max_steps=100_000, dense_output=False, events=None):
+          max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
     r"""Dormand-Prince 6(4) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)` (ch. 27).
 
     Parameters
@@ -479,7 +492,13 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     dense_output : bool
         Fill ``result.sol`` (quintic Hermite, see Notes).
     events : EventTracker, optional
-        As built by :func:`~rigidmech.ode.solve` (see :mod:`rigidmech.ode.events`).
+        As built by :func:`~rigidmech.ode.solve` (see :mod:`rigidmech.ode.events`); the event
+        times located on the interpolant are refined on the method's own step from the start
+        of the step to each trial time, so that they are as accurate as the steps.
+    t_eval : array_like, optional
+        Times the adaptive steps land on (the result still holds every step;
+        :func:`~rigidmech.ode.solve` keeps those at `t_eval`), so that the samples are as
+        accurate as the steps.
 
     Returns
     -------
@@ -516,11 +535,11 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     (True, 0)
     """
     return _run(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events)
+                dense_output, events, t_eval)
 
 
 def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-            max_step=np.inf, max_steps=100_000, dense_output=False, events=None):
+            max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
     r"""Dormand-El-Mikkawy-Prince 12(10) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)`.
 
     Parameters, returns and errors are those of :func:`rkn64`.
@@ -553,8 +572,8 @@ def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None
     (True, True)
     """
     return _run(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events)
+                dense_output, events, t_eval)
 
 
-register("rkn64", rkn64, kind="adaptive_second_order")
-register("rkn1210", rkn1210, kind="adaptive_second_order")
+register("rkn64", rkn64, kind="adaptive_second_order", capabilities=("t_eval_at_steps",))
+register("rkn1210", rkn1210, kind="adaptive_second_order", capabilities=("t_eval_at_steps",))
