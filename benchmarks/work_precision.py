@@ -34,8 +34,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from rigidmech import ode
-from rigidmech.testing import problems as P
 from rigidmech.ode import rkn
+from rigidmech.testing import problems as P
 
 LEVELS = (1e-6, 1e-8, 1e-10, 1e-11)
 #: our adaptive methods: name shown -> (method, options)

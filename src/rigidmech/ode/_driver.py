@@ -221,6 +221,12 @@ class Recorder:
         self.status = -1
         self.message = fail_message(reason, t, y, self.shape)
 
+    def interrupt(self, reason, t):
+        """Mark the integration as stopped early on request (status 2) at time `t`; what was
+        computed so far is kept."""
+        self.status = 2
+        self.message = f"{reason} at t = {float(t)!r}; the result holds the steps made so far."
+
     def result(self, method, nfev, nrejected, stats=None):
         """Build the :class:`OdeResult` (fresh arrays, user shapes)."""
         t = np.array(self.ts, dtype=float)

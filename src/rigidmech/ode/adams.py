@@ -71,7 +71,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
-from ._driver import flat_tolerance, Recorder
+from ._driver import Recorder, flat_tolerance
 from ._floatpath import FLOAT_PATH_MAX_N
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff

@@ -30,7 +30,7 @@ from collections.abc import Callable
 from fractions import Fraction
 
 import numpy as np
-from scipy.special import elliprf, ellipj, ellipk, ellipkinc, ellipkm1
+from scipy.special import ellipj, ellipk, ellipkm1, elliprf
 
 from rigidmech._core.errors import ArgumentError
 
@@ -702,6 +702,13 @@ def free_rigid_body(
     \mathrm{cn}\,u_0)` at :math:`t = 0`; the period is :math:`4K(m)/\lambda` (Landau and
     Lifshitz, *Mechanics*, section 37, with the signs fixed by Euler's equations).
 
+    To stay exact near the separatrix, :math:`2TC - L^2 = A(C-A)\omega_1^2 + B(C-B)\omega_2^2`,
+    :math:`L^2 - 2TA = B(B-A)\omega_2^2 + C(C-A)\omega_3^2` and
+    :math:`2TB - L^2 = A(B-A)\omega_1^2 - C(C-B)\omega_3^2` are formed in exact rational
+    arithmetic from the given floats, and :math:`K`, :math:`u_0` and
+    :math:`\mathrm{sn}, \mathrm{cn}, \mathrm{dn}` are computed from :math:`1 - m` (Carlson's
+    :math:`R_F`, the arithmetic-geometric mean) rather than from :math:`m`.
+
     Examples
     --------
     >>> p = free_rigid_body()
@@ -719,7 +726,6 @@ def free_rigid_body(
     if w.shape != (3,) or not np.all(np.isfinite(w)):
         raise ArgumentError(f"`omega0` must be 3 finite numbers; got {omega0!r}.")
     periods = _check_positive("periods", periods)
-    T2 = A * w[0] ** 2 + B * w[1] ** 2 + C * w[2] ** 2  # 2T
     L2 = A * A * w[0] ** 2 + B * B * w[1] ** 2 + C * C * w[2] ** 2
     # the three differences exactly (rational arithmetic on the given floats), then rounded
     # once: near the separatrix 2TB - L^2 is a tiny difference of large terms, whose rounding
@@ -749,7 +755,6 @@ def free_rigid_body(
         a2 = math.sqrt(cA / (B * (B - A)))
         s = 1.0 if w[0] >= 0 else -1.0
         phi0 = math.atan2(w[1] / a2, s * w[2] / a3)
-    m = (B - A) * cC / ((C - B) * cA) if gap < 0.0 else (C - B) * cA / ((B - A) * cC)
     # from 1 - m, not m: near the separatrix (m -> 1) scipy's ellipkinc and ellipj lose the
     # digits of 1 - m that a float m cannot hold
     K = float(ellipkm1(m1))
