@@ -362,4 +362,4 @@ BS32 = ButcherTableau(
 )
 
 #: Every tableau of this module, by name.
-ALL = {t.name: t for t in (EULER, HEUN, MIDPOINT, RK4, RK38, DOPRI5, DOP853)}
+ALL = {t.name: t for t in (EULER, HEUN, MIDPOINT, RK4, RK38, DOPRI5, DOP853, BS32)}
