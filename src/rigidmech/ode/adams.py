@@ -72,7 +72,7 @@ from rigidmech._core.errors import ArgumentError
 
 from . import _registry
 from ._driver import Recorder, flat_tolerance
-from ._floatpath import FLOAT_PATH_MAX_N
+from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
 from .multistep import adams_gamma
@@ -441,19 +441,11 @@ def _float_run_source(n):
     return "\n".join(L)
 
 
-_FLOAT_RUNS = {}
-
-
 def _float_run(n):
-    """The plain-float run for `n` equations (generated once, then cached)."""
-    if n not in _FLOAT_RUNS:
-        ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, "_sqrt": math.sqrt, "_hrho": _hrho,
-              "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}
-        src = _float_run_source(n)
-        code = compile(src, f"<rigidmech.ode adams, {n} equations>", "exec")
-        exec(code, ns)  # noqa: S102
-        _FLOAT_RUNS[n] = ns[f"adams_run_{n}"]
-    return _FLOAT_RUNS[n]
+    """The plain-float run for `n` equations (generated once by the shared compiler)."""
+    return cached(("adams", n), lambda: compile_function(
+        _float_run_source(n).split("\n"), f"adams_run_{n}", f"adams, {n} equations",
+        {"_sqrt": math.sqrt, "_hrho": _hrho, "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}))
 
 
 def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, hist_append):

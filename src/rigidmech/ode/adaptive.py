@@ -34,7 +34,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
-from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
+from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
 from ._loop import (
     MAX_FACTOR,
     MIN_FACTOR,
@@ -91,15 +91,11 @@ class ExplicitPair:
         self.errors = [np.asarray(e, dtype=float) for e in errors]
         self.E = np.stack(self.errors)
         self.dense = dense
-        self._kernels = {}
 
     def kernel(self, n):
         """The plain-float step for `n` equations (generated once by the shared generator)."""
-        k = self._kernels.get(n)
-        if k is None:
-            k = self._kernels[n] = make_unrolled_stepper(self.name, self.A, self.b, self.c,
-                                                         self.s, self.errors, n, norm=True)
-        return k
+        return cached(("rk-pair", self.name, n), lambda: make_unrolled_stepper(
+            self.name, self.A, self.b, self.c, self.s, self.errors, n, norm=True))
 
     def error_from_squares(self, h_abs, sq, n):
         """The error norm from the weighted sums of squares `sq` of the error vectors."""

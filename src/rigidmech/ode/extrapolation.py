@@ -39,7 +39,7 @@ from rigidmech._core.errors import ArgumentError
 from . import _registry
 from ._dense import hermite_coefficients
 from ._driver import Problem, Recorder, Stops, initial_step
-from ._floatpath import FLOAT_PATH_MAX_N
+from ._floatpath import FLOAT_PATH_MAX_N, make_midpoint
 
 __all__ = ["gbs"]
 
@@ -135,7 +135,7 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
     isfinite = math.isfinite
     if floats:
         atols = np.broadcast_to(np.asarray(atol, dtype=float), (N,)).tolist()
-        midpoint = _midpoint_floats(N)
+        midpoint = make_midpoint(N)
     t_goal = stops.after(t0)
     while direction * (t - t_end) < 0:
         if naccpt >= max_steps:
@@ -289,44 +289,6 @@ def _norm_floats(a, b, y, atols, rtol):
     for ai, bi, yi, at in zip(a, b, y, atols, strict=True):
         acc += ((ai - bi) / (at + rtol * max(abs(yi), abs(ai)))) ** 2
     return math.sqrt(acc / len(a))
-
-
-_MIDPOINTS = {}
-
-
-def _midpoint_floats(n):
-    """Gragg's midpoint rule on `n` plain floats, unrolled over the components (cached).
-
-    ``mid(fun, t, y, f0, hs, nj)`` makes `nj` substeps of `hs` from the lists `y`, `f0` and
-    returns the final list; `fun` receives a fresh ndarray at every substep.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> mid = _midpoint_floats(1)
-    >>> mid(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.5, 2)  # y1 = 0.5, y2 = 1 - 1 * 0.5
-    [0.5]
-    """
-    if n not in _MIDPOINTS:
-        c = range(n)
-        p_ = ", ".join(f"p{j}" for j in c)
-        q_ = ", ".join(f"q{j}" for j in c)
-        lines = [
-            "def mid(fun, t, y, f0, hs, nj):",
-            f"    {p_}, = y",
-            f"    {', '.join(f'f{j}' for j in c)}, = f0",
-            *(f"    q{j} = p{j} + hs*f{j}" for j in c),
-            "    h2 = hs + hs",
-            "    for i in range(1, nj):",
-            f"        {', '.join(f'f{j}' for j in c)}, = _tolist(fun(t + i*hs, _arr([{q_}])))",
-            f"        {p_}, {q_} = {q_}, {', '.join(f'p{j} + h2*f{j}' for j in c)}",
-            f"    return [{q_}]",
-        ]
-        namespace = {"_arr": np.array, "_tolist": np.ndarray.tolist}
-        exec(compile("\n".join(lines), f"<rigidmech.ode gbs midpoint {n}>", "exec"),  # noqa: S102
-             namespace)
-        _MIDPOINTS[n] = namespace["mid"]
-    return _MIDPOINTS[n]
 
 
 _registry.register("gbs", gbs, kind="adaptive", capabilities=("t_eval_at_steps",))

@@ -39,6 +39,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _rkn12_coefficients as _rkn12
 from ._driver import Recorder, Stops
+from ._floatpath import make_rkn_stepper
 from ._registry import register
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
@@ -191,75 +192,6 @@ DPRKN12 = _pair_from_table("rkn1210", 12, 10, _rkn12)
 # generated kernels
 
 
-def _combo(coeffs, names):
-    terms = [f"{a!r}*{k}" for a, k in zip(coeffs, names, strict=False) if a != 0.0]
-    return " + ".join(terms) if terms else "0.0"
-
-
-def _make_step(pair, d, unrolled):
-    """Generate ``step(fun, t, q, v, k1, h, rtol, aq, av, control)``.
-
-    Returns ``(q1, v1, k_last, err2)`` where ``err2`` is the sum over the ``2 d`` components of
-    the squared scaled error (0.0 when ``control`` is false). With `unrolled`, ``q``, ``v`` and
-    the stages are lists of floats; otherwise 1-D ndarrays.
-    """
-    co = pair.floats()
-    s = pair.stages
-    dq = [x - y for x, y in zip(co["bbar"], co["bbar_hat"], strict=True)]
-    dv = [x - y for x, y in zip(co["b"], co["b_hat"], strict=True)]
-    idx = [f"[{j}]" for j in range(d)] if unrolled else [""]
-
-    def vec(fmt):
-        parts = [fmt(j) for j in idx]
-        return "[" + ", ".join(parts) + "]" if unrolled else parts[0]
-
-    def ks(i, j):
-        return [f"k{m + 1}{j}" for m in range(i)]
-
-    L = ["def step(fun, t, q, v, k1, h, rtol, aq, av, control):", "    h2 = h * h"]
-    conv = ".tolist()" if unrolled else ".copy()"
-    nk = s - 1 if pair.fsal else s  # stages entering q1 and v1 before the end-point call
-    for i in range(1, nk):
-        ci = co["c"][i]
-        row = co["abar"][i][:i]
-
-        def stage(j, i=i, ci=ci, row=row):
-            return f"q{j} + {ci!r}*h*v{j} + h2*(" + _combo(row, ks(i, j)) + ")"
-
-        L.append("    Q = " + vec(stage))
-        L.append(f"    k{i + 1} = _asarray(fun(t + {ci!r}*h, _arr(Q)), dtype=float){conv}")
-    wq, wv = co["bbar"][:nk], co["b"][:nk]
-    L.append("    q1 = " + vec(lambda j: f"q{j} + h*v{j} + h2*(" + _combo(wq, ks(nk, j)) + ")"))
-    L.append("    v1 = " + vec(lambda j: f"v{j} + h*(" + _combo(wv, ks(nk, j)) + ")"))
-    # the acceleration at (t + h, q1): the last stage (FSAL) or the next step's first
-    end = f"k{s}" if pair.fsal else "knext"
-    L.append(f"    {end} = _asarray(fun(t + h, _arr(q1)), dtype=float){conv}")
-    if pair.fsal:
-        bs = co["b"][s - 1]
-        if bs != 0.0:  # with FSAL the last stage may weigh in the velocity update
-            L.append("    v1 = " + vec(lambda j: f"v1{j} + h*{bs!r}*k{s}{j}"))
-    L.append("    if not control:")
-    L.append(f"        return q1, v1, {end}, 0.0")
-    L.append("    eq = " + vec(lambda j: "h2*(" + _combo(dq, ks(s, j)) + ")"))
-    L.append("    ev = " + vec(lambda j: "h*(" + _combo(dv, ks(s, j)) + ")"))
-    if unrolled:
-        terms = []
-        for j in range(d):
-            terms.append(f"(eq[{j}]/(aq[{j}] + rtol*max(abs(q[{j}]), abs(q1[{j}]))))**2")
-            terms.append(f"(ev[{j}]/(av[{j}] + rtol*max(abs(v[{j}]), abs(v1[{j}]))))**2")
-        L.append("    err2 = " + " + ".join(terms))
-    else:
-        L.append("    sq = eq / (aq + rtol*_max(_abs(q), _abs(q1)))")
-        L.append("    sv = ev / (av + rtol*_max(_abs(v), _abs(v1)))")
-        L.append("    err2 = float(sq @ sq + sv @ sv)")
-    L.append(f"    return q1, v1, {end}, err2")
-    src = "\n".join(L)
-    ns = {"_arr": np.array, "_asarray": np.asarray, "_max": np.maximum, "_abs": np.abs}
-    exec(compile(src, f"<rigidmech.ode {pair.name} kernel d={d}>", "exec"), ns)  # noqa: S102
-    return ns["step"]
-
-
-_KERNELS: dict = {}
 #: classical step-size controller: factor safety * err**(-1/(q+1)) clipped to [0.2, facmax]
 #: (q the embedded order), no increase right after a rejection
 _SAFETY, _FACMAX = 0.9, 5.0
@@ -272,11 +204,7 @@ _CONTROL = {"rkn1210": (0.6, 3.0)}
 
 def _kernel(pair, d):
     unrolled = d <= FLOAT_PATH_MAX_D
-    key = (pair.name, d if unrolled else -1)
-    k = _KERNELS.get(key)
-    if k is None:
-        k = _KERNELS[key] = _make_step(pair, d, unrolled)
-    return k, unrolled
+    return make_rkn_stepper(pair, d, unrolled), unrolled
 
 
 # ---------------------------------------------------------------------------------------------
