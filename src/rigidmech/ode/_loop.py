@@ -19,13 +19,23 @@ The protocol (model: scipy's ``OdeSolver``):
     stepper's own representation (a list of floats or an ndarray).
 ``attempt(t, y, h) -> StepResult``
     One attempted step of signed size `h` from ``(t, y)``; the error norm decides.
+``finite(step) -> bool``
+    Whether the accepted state (and what the next step needs) is finite.
 ``accept(step)``
     The attempt `step` was accepted (e.g. keep its last stage, FSAL).
-``dense(t, y, h, step) -> (y_new, coeffs)``
-    The accepted state as a flat ndarray and the step's dense coefficients (or a
-    zero-argument callable computing them, evaluated only if needed).
+``dense(t, y, h, step) -> (y_new, coeffs, exact)``
+    The accepted state as a flat ndarray, the step's dense coefficients (or a
+    zero-argument callable computing them, evaluated only if needed) and ``exact`` (None, or
+    ``s -> y(s)`` as accurate as the step, on which event times are refined).
 ``hlamb(h_abs, step) -> float or None``
     The estimate ``|h lambda|`` of the stiffness test, or None if it cannot be formed.
+``start_order``
+    The order used by Hairer's starting step.
+``stats() -> dict``
+    Method-specific counters for ``OdeResult.stats``.
+``controller`` (optional)
+    An object with ``next(err, h_abs, rejected) -> (h_abs, accepted)`` replacing the loop's
+    I/PI :class:`Controller` for a method that chooses its step with its order (extrapolation).
 """
 
 from __future__ import annotations
@@ -161,6 +171,8 @@ class Run(NamedTuple):
     nstiff: int = 1000
     step_control: str = "i"
     progress: object = None
+    #: times the steps must land on (a :class:`~rigidmech.ode._driver.Stops`), or None
+    stops: object = None
 
 
 def integrate(stepper, run, f0=None):
@@ -182,18 +194,18 @@ def integrate(stepper, run, f0=None):
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y0)
         return rec.result(caps.name, prob.nfev, 0)
+    y = stepper.begin(prob, t0, y0, f0)
     if run.first_step is None:
-        h_abs = initial_step(prob, t0, y0, f0, direction, caps.error_order, run.rtol, run.atol,
-                             t_end, run.max_step)
+        h_abs = initial_step(prob, t0, y0, f0, direction, stepper.start_order, run.rtol,
+                             run.atol, t_end, run.max_step)
     else:
         h_abs = run.first_step
-    y = stepper.begin(prob, t0, y0, f0)
     state = _Loop(stepper, run, rec, direction)
     try:
         state.run(t0, y, h_abs)
     except KeyboardInterrupt:  # everything computed so far is kept
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
-    return rec.result(caps.name, prob.nfev + stepper.nfev, state.nrej)
+    return rec.result(caps.name, prob.nfev + stepper.nfev, state.nrej, stepper.stats())
 
 
 class _Loop:
@@ -209,10 +221,14 @@ class _Loop:
     def run(self, t, y, h_abs):
         stepper, run, rec, direction = self.stepper, self.run_, self.rec, self.direction
         t_end, max_step, max_steps = run.t_span[1], run.max_step, run.max_steps
-        control = Controller(stepper.capabilities.error_order, run.step_control == "pi")
+        control = getattr(stepper, "controller", None) or Controller(
+            stepper.capabilities.error_order, run.step_control == "pi")
+        control = control.next
         stiff = _Stiffness(stepper.capabilities, run.nstiff)
         want = rec.cs is not None or rec.events is not None
-        attempt, isfinite, progress = stepper.attempt, math.isfinite, run.progress
+        attempt, finite, progress, stops = stepper.attempt, stepper.finite, run.progress, \
+            run.stops
+        t_goal = t_end if stops is None else stops.after(t)
         naccpt = 0
         while direction * (t - t_end) < 0:
             if naccpt >= max_steps:
@@ -227,12 +243,12 @@ class _Loop:
             rejected = accepted = False
             while h_abs >= min_step:  # also false for a nan step
                 t_new = t + h_abs * direction
-                if direction * (t_new - t_end) > 0:
-                    t_new = t_end
+                if direction * (t_new - t_goal) > 0:
+                    t_new = t_goal
                 h = t_new - t
                 h_abs = abs(h)
                 step = attempt(t, y, h)
-                h_abs, accepted = control.next(step.error, h_abs, rejected)
+                h_abs, accepted = control(step.error, h_abs, rejected)
                 if accepted:
                     break
                 rejected = True
@@ -242,15 +258,15 @@ class _Loop:
                          t, y)
                 return
             y_new = step.y
-            if not (isfinite(sum(y_new)) if type(y_new) is list else np.isfinite(y_new).all()):
+            if not finite(step):
                 rec.fail("The state became non-finite", t_new, y_new)
                 return
             naccpt += 1
             if stiff.due(naccpt):
                 stiff.check(stepper.hlamb(h_abs, step), t_new)
             if want:
-                y_rec, coeffs = stepper.dense(t, y, h, step)
-                stop = rec.accept(t_new, y_rec, coeffs)
+                y_rec, coeffs, exact = stepper.dense(t, y, h, step)
+                stop = rec.accept(t_new, y_rec, coeffs, exact)
             else:
                 stop = rec.accept(t_new, y_new)
             stepper.accept(step)
@@ -258,6 +274,8 @@ class _Loop:
             y = y_new
             if stop:
                 return
+            if stops is not None:
+                t_goal = stops.after(t)
             if progress is not None and progress(t) is False:
                 rec.interrupt("The integration was stopped by the `progress` callback", t)
                 return

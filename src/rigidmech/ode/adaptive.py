@@ -118,7 +118,14 @@ class _FloatStepper:
 
     def begin(self, prob, t0, y0, f0):
         self.prob, self.k0 = prob, f0.tolist()
+        self.start_order = self.capabilities.error_order
         return y0.tolist()
+
+    def finite(self, step):
+        return math.isfinite(sum(step.y))
+
+    def stats(self):
+        return {}
 
     def attempt(self, t, y, h):
         out = self.kernel(self.fun, t, y, self.k0, h, self.rtol, self.atols)
@@ -140,7 +147,7 @@ class _FloatStepper:
     def dense(self, t, y, h, step):
         ya, yna = np.array(y), np.array(step.y)
         return yna, self.pair.dense(self.pair, self.prob, t, ya, yna, h,
-                                    np.array(step.data[1]))
+                                    np.array(step.data[1])), None
 
 
 class _ArrayStepper:
@@ -157,7 +164,14 @@ class _ArrayStepper:
         self.flat = not prob.batch  # single trajectory: call fun directly, copy into K
         self.K = np.empty((max(16, self.pair.s + 1), y0.size))
         self.K[0] = f0
+        self.start_order = self.capabilities.error_order
         return y0
+
+    def finite(self, step):
+        return bool(np.isfinite(step.y).all())
+
+    def stats(self):
+        return {}
 
     def attempt(self, t, y, h):
         pair, K, s = self.pair, self.K, self.pair.s
@@ -213,7 +227,7 @@ class _ArrayStepper:
         return None
 
     def dense(self, t, y, h, step):
-        return step.y, self.pair.dense(self.pair, self.prob, t, y, step.y, h, self.K)
+        return step.y, self.pair.dense(self.pair, self.prob, t, y, step.y, h, self.K), None
 
 
 def _dense_shampine(pair, prob, t, y, y_new, h, K):
