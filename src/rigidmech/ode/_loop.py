@@ -45,7 +45,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._driver import Problem, Recorder, initial_step
+from ._driver import Problem, Recorder, SampleRecorder, initial_step
 from ._warnings import stiffness_count
 
 __all__ = ["Capabilities", "StepResult", "Controller", "integrate"]
@@ -173,6 +173,8 @@ class Run(NamedTuple):
     progress: object = None
     #: times the steps must land on (a :class:`~rigidmech.ode._driver.Stops`), or None
     stops: object = None
+    #: times at which to keep the solution, or None (keep every step)
+    t_eval: object = None
 
 
 def integrate(stepper, run, f0=None):
@@ -185,7 +187,11 @@ def integrate(stepper, run, f0=None):
     direction = 1.0 if t_end > t0 else -1.0
     prob = Problem(run.fun, run.y0.shape)
     y0 = run.y0.reshape(-1).copy()
-    rec = Recorder(t0, y0, prob.shape, run.dense_output, run.events, caps.dense_form)
+    if run.t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
+        rec = SampleRecorder(t0, y0, prob.shape, run.events, run.t_eval, caps.dense_form,
+                             at_steps=run.stops is not None)
+    else:
+        rec = Recorder(t0, y0, prob.shape, run.dense_output, run.events, caps.dense_form)
     if f0 is None:
         f0 = prob(t0, y0, np.empty_like(y0))
     else:
@@ -225,7 +231,7 @@ class _Loop:
             stepper.capabilities.error_order, run.step_control == "pi")
         control = control.next
         stiff = _Stiffness(stepper.capabilities, run.nstiff)
-        want = rec.cs is not None or rec.events is not None
+        want = rec.needs_dense
         attempt, finite, progress, stops = stepper.attempt, stepper.finite, run.progress, \
             run.stops
         t_goal = t_end if stops is None else stops.after(t)

@@ -48,8 +48,10 @@ class MethodEntry:
     name: str
     function: Callable
     kind: str
-    #: Declared capabilities: ``"t_eval_at_steps"`` (the method takes ``t_eval=`` and lands its
-    #: steps on those times, because its interpolant is less accurate than its steps).
+    #: Declared capabilities: ``"t_eval"`` (the method takes ``t_eval=`` and keeps only those
+    #: samples, memory proportional to them when no dense output is asked for) and
+    #: ``"t_eval_at_steps"`` (it takes ``t_eval=`` and lands its steps on those times,
+    #: because its interpolant is less accurate than its steps).
     capabilities: frozenset = frozenset()
 
 
@@ -57,7 +59,7 @@ _METHODS: dict[str, MethodEntry] = {}
 
 
 #: The capabilities a method may declare (see :class:`MethodEntry`).
-CAPABILITIES = ("t_eval_at_steps",)
+CAPABILITIES = ("t_eval", "t_eval_at_steps")
 
 
 def register(name: str, fn: Callable, *, kind: str, capabilities=()) -> Callable:

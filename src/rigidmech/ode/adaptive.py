@@ -295,14 +295,14 @@ def _stepper(pair, fun, t0, y0, rtol, atol):
 
 
 def _solve_pair(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events, nstiff, step_control, progress):
+                dense_output, events, nstiff, step_control, progress, t_eval):
     nstiff = _check_nstiff(nstiff)
     step_control = _check_step_control(step_control)
     if progress is not None and not callable(progress):
         raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
                             f"{progress!r}.")
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
-              events, nstiff, step_control, progress)
+              events, nstiff, step_control, progress, None, t_eval)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         stepper, f0 = _stepper(pair, fun, t_span[0], y0, rtol, atol)
         return integrate(stepper, run, f0)
@@ -326,7 +326,7 @@ def _check_nstiff(nstiff):
 
 def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i", progress=None):
+           nstiff=1000, step_control="i", progress=None, t_eval=None):
     """Dormand-Prince 5(4) with error control, dense output and stiffness detection.
 
     Called through :func:`rigidmech.ode.solve` (``method="dopri5"`` or ``"rk45"``), which
@@ -349,12 +349,12 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(DOPRI5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress)
+                       progress=progress, t_eval=t_eval)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i", progress=None):
+           nstiff=1000, step_control="i", progress=None, t_eval=None):
     """Dormand-Prince 8(5,3) (Hairer's DOP853) with error control, 7th-order dense output and
     stiffness detection.
 
@@ -381,12 +381,12 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(DOP853, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress)
+                       progress=progress, t_eval=t_eval)
 
 
 def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
          max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-         nstiff=1000, step_control="i", progress=None):
+         nstiff=1000, step_control="i", progress=None, t_eval=None):
     """Bogacki-Shampine 3(2) with error control and cubic Hermite dense output.
 
     Called through :func:`rigidmech.ode.solve` (``method="bs32"``, scipy's ``RK23``): four
@@ -412,10 +412,10 @@ def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(BS32, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress)
+                       progress=progress, t_eval=t_eval)
 
 
-_registry.register("bs32", bs32, kind="adaptive")
-_registry.register("dopri5", dopri5, kind="adaptive")
-_registry.register("rk45", dopri5, kind="adaptive")
-_registry.register("dop853", dop853, kind="adaptive")
+_registry.register("bs32", bs32, kind="adaptive", capabilities=("t_eval",))
+_registry.register("dopri5", dopri5, kind="adaptive", capabilities=("t_eval",))
+_registry.register("rk45", dopri5, kind="adaptive", capabilities=("t_eval",))
+_registry.register("dop853", dop853, kind="adaptive", capabilities=("t_eval",))

@@ -526,27 +526,26 @@ def _run_fixed(run):
 
 
 def _run_adaptive(run):
-    te = run.t_eval
-    at_steps = te is not None and "t_eval_at_steps" in run.entry.capabilities
-    extra = {"t_eval": te} if at_steps else {}
+    te, caps = run.t_eval, run.entry.capabilities
+    lands, samples = "t_eval_at_steps" in caps, "t_eval" in caps
+    own = te is not None and (lands or samples)  # the method takes t_eval itself
     res = run.entry.function(
         run.fun, (run.t0, run.t1), run.y, step=None, rtol=run.rtol, atol=run.atol,
         first_step=run.first_step, max_step=run.max_step, max_steps=run.max_steps,
-        dense_output=run.dense_output or (te is not None and not at_steps),
-        events=run.tracker, **extra, **run.options,
+        dense_output=run.dense_output or (te is not None and not own),
+        events=run.tracker, **({"t_eval": te} if own else {}), **run.options,
     )
-    if at_steps:  # the steps landed on t_eval: keep those steps
+    if te is None or (samples and not run.dense_output):  # done (or samples kept already)
+        return res
+    if lands:  # the steps landed on t_eval: keep those steps
         keep = np.isin(res.t, te)
-        res = dataclasses.replace(res, t=res.t[keep], y=res.y[:, keep])
-    elif te is not None:
-        if res.sol is not None:
-            t_new, y_new = _restrict(te, res.t, res.sol)
-        else:  # failed before the first step
-            shape = run.y.shape
-            t_new, y_new = te[:0], np.empty((shape[0], 0) + shape[1:])
-        res = dataclasses.replace(res, t=t_new, y=y_new,
-                                  sol=res.sol if run.dense_output else None)
-    return res
+        return dataclasses.replace(res, t=res.t[keep], y=res.y[:, keep])
+    if res.sol is not None:
+        t_new, y_new = _restrict(te, res.t, res.sol)
+    else:  # failed before the first step
+        shape = run.y.shape
+        t_new, y_new = te[:0], np.empty((shape[0], 0) + shape[1:])
+    return dataclasses.replace(res, t=t_new, y=y_new, sol=res.sol if run.dense_output else None)
 
 
 def name_failed_member(res, run):

@@ -81,7 +81,7 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return _gbs(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                     max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                    events=events, k_max=k_max, stops=Stops(t_eval, t_span))
+                    events=events, k_max=k_max, t_eval=t_eval)
 
 
 class _GbsStepper:
@@ -237,7 +237,7 @@ _CAPS = Capabilities("gbs", error_order=1, order=2, dense_order=3)
 
 
 def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output, events,
-         k_max, stops):
+         k_max, t_eval):
     if isinstance(k_max, bool) or not isinstance(k_max, int | np.integer) or not (
         3 <= k_max <= 12
     ):
@@ -251,7 +251,8 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
         floats = type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64
     stepper = _GbsStepper(fun, shape, rtol, atol, int(k_max), floats)
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
-              events, 0, "i", None, stops)
+              events, 0, "i", None, Stops(t_eval, t_span) if t_eval is not None else None,
+              t_eval)
     return integrate(stepper, run, f0)
 
 
@@ -291,4 +292,4 @@ def _norm_floats(a, b, y, atols, rtol):
     return math.sqrt(acc / len(a))
 
 
-_registry.register("gbs", gbs, kind="adaptive", capabilities=("t_eval_at_steps",))
+_registry.register("gbs", gbs, kind="adaptive", capabilities=("t_eval", "t_eval_at_steps"))
