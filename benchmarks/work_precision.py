@@ -48,7 +48,7 @@ OURS_ADAPTIVE = {
     "radau": ("radau", {}),
 }
 #: our Runge-Kutta-Nystrom pairs (separable problems only: q'' = a(t, q)), called directly
-#: because ode.solve runs "second_order" methods with a fixed step
+#: (ode.solve runs them adaptively too, at the cost of one more call of fun to check its shape)
 OURS_RKN = {"rkn64": rkn.rkn64, "rkn1210": rkn.rkn1210}
 SCIPY = ("RK45", "DOP853", "LSODA", "Radau")
 SLOW_RUN = 0.5  # seconds: a run slower than this is timed once

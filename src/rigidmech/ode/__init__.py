@@ -7,7 +7,7 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * fixed step: ``"euler"``, ``"heun"``, ``"midpoint"``, ``"rk4"``, ``"rk38"``, or any
   :class:`~rigidmech.ode.tableaux.ButcherTableau` (ch. 26.2);
 * adaptive, with dense output, events and stiffness detection: ``"dopri5"`` (alias
-  ``"rk45"``) and ``"dop853"``;
+  ``"rk45"``) and ``"dop853"``; and ``"bs32"`` (Bogacki-Shampine 3(2));
 * extrapolation (Gragg-Bulirsch-Stoer, the book's Romberg idea, ch. 26.2.3): ``"gbs"``;
 * multistep, adaptive in order and step (Adams PECE on backward differences, ch. 26.3):
   ``"adams"``;

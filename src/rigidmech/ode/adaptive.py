@@ -1,4 +1,9 @@
-"""Adaptive embedded Runge-Kutta pairs: Dormand-Prince 5(4) and DOP853 (book, ch. 26.2).
+"""Adaptive embedded Runge-Kutta pairs: Dormand-Prince 5(4), DOP853, Bogacki-Shampine 3(2)
+(book, ch. 26.2).
+
+Each pair is data (:class:`ExplicitPair`: tableau, error weights, dense output,
+:class:`~rigidmech.ode._loop.Capabilities`) run by one of two steppers (plain floats for one
+small trajectory, numpy otherwise) through the one loop of :mod:`rigidmech.ode._loop`.
 
 The step is chosen so that an estimate of the local error stays below the tolerance, measured
 in Hairer's weighted RMS norm ``sqrt(mean((err / (atol + rtol max(|y0|, |y1|)))**2))``; the
