@@ -40,6 +40,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from . import _rkn12_coefficients as _rkn12
 from ._driver import Recorder, Stops
 from ._floatpath import make_rkn_stepper
+from ._loop import Capabilities, Run, StepResult, integrate
 from ._registry import register
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
@@ -261,7 +262,6 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
          dense_output, events, t_eval=None):
     t0, t1, y = _check_common(fun, t_span, y0)
     d = y.shape[0] // 2
-    direction = 1.0 if t1 > t0 else -1.0
     if isinstance(max_steps, bool) or not isinstance(max_steps, int | np.integer) or (
             max_steps < 1):
         raise ArgumentError(f"`max_steps` must be an int >= 1; got {max_steps!r}.")
@@ -272,42 +272,11 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     if a.shape != (d,):
         raise ArgumentError(
             f"`fun` must return the acceleration of shape ({d},); got shape {a.shape}.")
-    nfev = 1
     if unrolled:
         q, v, a = q.tolist(), v.tolist(), a.tolist()
-    rec = Recorder(t0, y, (2 * d,), bool(dense_output), events)
-    length = abs(t1 - t0)
-    per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end-point call
-
-    def coeffs_of(h, qa, va, aa, qb, vb, ab):
-        arr = np.asarray
-        return lambda: _dense_coeffs(h, arr(qa), arr(va), arr(aa), arr(qb), arr(vb), arr(ab))
-
     if step is not None:  # constant step, no error control
-        h = float(step)
-        if not (math.isfinite(h) and h > 0):
-            raise ArgumentError(f"`step` must be a finite number > 0; got {step!r}.")
-        n = max(1, math.ceil(length / h * (1 - 1e-12)))
-        if n > max_steps:
-            raise ArgumentError(
-                f"`step` = {h:g} needs {n} steps over `t_span`, more than `max_steps` = "
-                f"{max_steps}.")
-        h = (t1 - t0) / n
-        with np.errstate(over="ignore", invalid="ignore"):
-            for i in range(n):
-                t = t0 + i * h
-                q1, v1, a1, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
-                nfev += per_step
-                tn = t0 + (i + 1) * h
-                y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
-                if rec.accept(tn, y1, coeffs_of(h, q, v, a, q1, v1, a1)):
-                    break
-                q, v, a = q1, v1, a1
-                if not np.all(np.isfinite(y1)):
-                    rec.fail("Non-finite state", tn, y1)
-                    break
-        return rec.result(pair.name, nfev, 0, stats={"step": abs(h), "stages": pair.stages})
-
+        return _run_fixed(pair, fun, (t0, t1), y, step, max_steps, dense_output, events, kern,
+                          unrolled, (q, v, a))
     rtol = float(rtol)
     if not (math.isfinite(rtol) and rtol >= 0):
         raise ArgumentError(f"`rtol` must be a finite float >= 0; got {rtol!r}.")
@@ -317,81 +286,137 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     max_step = abs(float(max_step))
     if not max_step > 0:
         raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")
-    aq, av = (at[:d].tolist(), at[d:].tolist()) if unrolled else (at[:d], at[d:])
-    expo = 1.0 / (pair.order_embedded + 1)
-    safety, fmax = _CONTROL.get(pair.name, (_SAFETY, _FACMAX))
-    # Hairer's initial step (HNW I, II.4) on the first-order form y' = (v, a)
-    if first_step is None:
-        Y = np.concatenate([np.asarray(q), np.asarray(v)])
-        Fv = np.concatenate([np.asarray(v), np.asarray(a)])
-        sc = at + rtol * np.abs(Y)
-        d0 = math.sqrt(np.mean((Y / sc) ** 2))
-        d1 = math.sqrt(np.mean((Fv / sc) ** 2))
-        h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
-        h0 = min(h0, length)
-        qh = np.asarray(q) + direction * h0 * np.asarray(v)
-        ah = np.asarray(fun(t0 + direction * h0, qh), dtype=float)
-        nfev += 1
-        F1 = np.concatenate([np.asarray(v) + direction * h0 * np.asarray(a), ah])
-        d2 = math.sqrt(np.mean(((F1 - Fv) / sc) ** 2)) / h0
-        if max(d1, d2) <= 1e-15:
-            h1 = max(1e-6, h0 * 1e-3)
-        else:
-            h1 = (0.01 / max(d1, d2)) ** (1.0 / (pair.order + 1))
-        h = min(100 * h0, h1, length, max_step)
-    else:
-        h = min(abs(float(first_step)), length, max_step)
-    t = t0
-    nrej = 0
-    nacc = 0
-    inv2d = 1.0 / (2 * d)
-    facmax = fmax
-    stops = Stops(t_eval, (t0, t1))
-    t_goal = stops.after(t0)
-    extra = [0]  # evaluations of the steps to trial event times
-
-    def exact_from(ta, qa, va, aa):
-        def at(s):
-            extra[0] += per_step
-            q_, v_, _, _ = kern(fun, ta, qa, va, aa, s - ta, 0.0, None, None, False)
-            return np.concatenate([np.asarray(q_, dtype=float), np.asarray(v_, dtype=float)])
-        return at
-
+    first_order = _FirstOrder(fun, d)
+    if first_step is not None:
+        first_step = min(abs(float(first_step)), abs(t1 - t0), max_step)
+    run = Run(first_order, (t0, t1), y, rtol, at, first_step, max_step, max_steps,
+              bool(dense_output), events, 0, "i", None,
+              Stops(t_eval, (t0, t1)) if t_eval is not None else None)
+    stepper = _RknStepper(pair, fun, d, kern, unrolled, rtol, at, (q, v, a))
     with np.errstate(over="ignore", invalid="ignore"):
-        while direction * (t1 - t) > 0:
-            if nacc >= max_steps:
-                rec.fail(f"`max_steps` = {max_steps} reached", t, rec.ys[-1])
-                break
-            if h < 10 * abs(np.nextafter(t, direction * np.inf) - t):
-                rec.fail("Step size underflow", t, rec.ys[-1])
-                break
-            last = h >= abs(t_goal - t) * (1 - 1e-12)
-            hs = (t_goal - t) if last else direction * h
-            q1, v1, a1, err2 = kern(fun, t, q, v, a, hs, rtol, aq, av, True)
+        return integrate(stepper, run, np.concatenate([np.asarray(v, dtype=float),
+                                                       np.asarray(a, dtype=float)]))
+
+
+def _coeffs_of(h, qa, va, aa, qb, vb, ab):
+    arr = np.asarray
+    return lambda: _dense_coeffs(h, arr(qa), arr(va), arr(aa), arr(qb), arr(vb), arr(ab))
+
+
+def _run_fixed(pair, fun, t_span, y, step, max_steps, dense_output, events, kern, unrolled,
+               qva):
+    """The constant-step run (direct calls with ``step=h``): the 6th/12th-order formula
+    without error control."""
+    t0, t1 = t_span
+    q, v, a = qva
+    length = abs(t1 - t0)
+    per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end-point call
+    coeffs_of = _coeffs_of
+    nfev = 1
+    rec = Recorder(t0, y, y.shape, bool(dense_output), events)
+    h = float(step)
+    if not (math.isfinite(h) and h > 0):
+        raise ArgumentError(f"`step` must be a finite number > 0; got {step!r}.")
+    n = max(1, math.ceil(length / h * (1 - 1e-12)))
+    if n > max_steps:
+        raise ArgumentError(
+            f"`step` = {h:g} needs {n} steps over `t_span`, more than `max_steps` = "
+            f"{max_steps}.")
+    h = (t1 - t0) / n
+    with np.errstate(over="ignore", invalid="ignore"):
+        for i in range(n):
+            t = t0 + i * h
+            q1, v1, a1, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
             nfev += per_step
-            err = math.sqrt(err2 * inv2d)
-            if err <= 1.0:
-                tn = t_goal if last else t + hs
-                y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
-                if not np.all(np.isfinite(y1)):
-                    rec.fail("Non-finite state", tn, y1)
-                    break
-                nacc += 1
-                stop = rec.accept(tn, y1, coeffs_of(hs, q, v, a, q1, v1, a1),
-                                  exact=exact_from(t, q, v, a) if events is not None else None)
-                t, q, v, a = tn, q1, v1, a1
-                t_goal = stops.after(t)
-                if stop:
-                    break
-                fac = facmax if err == 0.0 else min(facmax, max(0.2, safety * err ** -expo))
-                h = min(abs(hs) * fac, max_step)
-                facmax = fmax
-            else:
-                nrej += 1
-                fac = 0.2 if not math.isfinite(err) else max(0.2, safety * err ** -expo)
-                h = abs(hs) * fac
-                facmax = 1.0
-    return rec.result(pair.name, nfev + extra[0], nrej, stats={"stages": pair.stages})
+            tn = t0 + (i + 1) * h
+            y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
+            if rec.accept(tn, y1, coeffs_of(h, q, v, a, q1, v1, a1)):
+                break
+            q, v, a = q1, v1, a1
+            if not np.all(np.isfinite(y1)):
+                rec.fail("Non-finite state", tn, y1)
+                break
+    return rec.result(pair.name, nfev, 0, stats={"step": abs(h), "stages": pair.stages})
+
+
+class _FirstOrder:
+    """``y' = (v, a(t, q))``: the first-order form of ``q'' = a(t, q)``, for the starting step
+    and the checks of the loop."""
+
+    __slots__ = ("fun", "d")
+
+    def __init__(self, fun, d):
+        self.fun, self.d = fun, d
+
+    def __call__(self, t, y):
+        d = self.d
+        return np.concatenate([y[d:], np.asarray(self.fun(t, y[:d].copy()), dtype=float)])
+
+
+class _RknStepper:
+    """A Runge-Kutta-Nystrom pair on the one loop: the generated step of the pair, its own
+    controller (safety factor and growth limit of the pair, error accepted up to 1)."""
+
+    def __init__(self, pair, fun, d, kern, unrolled, rtol, at, qva):
+        self.pair, self.fun, self.d, self.kern, self.unrolled = pair, fun, d, kern, unrolled
+        self.capabilities = Capabilities(pair.name, error_order=pair.order_embedded,
+                                         order=pair.order, dense_order=5)
+        self.start_order = pair.order
+        self.controller = self
+        self.rtol = rtol
+        self.aq, self.av = (at[:d].tolist(), at[d:].tolist()) if unrolled else (at[:d], at[d:])
+        self.expo = 1.0 / (pair.order_embedded + 1)
+        self.safety, self.fmax = _CONTROL.get(pair.name, (_SAFETY, _FACMAX))
+        self.per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end call
+        self.inv2d = 1.0 / (2 * d)
+        self.a = qva[2]
+        self.nfev = 0
+
+    def begin(self, prob, t0, y0, f0):
+        return y0.tolist() if self.unrolled else y0.copy()
+
+    def _split(self, y):
+        d = self.d
+        return y[:d], y[d:]
+
+    def attempt(self, t, y, h):
+        q, v = self._split(y)
+        q1, v1, a1, err2 = self.kern(self.fun, t, q, v, self.a, h, self.rtol, self.aq,
+                                     self.av, True)
+        self.nfev += self.per_step
+        y1 = (q1 + v1) if self.unrolled else np.concatenate([q1, v1])
+        return StepResult(y1, a1, math.sqrt(err2 * self.inv2d), (h, q, v, q1, v1))
+
+    def next(self, err, h_abs, rejected):
+        facmax = 1.0 if rejected else self.fmax
+        if err <= 1.0:
+            fac = facmax if err == 0.0 else min(facmax, max(0.2, self.safety * err**-self.expo))
+            return h_abs * fac, True
+        fac = 0.2 if not math.isfinite(err) else max(0.2, self.safety * err**-self.expo)
+        return h_abs * fac, False
+
+    def finite(self, step):
+        return bool(np.all(np.isfinite(step.y)))
+
+    def accept(self, step):
+        self.a = step.f
+
+    def hlamb(self, h_abs, step):
+        return None
+
+    def dense(self, t, y, h, step):
+        hs, q, v, q1, v1 = step.data
+        a0, a1, kern, fun = self.a, step.f, self.kern, self.fun
+
+        def exact(s):
+            self.nfev += self.per_step
+            q_, v_, _, _ = kern(fun, t, q, v, a0, s - t, 0.0, None, None, False)
+            return np.concatenate([np.asarray(q_, dtype=float), np.asarray(v_, dtype=float)])
+
+        return (np.asarray(step.y, dtype=float), _coeffs_of(hs, q, v, a0, q1, v1, a1), exact)
+
+    def stats(self):
+        return {"stages": self.pair.stages}
 
 
 def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
