@@ -42,6 +42,8 @@ from ._driver import Recorder, Stops
 from ._floatpath import make_rkn_stepper
 from ._loop import Capabilities, Run, StepResult, integrate
 from ._registry import register
+from .api import _check_t_span, _check_y0, solve
+from .events import EventTracker
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
 
@@ -213,21 +215,14 @@ def _kernel(pair, d):
 
 
 def _check_common(fun, t_span, y0):
+    """The checks of :func:`~rigidmech.ode.solve` (one set of rules), plus ``[q0, v0]``."""
     if not callable(fun):
         raise ArgumentTypeError(f"`fun` must be callable a(t, q); got {type(fun).__name__}.")
-    try:
-        t0, t1 = (float(x) for x in t_span)
-    except (TypeError, ValueError):
+    t0, t1 = _check_t_span(t_span)
+    y = _check_y0(y0)
+    if y.ndim != 1 or y.shape[0] % 2:
         raise ArgumentError(
-            f"`t_span` must be a pair of floats (t0, t1); got {t_span!r}.") from None
-    if not (math.isfinite(t0) and math.isfinite(t1)) or t0 == t1:
-        raise ArgumentError(f"`t_span` must be two distinct finite times; got {t_span!r}.")
-    y = np.array(y0, dtype=float)
-    if y.ndim != 1 or y.shape[0] % 2 or y.shape[0] == 0:
-        raise ArgumentError(
-            f"`y0` must be a 1-D [q0, v0] of even length 2 d; got shape {y.shape}.")
-    if not np.all(np.isfinite(y)):
-        raise ArgumentError(f"`y0` must be finite; got {y}.")
+            f"`y0` must be [q0, v0] of even length n (no batch axis); got shape {y.shape}.")
     return t0, t1, y
 
 
@@ -261,6 +256,8 @@ def _dense_coeffs(h, q0, v0, a0, q1, v1, a1):
 def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
          dense_output, events, t_eval=None):
     t0, t1, y = _check_common(fun, t_span, y0)
+    if t0 == t1:  # nothing to integrate: y0, as solve returns it
+        return solve(fun, (t0, t1), y, method=pair.name, max_steps=max_steps)
     d = y.shape[0] // 2
     if isinstance(max_steps, bool) or not isinstance(max_steps, int | np.integer) or (
             max_steps < 1):
@@ -277,15 +274,8 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     if step is not None:  # constant step, no error control
         return _run_fixed(pair, fun, (t0, t1), y, step, max_steps, dense_output, events, kern,
                           unrolled, (q, v, a))
-    rtol = float(rtol)
-    if not (math.isfinite(rtol) and rtol >= 0):
-        raise ArgumentError(f"`rtol` must be a finite float >= 0; got {rtol!r}.")
-    at = _tol_list("atol", atol, d)
-    if rtol == 0 and np.any(at == 0):
-        raise ArgumentError("`rtol` and `atol` must not both be 0; got rtol = 0, atol = 0.")
-    max_step = abs(float(max_step))
-    if not max_step > 0:
-        raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")
+    # rtol, atol, max_step and first_step were checked by ode.solve (the only way here)
+    rtol, at, max_step = float(rtol), _tol_list("atol", atol, d), float(max_step)
     first_order = _FirstOrder(fun, d)
     if first_step is not None:
         first_step = min(abs(float(first_step)), abs(t1 - t0), max_step)
@@ -487,8 +477,8 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(np.allclose(r.y[:, -1], [1.0, 0.0], atol=1e-9)), r.status
     (True, 0)
     """
-    return _run(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events, t_eval)
+    return _direct(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step,
+                   max_steps, dense_output, events, t_eval)
 
 
 def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
@@ -524,9 +514,38 @@ def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None
     >>> bool(np.allclose(r.y[:, -1], [1.0, 0.0], atol=1e-12)), r.nsteps < 20
     (True, True)
     """
-    return _run(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+    return _direct(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step,
+                   max_steps, dense_output, events, t_eval)
+
+
+def _direct(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+            dense_output, events, t_eval):
+    """A direct call: through :func:`~rigidmech.ode.solve` (its checks, its rules) with error
+    control; the constant step (`step`), which ``solve`` does not offer for these pairs, runs
+    here after the same checks of ``t_span`` and ``y0``."""
+    if step is None:
+        if isinstance(events, EventTracker):  # built by the caller: its functions
+            events = events.functions
+        return solve(fun, t_span, y0, method=pair.name, rtol=rtol, atol=atol,
+                     first_step=first_step, max_step=max_step, max_steps=max_steps,
+                     dense_output=dense_output, events=events, t_eval=t_eval)
+    return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
                 dense_output, events, t_eval)
 
 
-register("rkn64", rkn64, kind="adaptive_second_order", capabilities=("t_eval_at_steps",))
-register("rkn1210", rkn1210, kind="adaptive_second_order", capabilities=("t_eval_at_steps",))
+def _solver(pair):
+    def method(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
+               max_step=np.inf, max_steps=100_000, dense_output=False, events=None,
+               t_eval=None):
+        return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+                    dense_output, events, t_eval)
+
+    method.__name__ = method.__qualname__ = pair.name
+    method.__doc__ = f"The {pair.name} pair as called by :func:`~rigidmech.ode.solve`."
+    return method
+
+
+register("rkn64", _solver(DPRKN6), kind="adaptive_second_order",
+         capabilities=("t_eval_at_steps",))
+register("rkn1210", _solver(DPRKN12), kind="adaptive_second_order",
+         capabilities=("t_eval_at_steps",))
