@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ._dense import DenseSolution
+from ._dense import DenseSolution, evaluate
 from ._result import OdeResult
 
 __all__ = ["Problem", "Recorder", "SampleRecorder", "Stops", "initial_step", "fail_message",
@@ -277,7 +277,7 @@ class SampleRecorder(Recorder):
     """
 
     __slots__ = ("_samples", "_i", "_sign", "_t_prev", "_y_prev", "_last", "_at_steps",
-                 "_nsteps")
+                 "_nsteps", "_queue")
 
     def __init__(self, t0, y0, shape, events, t_eval, form="power", at_steps=False):
         super().__init__(t0, y0, shape, False, events, form)
@@ -289,6 +289,7 @@ class SampleRecorder(Recorder):
         self._last = None  # [t_old, t_new, y_old, coeffs] of the last accepted step
         self._at_steps = at_steps
         self._nsteps = 0
+        self._queue = []  # (time, step) of samples not yet evaluated
         self.ts, self.ys = [], []
         if at_steps:
             self._take_exact(t0, self._y_prev)
@@ -316,16 +317,32 @@ class SampleRecorder(Recorder):
                              self.shape)
 
     def _take(self, t_hi, inclusive):
-        """The samples before `t_hi` (and at it if `inclusive`), on the last step's poly."""
+        """Queue the samples before `t_hi` (and at it if `inclusive`) on the last step."""
         samples, sign = self._samples, self._sign
         j = self._i
         while j < len(samples) and (sign * (samples[j] - t_hi) < 0 or (
                 inclusive and samples[j] == t_hi)):
             j += 1
         if j > self._i:
-            self.ts.extend(samples[self._i:j].tolist())
-            self.ys.extend(self._poly()._eval_flat(samples[self._i:j]))
+            t_old, t_new, y_old, _ = self._last
+            step = (t_old, t_new - t_old, y_old, self._coeffs())
+            self._queue.extend((samples[k], step) for k in range(self._i, j))
             self._i = j
+            if len(self._queue) >= 256:
+                self._flush()
+
+    def _flush(self):
+        """Evaluate the queued samples at once (the same arithmetic as the dense output)."""
+        if not self._queue:
+            return
+        q = self._queue
+        t = np.array([s for s, _ in q])
+        values = evaluate(t, np.array([st[0] for _, st in q]), np.array([st[1] for _, st in q]),
+                          np.array([st[2] for _, st in q]), np.array([st[3] for _, st in q]),
+                          self.form)
+        self.ts.extend(t.tolist())
+        self.ys.extend(values)
+        self._queue = []
 
     def accept(self, t_new, y_new, coeffs=None, exact=None):
         t_old, y_old = self._t_prev, np.asarray(self._y_prev, dtype=float).reshape(-1)
@@ -348,6 +365,7 @@ class SampleRecorder(Recorder):
     def result(self, method, nfev, nrejected, stats=None):
         if self._last is not None and not self._at_steps:
             self._take(self._t_prev, True)  # the end (or where the run stopped)
+            self._flush()
         t = np.array(self.ts, dtype=float)
         Y = np.array(self.ys, dtype=float).reshape((len(t),) + self.shape)
         ev = self.events

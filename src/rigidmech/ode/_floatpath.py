@@ -17,10 +17,14 @@ hands its source to :func:`compile_function` and :func:`cached`.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_rkn_stepper", "make_midpoint",
-           "compile_function", "cached"]
+from ._loop import StepResult
+
+__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_pair_step", "make_rkn_stepper",
+           "make_midpoint", "compile_function", "cached"]
 
 #: Largest system size for which the plain-float kernel is used (measured crossover with the
 #: numpy path: about 16 equations for DOP853 on a 2-core machine).
@@ -107,6 +111,56 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     >>> out[0], round(out[3], 12)  # e = -k0 + k1 = 0.1; scale = 0.01 + 0.1 * 1.0
     ([0.9], 0.826446280992)
     """
+    lines = _unrolled_lines(name, A, b, c, s, errors, n, norm)
+    return _compile(f"{name}_{n}{'n' if norm and errors is not None else ''}", lines)
+
+
+def make_pair_step(name, A, b, c, s, errors, n):
+    """The step of an embedded pair for `n` equations, as a factory bound once per run.
+
+    ``bind(fun, rtol, atols)`` returns ``step(t, y, k0, h) -> StepResult(y_new, k_last, err,
+    (ks, y_last_stage))`` with the error norm of the pair computed inside (Hairer's RMS norm
+    for one error vector, DOP853's combination for two): the whole attempt of the loop's
+    plain-float stepper in one generated function (no Python frame around it).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> bind = make_pair_step("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1,
+    ...                       [np.array([-1.0, 1.0])], 1)
+    >>> r = bind(lambda t, y: -y, 0.1, [0.01])(0.0, [1.0], [-1.0], 0.1)
+    >>> r.y, round(r.error, 12)  # h * sqrt(0.826446280992 / 1)
+    ([0.9], 0.090909090909)
+    """
+    return cached(("pair-step", name, n), lambda: compile_function(
+        _pair_step_lines(name, A, b, c, s, errors, n), "make", f"{name} pair step n={n}",
+        {"_new": tuple.__new__, "_SR": StepResult, "_sqrt": math.sqrt}))
+
+
+def _pair_step_lines(name, A, b, c, s, errors, n):
+    body = _unrolled_lines(name, A, b, c, s, errors, n, True)
+    comps = range(n)
+    lines = ["def make(fun, rtol, atols):"]
+    lines.append(f"    {', '.join(f'at_{j}' for j in comps)}, = atols")
+    lines.append("    def step(t, y, k0, h):")
+    ret = body[-1]
+    for line in body[1:-1]:
+        if line.strip().startswith("at_0") and line.endswith("= atols"):
+            continue
+        lines.append("    " + line)
+    if len(errors) == 1:
+        lines.append(f"        err = abs(h)*_sqrt(s0/{n})")
+    else:
+        lines.append("        den = s0 + 0.01*s1")
+        lines.append(f"        err = abs(h)*s0/_sqrt(den*{n}) if den > 0 else "
+                     "(0.0 if den == 0 else den)")
+    ks, last = ret.split("return yn, ", 1)[1].rsplit(", s0", 1)[0].rsplit(", ", 1)
+    lines.append(f"        return _new(_SR, (yn, k{s}, err, ({ks}, {last})))")
+    lines.append("    return step")
+    return lines
+
+
+def _unrolled_lines(name, A, b, c, s, errors, n, norm):
     if norm:
         lines = [f"def step_{name}_{n}n(fun, t, y, k0, h, rtol, atols):"]
     else:
@@ -130,7 +184,7 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     lines.append(f"    yn = [{', '.join(f'yn_{j}' for j in comps)}]")
     if errors is None:
         lines.append("    return yn")
-        return _compile(f"{name}_{n}", lines)
+        return lines
     lines.append(f"    k{s} = _tolist(fun(t + h, _arr(yn)))")
     lines.append(f"    {', '.join(f'k{s}_{j}' for j in comps)}, = k{s}")
     outs = []
@@ -153,7 +207,7 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
             outs.append(f"e{e_idx}")
     lines.append(f"    return yn, ({', '.join(f'k{i}' for i in range(s + 1))},), {last}, "
                  f"{', '.join(outs)}")
-    return _compile(f"{name}_{n}{'n' if norm else ''}", lines)
+    return lines
 
 
 def _rkn_source(pair, d, unrolled):

@@ -14,15 +14,18 @@ The protocol (model: scipy's ``OdeSolver``):
 ``capabilities``
     A :class:`Capabilities`: error order (for the controller and the starting step),
     stiffness border (or None: no test), form of the dense coefficients.
-``begin(t0, y0, f0) -> y``
-    Prepare a run from the flat initial state and its derivative; return the state in the
-    stepper's own representation (a list of floats or an ndarray).
-``attempt(t, y, h) -> StepResult``
-    One attempted step of signed size `h` from ``(t, y)``; the error norm decides.
-``finite(step) -> bool``
-    Whether the accepted state (and what the next step needs) is finite.
-``accept(step)``
-    The attempt `step` was accepted (e.g. keep its last stage, FSAL).
+``begin(prob, t0, y0, f0) -> (y, f)``
+    Prepare a run from the flat initial state and its derivative; return both in the
+    stepper's own representation (lists of floats or ndarrays).
+``attempt(t, y, f, h) -> StepResult``
+    One attempted step of signed size `h` from ``(t, y)`` with ``f = f(t, y)`` (the previous
+    step's ``StepResult.f``, FSAL); the error norm decides. It may be the generated step
+    itself (``nfev_per_attempt`` evaluations each, counted by the loop).
+``finite(step) -> bool`` (optional)
+    Whether the accepted state (and what the next step needs) is finite; without it the
+    state is a list of floats, finite if its sum is.
+``accept(step)`` (optional)
+    The attempt `step` was accepted (e.g. keep a stage buffer).
 ``dense(t, y, h, step) -> (y_new, coeffs, exact)``
     The accepted state as a flat ndarray, the step's dense coefficients (or a
     zero-argument callable computing them, evaluated only if needed) and ``exact`` (None, or
@@ -33,6 +36,9 @@ The protocol (model: scipy's ``OdeSolver``):
     The order used by Hairer's starting step.
 ``stats() -> dict``
     Method-specific counters for ``OdeResult.stats``.
+``nfev``, ``nfev_per_attempt``
+    Evaluations of ``fun`` the stepper made itself (not through the loop's counting
+    ``prob``), and those of each attempt.
 ``controller`` (optional)
     An object with ``next(err, h_abs, rejected) -> (h_abs, accepted)`` replacing the loop's
     I/PI :class:`Controller` for a method that chooses its step with its order (extrapolation).
@@ -200,7 +206,7 @@ def integrate(stepper, run, f0=None):
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y0)
         return rec.result(caps.name, prob.nfev, 0)
-    y = stepper.begin(prob, t0, y0, f0)
+    y, f = stepper.begin(prob, t0, y0, f0)
     if run.first_step is None:
         h_abs = initial_step(prob, t0, y0, f0, direction, stepper.start_order, run.rtol,
                              run.atol, t_end, run.max_step)
@@ -208,80 +214,88 @@ def integrate(stepper, run, f0=None):
         h_abs = run.first_step
     state = _Loop(stepper, run, rec, direction)
     try:
-        state.run(t0, y, h_abs)
+        state.run(t0, y, f, h_abs)
     except KeyboardInterrupt:  # everything computed so far is kept
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
-    return rec.result(caps.name, prob.nfev + stepper.nfev, state.nrej, stepper.stats())
+    nfev = prob.nfev + stepper.nfev + state.attempts * stepper.nfev_per_attempt
+    return rec.result(caps.name, nfev, state.nrej, stepper.stats())
 
 
 class _Loop:
     """The state of the one loop (kept on an object so that an interruption finds it)."""
 
-    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej")
+    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts")
 
     def __init__(self, stepper, run, rec, direction):
         self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
         self.t = run.t_span[0]
-        self.nrej = 0
+        self.nrej = self.attempts = 0
 
-    def run(self, t, y, h_abs):
+    def run(self, t, y, f, h_abs):
+        """The loop; on any exit (an interruption too) ``t``, ``nrej`` and ``attempts`` hold
+        where it stopped and what it did."""
         stepper, run, rec, direction = self.stepper, self.run_, self.rec, self.direction
         t_end, max_step, max_steps = run.t_span[1], run.max_step, run.max_steps
-        control = getattr(stepper, "controller", None) or Controller(
-            stepper.capabilities.error_order, run.step_control == "pi")
-        control = control.next
+        control = (getattr(stepper, "controller", None) or Controller(
+            stepper.capabilities.error_order, run.step_control == "pi")).next
         stiff = _Stiffness(stepper.capabilities, run.nstiff)
-        want = rec.needs_dense
-        attempt, finite, progress, stops = stepper.attempt, stepper.finite, run.progress, \
-            run.stops
+        nstiff, want = stiff.nstiff, rec.needs_dense
+        attempt, progress, stops = stepper.attempt, run.progress, run.stops
+        finite = getattr(stepper, "finite", None)  # None: the state is a list of floats
+        accept = getattr(stepper, "accept", None)
+        isfinite, nextafter, inf = math.isfinite, math.nextafter, math.inf
         t_goal = t_end if stops is None else stops.after(t)
-        naccpt = 0
-        while direction * (t - t_end) < 0:
-            if naccpt >= max_steps:
-                rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
-                         t, y)
-                return
-            min_step = 10.0 * abs(math.nextafter(t, direction * math.inf) - t)
-            if h_abs > max_step:
-                h_abs = max_step
-            elif h_abs < min_step:
-                h_abs = min_step
-            rejected = accepted = False
-            while h_abs >= min_step:  # also false for a nan step
-                t_new = t + h_abs * direction
-                if direction * (t_new - t_goal) > 0:
-                    t_new = t_goal
-                h = t_new - t
-                h_abs = abs(h)
-                step = attempt(t, y, h)
-                h_abs, accepted = control(step.error, h_abs, rejected)
-                if accepted:
-                    break
-                rejected = True
-                self.nrej += 1
-            if not accepted:
-                rec.fail("The step size fell below the resolution of t (step size underflow)",
-                         t, y)
-                return
-            y_new = step.y
-            if not finite(step):
-                rec.fail("The state became non-finite", t_new, y_new)
-                return
-            naccpt += 1
-            if stiff.due(naccpt):
-                stiff.check(stepper.hlamb(h_abs, step), t_new)
-            if want:
-                y_rec, coeffs, exact = stepper.dense(t, y, h, step)
-                stop = rec.accept(t_new, y_rec, coeffs, exact)
-            else:
-                stop = rec.accept(t_new, y_new)
-            stepper.accept(step)
-            self.t = t = t_new
-            y = y_new
-            if stop:
-                return
-            if stops is not None:
-                t_goal = stops.after(t)
-            if progress is not None and progress(t) is False:
-                rec.interrupt("The integration was stopped by the `progress` callback", t)
-                return
+        naccpt = nrej = extra = 0
+        try:
+            while direction * (t - t_end) < 0:
+                if naccpt >= max_steps:
+                    rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was "
+                             "reached", t, y)
+                    return
+                min_step = 10.0 * abs(nextafter(t, direction * inf) - t)
+                if h_abs > max_step:
+                    h_abs = max_step
+                elif h_abs < min_step:
+                    h_abs = min_step
+                rejected = accepted = False
+                while h_abs >= min_step:  # also false for a nan step
+                    t_new = t + h_abs * direction
+                    if direction * (t_new - t_goal) > 0:
+                        t_new = t_goal
+                    h = t_new - t
+                    h_abs = abs(h)
+                    step = attempt(t, y, f, h)
+                    y_new, f_new, err, _ = step
+                    h_abs, accepted = control(err, h_abs, rejected)
+                    if accepted:
+                        break
+                    rejected = True
+                    nrej += 1
+                if not accepted:
+                    rec.fail("The step size fell below the resolution of t (step size "
+                             "underflow)", t, y)
+                    return
+                if not (isfinite(sum(y_new)) if finite is None else finite(step)):
+                    extra = 1
+                    rec.fail("The state became non-finite", t_new, y_new)
+                    return
+                naccpt += 1
+                if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline
+                    stiff.check(stepper.hlamb(h_abs, step), t_new)
+                if want:
+                    y_rec, coeffs, exact = stepper.dense(t, y, h, step)
+                    stop = rec.accept(t_new, y_rec, coeffs, exact)
+                else:
+                    stop = rec.accept(t_new, y_new)
+                if accept is not None:
+                    accept(step)
+                t, y, f = t_new, y_new, f_new
+                if stop:
+                    return
+                if stops is not None:
+                    t_goal = stops.after(t)
+                if progress is not None and progress(t) is False:
+                    rec.interrupt("The integration was stopped by the `progress` callback", t)
+                    return
+        finally:
+            self.t, self.nrej, self.attempts = t, nrej, naccpt + nrej + extra

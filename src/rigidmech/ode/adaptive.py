@@ -39,7 +39,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
-from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
+from ._floatpath import FLOAT_PATH_MAX_N, make_pair_step
 from ._loop import (
     MAX_FACTOR,
     MIN_FACTOR,
@@ -54,6 +54,8 @@ from ._loop import (
 )
 
 __all__ = ["dopri5", "dop853", "bs32", "ExplicitPair", "PAIRS"]
+
+_new = tuple.__new__  # a StepResult without the call of its generated __new__
 
 #: Kept here for the code and the tests that read them from this module.
 CONTROL_CONSTANTS = (SAFETY, MIN_FACTOR, MAX_FACTOR, PI_KI, PI_KP, PI_ERR_FLOOR)
@@ -98,9 +100,9 @@ class ExplicitPair:
         self.dense = dense
 
     def kernel(self, n):
-        """The plain-float step for `n` equations (generated once by the shared generator)."""
-        return cached(("rk-pair", self.name, n), lambda: make_unrolled_stepper(
-            self.name, self.A, self.b, self.c, self.s, self.errors, n, norm=True))
+        """The plain-float step for `n` equations, ``bind(fun, rtol, atols) -> step`` (generated
+        once by the shared generator)."""
+        return make_pair_step(self.name, self.A, self.b, self.c, self.s, self.errors, n)
 
     def error_from_squares(self, h_abs, sq, n):
         """The error norm from the weighted sums of squares `sq` of the error vectors."""
@@ -112,37 +114,27 @@ class ExplicitPair:
 
 
 class _FloatStepper:
-    """A pair on lists of plain floats (one small trajectory): the generated kernel."""
+    """A pair on lists of plain floats (one small trajectory): its attempt is the generated
+    step itself, bound to `fun` and the tolerances (:func:`make_pair_step`)."""
 
     def __init__(self, pair, fun, n, rtol, atol):
-        self.pair, self.fun, self.n, self.rtol = pair, fun, n, rtol
+        self.pair, self.n = pair, n
         self.capabilities = pair.capabilities
-        self.atols = list(np.broadcast_to(np.asarray(atol, dtype=float), (n,)).tolist())
-        self.kernel = pair.kernel(n)
+        self.start_order = pair.capabilities.error_order
+        atols = list(np.broadcast_to(np.asarray(atol, dtype=float), (n,)).tolist())
+        self.attempt = pair.kernel(n)(fun, rtol, atols)
+        self.nfev_per_attempt = pair.s
         self.nfev = 0
 
     def begin(self, prob, t0, y0, f0):
-        self.prob, self.k0 = prob, f0.tolist()
-        self.start_order = self.capabilities.error_order
-        return y0.tolist()
-
-    def finite(self, step):
-        return math.isfinite(sum(step.y))
+        self.prob = prob
+        return y0.tolist(), f0.tolist()
 
     def stats(self):
         return {}
 
-    def attempt(self, t, y, h):
-        out = self.kernel(self.fun, t, y, self.k0, h, self.rtol, self.atols)
-        self.nfev += self.pair.s
-        return StepResult(out[0], out[1][-1],
-                          self.pair.error_from_squares(abs(h), out[3:], self.n), out)
-
-    def accept(self, step):
-        self.k0 = step.f
-
     def hlamb(self, h_abs, step):
-        ys, ks = step.data[2], step.data[1]
+        ks, ys = step.data
         den = sum((a - b_) ** 2 for a, b_ in zip(step.y, ys, strict=True))
         if den > 0:
             num = sum((a - b_) ** 2 for a, b_ in zip(ks[-1], ks[-2], strict=True))
@@ -152,7 +144,7 @@ class _FloatStepper:
     def dense(self, t, y, h, step):
         ya, yna = np.array(y), np.array(step.y)
         return yna, self.pair.dense(self.pair, self.prob, t, ya, yna, h,
-                                    np.array(step.data[1])), None
+                                    np.array(step.data[0])), None
 
 
 class _ArrayStepper:
@@ -170,7 +162,8 @@ class _ArrayStepper:
         self.K = np.empty((max(16, self.pair.s + 1), y0.size))
         self.K[0] = f0
         self.start_order = self.capabilities.error_order
-        return y0
+        self.nfev_per_attempt = 0
+        return y0, None
 
     def finite(self, step):
         return bool(np.isfinite(step.y).all())
@@ -178,7 +171,8 @@ class _ArrayStepper:
     def stats(self):
         return {}
 
-    def attempt(self, t, y, h):
+    def attempt(self, t, y, f, h):
+        """One attempt; `f` is unused: the derivative at `y` is kept in ``K[0]``."""
         pair, K, s = self.pair, self.K, self.pair.s
         dot, fun, prob, flat, c = np.dot, self.fun, self.prob, self.flat, pair.c
         hA = h * pair.Ab  # one product for all the stages of this attempt

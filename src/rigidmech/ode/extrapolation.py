@@ -104,7 +104,7 @@ class _GbsStepper:
         self.k = int(np.clip(int(-math.log10(rtol + 1e-40) * 0.6 + 1.5) - 1, 1, k_max - 1))
         self.start_order = 2 * self.k - 1  # ODEX's first order, for the starting step
         self.orders = {}
-        self.nfev = 0
+        self.nfev = self.nfev_per_attempt = 0
         self.controller = self
 
     def begin(self, prob, t0, y0, f0):
@@ -115,9 +115,9 @@ class _GbsStepper:
         if self.floats:
             self.atols = np.broadcast_to(np.asarray(self.atol, dtype=float), (n,)).tolist()
             self.midpoint = make_midpoint(n)
-        return y0
+        return y0, f0
 
-    def attempt(self, t, y, h):
+    def attempt(self, t, y, f, h):
         """Columns ``0 .. k + 1`` at most, stopped as soon as one converges (error <= 1) or
         the convergence monitor gives up; the error returned is 0.5 (accept) or 2 (reject)."""
         k, k_max, nseq = self.k, self.k_max, self.nseq

@@ -162,7 +162,7 @@ class _RadauStepper:
         self.start_order = 3
         self.lin = _Linear(shape)
         self.newton_tol = max(10 * _EPS / rtol, min(0.03, rtol**0.5))
-        self.njev = self.nlu = self.nfev = 0
+        self.njev = self.nlu = self.nfev = self.nfev_per_attempt = 0
         self.h_abs_old = self.err_old = self.h_next = None
         self.Minv_r = self.Minv_c = self.Zprev = self.h_prev = None
         self.rejected = False  # an error rejection in this step (not a Newton failure)
@@ -178,7 +178,7 @@ class _RadauStepper:
         self.prob, self.f, self.eye = prob, f0, np.eye(self.lin.n)
         self.F = np.empty((3, y0.size))
         self.J = self._jacobian(t0, y0, f0)
-        return y0
+        return y0, f0
 
     def _predictor(self, h, size):
         if self.Zprev is None:
@@ -203,7 +203,7 @@ class _RadauStepper:
             self.J = self._jacobian(t, y, self.f)
             self.Minv_r = self.Minv_c = None
 
-    def attempt(self, t, y, h):
+    def attempt(self, t, y, f, h):
         if self.h_next is not None and self.h_next > self.max_step:  # clamped by max_step
             self.h_abs_old = self.err_old = None
         converged, n_iter, Z, rate = self._newton(t, y, h)

@@ -360,19 +360,19 @@ class _RknStepper:
         self.per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end call
         self.inv2d = 1.0 / (2 * d)
         self.a = qva[2]
-        self.nfev = 0
+        self.nfev = self.nfev_per_attempt = 0
 
     def begin(self, prob, t0, y0, f0):
-        return y0.tolist() if self.unrolled else y0.copy()
+        return (y0.tolist() if self.unrolled else y0.copy()), self.a
 
     def _split(self, y):
         d = self.d
         return y[:d], y[d:]
 
-    def attempt(self, t, y, h):
+    def attempt(self, t, y, a, h):
         q, v = self._split(y)
-        q1, v1, a1, err2 = self.kern(self.fun, t, q, v, self.a, h, self.rtol, self.aq,
-                                     self.av, True)
+        q1, v1, a1, err2 = self.kern(self.fun, t, q, v, a, h, self.rtol, self.aq, self.av,
+                                     True)
         self.nfev += self.per_step
         y1 = (q1 + v1) if self.unrolled else np.concatenate([q1, v1])
         return StepResult(y1, a1, math.sqrt(err2 * self.inv2d), (h, q, v, q1, v1))
