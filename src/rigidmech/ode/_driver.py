@@ -276,14 +276,15 @@ class SampleRecorder(Recorder):
     ([0.25, 1.0], [[1.25, 2.0]], 1)
     """
 
-    __slots__ = ("_samples", "_i", "_sign", "_t_prev", "_y_prev", "_last", "_at_steps",
-                 "_nsteps", "_queue")
+    __slots__ = ("_samples", "_next", "_n", "_i", "_sign", "_t_prev", "_y_prev",
+                 "_last", "_at_steps", "_nsteps", "_queue")
 
     def __init__(self, t0, y0, shape, events, t_eval, form="power", at_steps=False):
         super().__init__(t0, y0, shape, False, events, form)
         self._samples = np.asarray(t_eval, dtype=float)
         n = len(self._samples)
         self._sign = -1.0 if n >= 2 and self._samples[-1] < self._samples[0] else 1.0
+        self._next, self._n = self._samples.tolist(), n
         self._i = 0
         self._t_prev, self._y_prev = t0, self.ys[0]
         self._last = None  # [t_old, t_new, y_old, coeffs] of the last accepted step
@@ -313,39 +314,44 @@ class SampleRecorder(Recorder):
 
     def _poly(self):
         t_old, t_new, y_old, _ = self._last
+        y_old = np.asarray(y_old, dtype=float).reshape(-1)
         return DenseSolution([t_old, t_new], y_old[None], self._coeffs()[None], self.form,
                              self.shape)
 
     def _take(self, t_hi, inclusive):
         """Queue the samples before `t_hi` (and at it if `inclusive`) on the last step."""
-        samples, sign = self._samples, self._sign
-        j = self._i
-        while j < len(samples) and (sign * (samples[j] - t_hi) < 0 or (
-                inclusive and samples[j] == t_hi)):
+        i, sign, nxt, n = self._i, self._sign, self._next, self._n
+        j = i  # the samples as floats: a few per step at most, a scan beats a search
+        while j < n and (sign * (nxt[j] - t_hi) < 0 or (inclusive and nxt[j] == t_hi)):
             j += 1
         if j > self._i:
-            t_old, t_new, y_old, _ = self._last
-            step = (t_old, t_new - t_old, y_old, self._coeffs())
-            self._queue.extend((samples[k], step) for k in range(self._i, j))
+            t_old, t_new, y_old, coeffs = self._last
+            if type(y_old) is not np.ndarray:  # a list of floats (first step of the float path)
+                y_old = np.asarray(y_old, dtype=float).reshape(-1)
+            if callable(coeffs):
+                coeffs = self._coeffs()
+            self._queue.append((t_old, t_new - t_old, y_old, coeffs, self._i, j))
             self._i = j
             if len(self._queue) >= 256:
                 self._flush()
 
     def _flush(self):
         """Evaluate the queued samples at once (the same arithmetic as the dense output)."""
-        if not self._queue:
-            return
         q = self._queue
-        t = np.array([s for s, _ in q])
-        values = evaluate(t, np.array([st[0] for _, st in q]), np.array([st[1] for _, st in q]),
-                          np.array([st[2] for _, st in q]), np.array([st[3] for _, st in q]),
+        if not q:
+            return
+        lo, hi = q[0][4], q[-1][5]
+        idx = np.repeat(np.arange(len(q)), [e[5] - e[4] for e in q])
+        t = self._samples[lo:hi]
+        values = evaluate(t, np.array([e[0] for e in q])[idx], np.array([e[1] for e in q])[idx],
+                          np.array([e[2] for e in q])[idx], np.array([e[3] for e in q])[idx],
                           self.form)
         self.ts.extend(t.tolist())
         self.ys.extend(values)
         self._queue = []
 
     def accept(self, t_new, y_new, coeffs=None, exact=None):
-        t_old, y_old = self._t_prev, np.asarray(self._y_prev, dtype=float).reshape(-1)
+        t_old, y_old = self._t_prev, self._y_prev
         self._nsteps += 1
         self._last = [t_old, t_new, y_old, coeffs]
         stop = self.events is not None and self.events.check(
