@@ -92,8 +92,8 @@ def test_progress_must_be_callable():
 
 
 def test_progress_is_refused_by_methods_not_on_the_loop():
-    with pytest.raises(ArgumentError, match=r"`progress` is not an option of method 'radau'"):
-        ode.solve(osc, (0.0, 1.0), [1.0, 0.0], method="radau", progress=print)
+    with pytest.raises(ArgumentError, match=r"`progress` is not an option of method 'adams'"):
+        ode.solve(osc, (0.0, 1.0), [1.0, 0.0], method="adams", progress=print)
 
 
 def test_controller_never_grows_after_a_rejection_and_shrinks_on_nan():
@@ -131,3 +131,10 @@ def test_t_eval_memory_is_proportional_to_the_samples():
     samples = peak(t_eval=np.linspace(0.0, 100.0, 100))
     steps = peak()
     assert samples < 200_000 and steps > 1_500_000
+
+
+@pytest.mark.parametrize("method", ["gbs", "radau", "bs32"])
+def test_every_method_on_the_loop_takes_progress(method):
+    r = ode.solve(osc, (0.0, 10.0), [1.0, 0.0], method=method, rtol=1e-6,
+                  progress=lambda t: t < 2.0)
+    assert r.status == 2 and 2.0 <= r.t[-1] < 10.0

@@ -51,10 +51,26 @@ from typing import NamedTuple
 
 import numpy as np
 
+from rigidmech._core.errors import ArgumentError
+
 from ._driver import Problem, Recorder, SampleRecorder, initial_step
 from ._warnings import stiffness_count
 
-__all__ = ["Capabilities", "StepResult", "Controller", "integrate"]
+__all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress"]
+
+
+def check_progress(progress):
+    """`progress` checked once for every method on the loop: None or ``progress(t)``.
+
+    Examples
+    --------
+    >>> check_progress(None) is None
+    True
+    """
+    if progress is not None and not callable(progress):
+        raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
+                            f"{progress!r}.")
+    return progress
 
 SAFETY = 0.9
 MIN_FACTOR = 0.2

@@ -50,6 +50,7 @@ from ._loop import (
     Capabilities,
     Run,
     StepResult,
+    check_progress,
     integrate,
 )
 
@@ -297,9 +298,7 @@ def _solve_pair(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_
                 dense_output, events, nstiff, step_control, progress, t_eval):
     nstiff = _check_nstiff(nstiff)
     step_control = _check_step_control(step_control)
-    if progress is not None and not callable(progress):
-        raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
-                            f"{progress!r}.")
+    progress = check_progress(progress)
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
               events, nstiff, step_control, progress, None, t_eval)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
@@ -332,6 +331,9 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     validates the arguments; see its parameters. `nstiff` (int, default 1000) sets how often
     the stiffness test runs; 0 disables it. `step_control` is ``"i"`` (default: the integral
     controller of scipy and Hairer's codes) or ``"pi"`` (Gustafsson's PI controller).
+    `progress` (callable ``progress(t)``, optional) is called after every accepted step; the
+    run stops, with status 2 and the steps made so far, when it returns False (Ctrl-C does
+    the same).
 
     Returns
     -------

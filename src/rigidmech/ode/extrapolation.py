@@ -40,7 +40,7 @@ from . import _registry
 from ._dense import hermite_coefficients
 from ._driver import Stops
 from ._floatpath import FLOAT_PATH_MAX_N, make_midpoint
-from ._loop import Capabilities, Run, StepResult, integrate
+from ._loop import Capabilities, Run, StepResult, check_progress, integrate
 
 __all__ = ["gbs"]
 
@@ -50,7 +50,7 @@ _FAC_MIN, _FAC_MAX = 0.02, 4.0
 
 def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
         max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, k_max=8,
-        t_eval=None):
+        t_eval=None, progress=None):
     """Gragg-Bulirsch-Stoer extrapolation with adaptive order and step.
 
     Called through :func:`rigidmech.ode.solve` (``method="gbs"``), which validates the common
@@ -63,7 +63,7 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     the times of `t_eval` (passed by :func:`~rigidmech.ode.solve`, which returns the values
     of those steps), and each event time located on the interpolant is refined on the
     extrapolated solution itself (one extrapolation from the step's start to each trial
-    time, at the step's order).
+    time, at the step's order). `progress` as for :func:`~rigidmech.ode.adaptive.dopri5`.
 
     Returns
     -------
@@ -81,7 +81,8 @@ def gbs(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return _gbs(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                     max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                    events=events, k_max=k_max, t_eval=t_eval)
+                    events=events, k_max=k_max, t_eval=t_eval,
+                    progress=check_progress(progress))
 
 
 class _GbsStepper:
@@ -237,7 +238,7 @@ _CAPS = Capabilities("gbs", error_order=1, order=2, dense_order=3)
 
 
 def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output, events,
-         k_max, t_eval):
+         k_max, t_eval, progress=None):
     if isinstance(k_max, bool) or not isinstance(k_max, int | np.integer) or not (
         3 <= k_max <= 12
     ):
@@ -251,7 +252,7 @@ def _gbs(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_
         floats = type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64
     stepper = _GbsStepper(fun, shape, rtol, atol, int(k_max), floats)
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
-              events, 0, "i", None, Stops(t_eval, t_span) if t_eval is not None else None,
+              events, 0, "i", progress, Stops(t_eval, t_span) if t_eval is not None else None,
               t_eval)
     return integrate(stepper, run, f0)
 

@@ -28,7 +28,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
-from ._loop import Capabilities, Run, StepResult, integrate
+from ._loop import Capabilities, Run, StepResult, check_progress, integrate
 
 __all__ = ["radau"]
 
@@ -115,13 +115,15 @@ def _user_jac(jac, lin, t, y, shape):
 
 
 def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-          max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, jac=None):
+          max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, jac=None,
+          progress=None):
     """Radau IIA (order 5) with error control and dense output, for stiff systems.
 
     Called through :func:`rigidmech.ode.solve` (``method="radau"``), which validates the
     common arguments. `jac` is an optional callable ``jac(t, y)`` returning ``df/dy`` of
     shape ``(n, n)`` (``(batch, n, n)`` for a batch); finite differences are used otherwise.
     ``stats`` reports ``njev`` (Jacobians) and ``nlu`` (factorised iteration matrices).
+    `progress` as for :func:`~rigidmech.ode.adaptive.dopri5`.
 
     Returns
     -------
@@ -141,7 +143,7 @@ def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     if jac is not None and not callable(jac):
         raise ArgumentTypeError(f"`jac` must be a callable jac(t, y) or None; got {jac!r}.")
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
-              events, 0)
+              events, 0, "i", check_progress(progress))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return integrate(_RadauStepper(jac, y0.shape, rtol, atol, max_step), run)
 
