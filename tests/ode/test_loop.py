@@ -138,3 +138,15 @@ def test_every_method_on_the_loop_takes_progress(method):
     r = ode.solve(osc, (0.0, 10.0), [1.0, 0.0], method=method, rtol=1e-6,
                   progress=lambda t: t < 2.0)
     assert r.status == 2 and 2.0 <= r.t[-1] < 10.0
+
+
+@pytest.mark.parametrize("method", ["dopri5", "dop853", "bs32", "gbs"])
+def test_a_non_finite_right_hand_side_is_named_not_called_underflow_alone(method):
+    # y' = 1 while y < 1.5, nan beyond: the run stops near t = 1.5 and says why
+    def f(t, y):
+        return np.array([1.0 if y[0] < 1.5 else np.nan])
+
+    r = ode.solve(f, (0.0, 3.0), [0.0], method=method, rtol=1e-6)
+    assert r.status == -1
+    assert "The right-hand side returned non-finite values (nan or inf)" in r.message
+    assert r.t[-1] < 1.5  # the steps kept are those before the first nan

@@ -177,6 +177,15 @@ class _Stiffness:
                 self.name, self.border, hlamb, t_new, self.iasti, self.nonsti, self.warned)
 
 
+def _underflow_reason(err):
+    """Why the step fell below the resolution of t: a non-finite error estimate means that
+    the right-hand side returned nan or inf in the attempted steps."""
+    if err == err and err != math.inf:
+        return "The step size fell below the resolution of t (step size underflow)"
+    return ("The right-hand side returned non-finite values (nan or inf) in every attempted "
+            "step down to the resolution of t (step size underflow), from the state")
+
+
 class Run(NamedTuple):
     """The settings of one run of :func:`integrate` (already validated by ``solve``)."""
 
@@ -288,12 +297,14 @@ class _Loop:
                     rejected = True
                     nrej += 1
                 if not accepted:
-                    rec.fail("The step size fell below the resolution of t (step size "
-                             "underflow)", t, y)
+                    rec.fail(_underflow_reason(err), t, y)
                     return
                 if not (isfinite(sum(y_new)) if finite is None else finite(step)):
                     extra = 1
-                    rec.fail("The state became non-finite", t_new, y_new)
+                    state_ok = bool(np.isfinite(np.asarray(y_new, dtype=float)).all())
+                    rec.fail("The right-hand side returned non-finite values (nan or inf) at "
+                             "the new state" if state_ok else "The state became non-finite",
+                             t_new, y_new)
                     return
                 naccpt += 1
                 if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline
