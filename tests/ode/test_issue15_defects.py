@@ -121,12 +121,14 @@ def _robertson(t, y):
 
 
 def test_radau_robertson_costs_about_what_scipy_pays():
-    # scipy's Radau (the same method, scaled finite differences) as the yardstick
-    kw = dict(rtol=1e-6, atol=1e-10)
-    ref = solve_ivp(_robertson, (0.0, 1e5), [1.0, 0.0, 0.0], method="Radau", **kw)
-    got = ode.solve(_robertson, (0.0, 1e5), [1.0, 0.0, 0.0], method="radau", **kw)
+    # scipy's Radau (the same method, scaled finite differences) as the yardstick, on the
+    # classical span [0, 1e11]; before the fix: 7,360 evaluations and 381 rejections against
+    # scipy's 2,484 (its steps: 316)
+    kw = dict(rtol=1e-6, atol=1e-9)
+    ref = solve_ivp(_robertson, (0.0, 1e11), [1.0, 0.0, 0.0], method="Radau", **kw)
+    got = ode.solve(_robertson, (0.0, 1e11), [1.0, 0.0, 0.0], method="radau", **kw)
     assert got.status == 0
-    assert got.nfev <= 1.5 * ref.nfev
+    assert got.nfev <= 1.2 * ref.nfev and got.nrejected < 20
     assert_allclose(got.y[:, -1], ref.y[:, -1], rtol=1e-3, atol=1e-9)
 
 
