@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["DenseSolution", "hermite_coefficients"]
+__all__ = ["DenseSolution", "hermite_coefficients", "evaluate"]
 
 
 def hermite_coefficients(y0, y1, f0, f1, h):
@@ -112,22 +112,7 @@ class DenseSolution:
         idx = np.searchsorted(s * self._t, s * t, side="right") - 1
         np.clip(idx, 0, m - 1, out=idx)
         t0 = self._t[idx]
-        h = self._t[idx + 1] - t0
-        x = ((t - t0) / h)[:, None]
-        c = self._c[idx]  # (k, p, N)
-        p = c.shape[1]
-        if self._form == "power":
-            acc = c[:, p - 1] * x
-            for j in range(p - 2, -1, -1):
-                acc += c[:, j]
-                acc *= x
-        else:
-            acc = np.zeros_like(c[:, 0])
-            for j in range(p - 1, -1, -1):
-                acc += c[:, j]
-                acc *= x if j % 2 == 0 else (1.0 - x)
-        acc += self._y[idx]
-        return acc
+        return evaluate(t, t0, self._t[idx + 1] - t0, self._y[idx], self._c[idx], self._form)
 
     def __call__(self, t):
         t_arr = np.asarray(t, dtype=float)
@@ -137,3 +122,33 @@ class DenseSolution:
         k = flat.shape[0]
         out = flat.reshape((k,) + self._shape)
         return np.ascontiguousarray(np.moveaxis(out, 0, 1))
+
+
+def evaluate(t, t0, h, y0, c, form):
+    """The polynomials of the steps at the times `t` (one step per time: its start `t0`,
+    length `h`, state `y0` (k, N) and coefficients `c` (k, p, N)); shape (k, N).
+
+    The one evaluation of the dense output (:class:`DenseSolution` and the recorders of
+    samples use it, so that both give the same numbers).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> evaluate(np.array([0.5]), np.array([0.0]), np.array([1.0]), np.array([[1.0]]),
+    ...          np.array([[[2.0]]]), "power").tolist()  # y = 1 + 2 x
+    [[2.0]]
+    """
+    x = ((t - t0) / h)[:, None]
+    p = c.shape[1]
+    if form == "power":
+        acc = c[:, p - 1] * x
+        for j in range(p - 2, -1, -1):
+            acc += c[:, j]
+            acc *= x
+    else:
+        acc = np.zeros_like(c[:, 0])
+        for j in range(p - 1, -1, -1):
+            acc += c[:, j]
+            acc *= x if j % 2 == 0 else (1.0 - x)
+    acc += y0
+    return acc
