@@ -1,6 +1,6 @@
 """Work-precision of rigidmech.ode against scipy.integrate.solve_ivp, side by side in one run.
 
-Problems (rigidmech.ode.problems, book ch. 27): simple pendulum theta0 = 170 deg over 10
+Problems (rigidmech.testing.problems, book ch. 27): simple pendulum theta0 = 170 deg over 10
 periods, Kepler e = 0.6 and e = 0.9 over 10 orbits, damped forced oscillator (omega0 = 10,
 zeta = 0.05). Both libraries get the same ``fun`` (the problem's); the methods for
 ``q'' = a(t, q)`` (yoshida4/6, the Runge-Kutta-Nystrom pairs rkn64 and rkn1210, on the pendulum
@@ -34,8 +34,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from rigidmech import ode
-from rigidmech.ode import problems as P
 from rigidmech.ode import rkn
+from rigidmech.testing import problems as P
 
 LEVELS = (1e-6, 1e-8, 1e-10, 1e-11)
 #: our adaptive methods: name shown -> (method, options)
@@ -48,7 +48,7 @@ OURS_ADAPTIVE = {
     "radau": ("radau", {}),
 }
 #: our Runge-Kutta-Nystrom pairs (separable problems only: q'' = a(t, q)), called directly
-#: because ode.solve runs "second_order" methods with a fixed step
+#: (ode.solve runs them adaptively too, at the cost of one more call of fun to check its shape)
 OURS_RKN = {"rkn64": rkn.rkn64, "rkn1210": rkn.rkn1210}
 SCIPY = ("RK45", "DOP853", "LSODA", "Radau")
 SLOW_RUN = 0.5  # seconds: a run slower than this is timed once

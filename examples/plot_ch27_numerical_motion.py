@@ -4,7 +4,7 @@ Numerical motion: pendulum, planet, satellite (ch. 27)
 
 The book's chapter 27 integrates the equations of motion step by step. We redo its three cases
 with :mod:`rigidmech.ode` and compare with the exact solutions of
-:mod:`rigidmech.ode.problems`: the simple pendulum of large amplitude (27.1.3), a planet about
+:mod:`rigidmech.testing.problems`: the simple pendulum of large amplitude (27.1.3), a planet about
 the Sun (27.3.1) and a satellite about the Earth (27.3.2). A small work-precision plot closes
 the tour.
 """
@@ -18,7 +18,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from rigidmech import ode
-from rigidmech.ode import problems
+from rigidmech.testing import problems
 
 pend = problems.pendulum(170.0, omega0=1.0, periods=2)
 sol = ode.solve(pend.fun, pend.t_span, pend.y0, method="dop853", rtol=1e-10, atol=1e-13,

@@ -20,8 +20,8 @@ from scipy.integrate import solve_ivp
 from rigidmech import ode
 from rigidmech._core.errors import ArgumentError
 from rigidmech.ode import adams as A
-from rigidmech.ode import problems as P
 from rigidmech.ode.multistep import adams_gamma
+from rigidmech.testing import problems as P
 
 
 @pytest.mark.parametrize(

@@ -9,7 +9,7 @@ from numpy.testing import assert_allclose
 from rigidmech import ode
 from rigidmech._core.errors import ArgumentError
 from rigidmech.ode import geometric as G
-from rigidmech.ode.problems import kepler, pendulum
+from rigidmech.testing.problems import kepler, pendulum
 
 # step counts per orbit in the asymptotic range (checked: the error ratio per halving of h is
 # 2**order to 1 %), above the rounding floor of about 1e-12 for Kepler e = 0.6

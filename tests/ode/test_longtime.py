@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from rigidmech import ode
-from rigidmech.ode.problems import kepler
+from rigidmech.testing.problems import kepler
 
 ORBITS = 200
 WINDOWS = 20

@@ -11,7 +11,7 @@ from numpy.testing import assert_allclose
 from rigidmech import ode
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from rigidmech.ode import multistep as M
-from rigidmech.ode.problems import damped_oscillator
+from rigidmech.testing.problems import damped_oscillator
 
 # Classical tables (Hairer-Norsett-Wanner I, III.1, Tables 1.1 and 1.2; the book's 26.3.4).
 AB_TABLE = {

@@ -8,7 +8,7 @@ from numpy.testing import assert_allclose
 from rigidmech import ode
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from rigidmech.ode import rkn
-from rigidmech.ode.problems import kepler, pendulum
+from rigidmech.testing.problems import kepler, pendulum
 
 PAIRS = [rkn.DPRKN6, rkn.DPRKN12]
 #: DPRKN6 is exact in Q(sqrt(8581)); the published DPRKN12 rationals are ~50-digit
@@ -248,20 +248,29 @@ def test_max_steps_status():
     assert r.status == -1 and "max_steps" in r.message
 
 
+def test_zero_length_span_returns_y0_with_or_without_step():
+    for kw in ({}, {"step": 0.1}):
+        r = rkn.rkn64(lambda t, q: -q, (1.0, 1.0), [1.0, 0.0], **kw)
+        assert r.status == 0 and r.t.tolist() == [1.0] and r.y[:, 0].tolist() == [1.0, 0.0]
+
+
 @pytest.mark.parametrize(("kwargs", "exc", "match"), [
     ({"fun": 3}, ArgumentTypeError, "`fun` must be callable"),
-    ({"t_span": (0.0, 0.0)}, ArgumentError, "`t_span` must be two distinct finite times"),
-    ({"t_span": "ab"}, ArgumentError, "`t_span` must be a pair of floats"),
-    ({"y0": [1.0, 0.0, 2.0]}, ArgumentError, "`y0` must be a 1-D"),
+    # the rules and messages of ode.solve (issue 15: one validation for every entry point)
+    ({"t_span": (0.0, np.inf)}, ArgumentError, "`t_span` must hold finite times"),
+    ({"t_span": (1.0,)}, ArgumentError, "`t_span` must be a pair"),
+    ({"t_span": "ab"}, ArgumentTypeError, r"`t_span\[0\]` must be a real number"),
+    ({"y0": [1.0, 0.0, 2.0]}, ArgumentError, r"`y0` must be \[q0, v0\] of even length"),
     ({"y0": [np.nan, 0.0]}, ArgumentError, "`y0` must be finite"),
-    ({"rtol": -1.0}, ArgumentError, "`rtol` must be a finite float >= 0"),
-    ({"atol": [1.0, 2.0, 3.0]}, ArgumentError, r"`atol` must be a float >= 0 or an array"),
-    ({"rtol": 0.0, "atol": 0.0}, ArgumentError, "must not both be 0"),
+    ({"rtol": -1.0}, ArgumentError, "`rtol` must be a finite number > 0"),
+    ({"atol": [1.0, 2.0, 3.0]}, ArgumentError, r"`atol` must be a number or an array of shape"),
+    ({"rtol": 0.0, "atol": 0.0}, ArgumentError, "`rtol` must be a finite number > 0; got 0"),
     ({"max_step": 0.0}, ArgumentError, "`max_step` must be > 0"),
     ({"max_steps": 0}, ArgumentError, "`max_steps` must be an int >= 1"),
     ({"step": -0.1}, ArgumentError, "`step` must be a finite number > 0"),
     ({"step": 1e-6, "max_steps": 10}, ArgumentError, "needs .* steps"),
-    ({"fun": lambda t, q: np.zeros(3)}, ArgumentError, r"acceleration of shape \(1,\)"),
+    ({"fun": lambda t, q: np.zeros(3)}, ArgumentError,
+     r"`fun\(t0, y0\)` must return an array of the shape of its `y` argument, \(1,\)"),
 ])
 def test_errors(kwargs, exc, match):
     args = {"fun": lambda t, q: -q, "t_span": (0.0, 1.0), "y0": [1.0, 0.0]}

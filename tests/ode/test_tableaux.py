@@ -39,7 +39,7 @@ def test_claimed_order_holds_and_next_order_fails(tab):
     assert np.max(np.abs(tab.order_residuals(tab.order + 1))) > 1e-6
 
 
-@pytest.mark.parametrize("tab", [T.DOPRI5, T.DOP853], ids=["dopri5", "dop853"])
+@pytest.mark.parametrize("tab", [T.DOPRI5, T.DOP853, T.BS32], ids=["dopri5", "dop853", "bs32"])
 def test_embedded_weights_have_their_order(tab):
     res = tab.order_residuals(tab.order_embedded, tab.b_embedded)
     assert np.max(np.abs(res)) < TOL

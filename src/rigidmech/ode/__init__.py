@@ -7,7 +7,7 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * fixed step: ``"euler"``, ``"heun"``, ``"midpoint"``, ``"rk4"``, ``"rk38"``, or any
   :class:`~rigidmech.ode.tableaux.ButcherTableau` (ch. 26.2);
 * adaptive, with dense output, events and stiffness detection: ``"dopri5"`` (alias
-  ``"rk45"``) and ``"dop853"``;
+  ``"rk45"``) and ``"dop853"``; and ``"bs32"`` (Bogacki-Shampine 3(2));
 * extrapolation (Gragg-Bulirsch-Stoer, the book's Romberg idea, ch. 26.2.3): ``"gbs"``;
 * multistep, adaptive in order and step (Adams PECE on backward differences, ch. 26.3):
   ``"adams"``;
@@ -54,5 +54,5 @@ def __getattr__(name):
 # --- methods: importing a module registers its methods with rigidmech.ode._registry ---------
 from . import adaptive, extrapolation, radau, runge_kutta  # noqa: E402, F401, I001
 # --- part B (multistep, geometric) adds its import line here ----------------------------------
-from . import geometric, multistep, problems  # noqa: E402, F401, I001
+from . import geometric, multistep  # noqa: E402, F401, I001
 from . import adams, rkn  # noqa: E402, F401, I001

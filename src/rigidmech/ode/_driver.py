@@ -14,7 +14,54 @@ import numpy as np
 from ._dense import DenseSolution
 from ._result import OdeResult
 
-__all__ = ["Problem", "Recorder", "initial_step", "fail_message"]
+__all__ = ["Problem", "Recorder", "SampleRecorder", "Stops", "initial_step", "fail_message",
+           "flat_tolerance"]
+
+
+class Stops:
+    """Times the steps must land on (``t_eval`` of a method sampled at its steps), in order.
+
+    Examples
+    --------
+    >>> s = Stops([0.5, 1.0, 1.5], (0.0, 2.0))
+    >>> s.after(0.0), s.after(0.5), s.after(1.7)
+    (0.5, 1.0, 2.0)
+    """
+
+    __slots__ = ("_times", "_i", "_end", "_sign")
+
+    def __init__(self, t_eval, t_span):
+        self._times = [] if t_eval is None else [float(v) for v in t_eval]
+        self._i = 0
+        self._end = float(t_span[1])
+        self._sign = 1.0 if t_span[1] >= t_span[0] else -1.0
+
+    def after(self, t):
+        """The first stop strictly beyond `t` in the direction of integration, else the end."""
+        times, sign = self._times, self._sign
+        while self._i < len(times) and sign * (times[self._i] - t) <= 0:
+            self._i += 1
+        return times[self._i] if self._i < len(times) else self._end
+
+
+def flat_tolerance(atol, shape):
+    """`atol` as a fresh flat array of ``prod(shape)`` floats.
+
+    `atol` is a number, an array of the flat size (as :func:`~rigidmech.ode.solve` passes it),
+    an array of shape ``(n,)`` (one tolerance per component, shared by a batch) or of `shape`.
+
+    Examples
+    --------
+    >>> flat_tolerance([1.0, 2.0], (2, 3)).tolist()
+    [1.0, 1.0, 1.0, 2.0, 2.0, 2.0]
+    """
+    a = np.asarray(atol, dtype=float)
+    size = math.prod(shape)
+    if a.size == size:
+        return a.reshape(-1).copy()
+    if a.ndim == 1 and len(shape) == 2:
+        a = a[:, None]
+    return np.broadcast_to(a, shape).reshape(-1).copy()
 
 
 class Problem:
@@ -41,13 +88,12 @@ class Problem:
     (1.0, 0)
     """
 
-    __slots__ = ("fun", "shape", "batch", "nfev", "flat")
+    __slots__ = ("fun", "shape", "batch", "nfev")
 
     def __init__(self, fun, shape):
         self.fun = fun
         self.shape = tuple(shape)
         self.batch = len(self.shape) == 2
-        self.flat = not self.batch
         self.nfev = 0
 
     def __call__(self, t, y, out):
@@ -59,13 +105,6 @@ class Problem:
         else:
             out[...] = self.fun(t, y)
         return out
-
-    def sumsq(self, x):
-        """Sum of squares of `x`: a float, or one per trajectory of a batch."""
-        if self.batch:
-            x = x.reshape(self.shape)
-            return np.einsum("ij,ij->j", x, x)
-        return float(np.dot(x, x))
 
     def norm(self, x):
         """Weighted RMS norm of an already scaled vector `x` (max over a batch)."""
@@ -124,7 +163,7 @@ class Recorder:
         Form of the dense coefficients (see :class:`DenseSolution`).
     """
 
-    __slots__ = ("ts", "ys", "cs", "shape", "dense", "events", "form", "status", "message",
+    __slots__ = ("ts", "ys", "cs", "shape", "events", "form", "status", "message",
                  "_last_full_end")
 
     def __init__(self, t0, y0, shape, dense, events, form="power"):
@@ -132,20 +171,20 @@ class Recorder:
         self.ys = [y0.copy()]
         self.cs = [] if dense else None
         self.shape = shape
-        self.dense = dense
         self.events = events
         self.form = form
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
 
-    def accept(self, t_new, y_new, coeffs=None):
+    def accept(self, t_new, y_new, coeffs=None, exact=None):
         """Record one accepted step; return True if a terminal event fired.
 
         `y_new` is kept as it is: the integrators pass a fresh array that they never modify.
 
         `coeffs` holds the dense coefficients of the step, or a zero-argument callable
         computing them (called only if they are needed: dense output, or a sign change of an
-        event function).
+        event function). `exact`, if given, is ``s -> y(s)`` inside the step as accurate as the
+        step (for a method whose interpolant is less so): event times are refined on it.
         """
         t_old = self.ts[-1]
         y_old = self.ys[-1]
@@ -165,7 +204,7 @@ class Recorder:
                                      self.shape)
                 return step(t)
 
-            if self.events.check(t_old, t_new, y_new.reshape(self.shape), interp):
+            if self.events.check(t_old, t_new, y_new.reshape(self.shape), interp, exact):
                 if callable(box[0]):
                     box[0] = box[0]()
                 if self.cs is not None:
@@ -182,6 +221,17 @@ class Recorder:
         """Mark the integration as failed (status -1) at time `t`, state `y`."""
         self.status = -1
         self.message = fail_message(reason, t, y, self.shape)
+
+    @property
+    def needs_dense(self):
+        """Whether the steps' dense coefficients are needed (dense output or events)."""
+        return self.cs is not None or self.events is not None
+
+    def interrupt(self, reason, t):
+        """Mark the integration as stopped early on request (status 2) at time `t`; what was
+        computed so far is kept."""
+        self.status = 2
+        self.message = f"{reason} at t = {float(t)!r}; the result holds the steps made so far."
 
     def result(self, method, nfev, nrejected, stats=None):
         """Build the :class:`OdeResult` (fresh arrays, user shapes)."""
@@ -202,4 +252,108 @@ class Recorder:
             t_events=ev.t_events if ev is not None else [],
             y_events=ev.y_events if ev is not None else [],
             stats=dict(stats or {}),
+        )
+
+
+class SampleRecorder(Recorder):
+    """A :class:`Recorder` that keeps only the states at `t_eval`: memory proportional to the
+    samples asked for, not to the number of steps.
+
+    Each sample is evaluated on the dense polynomial of the step that contains it, as the
+    full dense output would (a sample at a step's end belongs to the next step, the last ones
+    to the last step), so the numbers are the same as with full recording. With
+    ``at_steps=True`` the steps land on the samples (see :class:`Stops`) and the samples are
+    the steps' own states.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> rec = SampleRecorder(0.0, np.array([1.0]), (1,), None, [0.25, 1.0])
+    >>> rec.accept(1.0, np.array([2.0]), np.array([[1.0]]))  # y = 1 + x on the step
+    False
+    >>> r = rec.result("demo", 1, 0)
+    >>> r.t.tolist(), r.y.tolist(), r.nsteps
+    ([0.25, 1.0], [[1.25, 2.0]], 1)
+    """
+
+    __slots__ = ("_samples", "_i", "_sign", "_t_prev", "_y_prev", "_last", "_at_steps",
+                 "_nsteps")
+
+    def __init__(self, t0, y0, shape, events, t_eval, form="power", at_steps=False):
+        super().__init__(t0, y0, shape, False, events, form)
+        self._samples = np.asarray(t_eval, dtype=float)
+        n = len(self._samples)
+        self._sign = -1.0 if n >= 2 and self._samples[-1] < self._samples[0] else 1.0
+        self._i = 0
+        self._t_prev, self._y_prev = t0, self.ys[0]
+        self._last = None  # [t_old, t_new, y_old, coeffs] of the last accepted step
+        self._at_steps = at_steps
+        self._nsteps = 0
+        self.ts, self.ys = [], []
+        if at_steps:
+            self._take_exact(t0, self._y_prev)
+
+    @property
+    def needs_dense(self):
+        return not self._at_steps or self.events is not None
+
+    def _take_exact(self, t, y):
+        samples = self._samples
+        while self._i < len(samples) and samples[self._i] == t:
+            self.ts.append(float(t))
+            self.ys.append(np.array(y, dtype=float).reshape(-1))
+            self._i += 1
+
+    def _coeffs(self):
+        last = self._last
+        if callable(last[3]):
+            last[3] = last[3]()
+        return last[3]
+
+    def _poly(self):
+        t_old, t_new, y_old, _ = self._last
+        return DenseSolution([t_old, t_new], y_old[None], self._coeffs()[None], self.form,
+                             self.shape)
+
+    def _take(self, t_hi, inclusive):
+        """The samples before `t_hi` (and at it if `inclusive`), on the last step's poly."""
+        samples, sign = self._samples, self._sign
+        j = self._i
+        while j < len(samples) and (sign * (samples[j] - t_hi) < 0 or (
+                inclusive and samples[j] == t_hi)):
+            j += 1
+        if j > self._i:
+            self.ts.extend(samples[self._i:j].tolist())
+            self.ys.extend(self._poly()._eval_flat(samples[self._i:j]))
+            self._i = j
+
+    def accept(self, t_new, y_new, coeffs=None, exact=None):
+        t_old, y_old = self._t_prev, np.asarray(self._y_prev, dtype=float).reshape(-1)
+        self._nsteps += 1
+        self._last = [t_old, t_new, y_old, coeffs]
+        stop = self.events is not None and self.events.check(
+            t_old, t_new, np.asarray(y_new).reshape(self.shape),
+            lambda t: self._poly()(t), exact)
+        t_end, y_end = (self.events.t_stop, self.events.y_stop) if stop else (t_new, y_new)
+        if self._at_steps:
+            self._take_exact(t_end, y_end)
+        else:
+            self._take(t_end, stop)
+        self._t_prev, self._y_prev = t_end, y_end
+        if stop:
+            self.status = 1
+            self.message = "A terminal event occurred."
+        return stop
+
+    def result(self, method, nfev, nrejected, stats=None):
+        if self._last is not None and not self._at_steps:
+            self._take(self._t_prev, True)  # the end (or where the run stopped)
+        t = np.array(self.ts, dtype=float)
+        Y = np.array(self.ys, dtype=float).reshape((len(t),) + self.shape)
+        ev = self.events
+        return OdeResult(
+            t=t, y=np.ascontiguousarray(np.moveaxis(Y, 0, 1)), nfev=nfev, nsteps=self._nsteps,
+            nrejected=nrejected, status=self.status, message=self.message, method=method,
+            t_events=ev.t_events if ev is not None else [],
+            y_events=ev.y_events if ev is not None else [], stats=dict(stats or {}),
         )

@@ -1,4 +1,4 @@
-"""Plain-float kernels of the explicit Runge-Kutta pairs, for small systems.
+"""The one generator of plain-float kernels of :mod:`rigidmech.ode`, for small systems.
 
 For a handful of equations, numpy's per-call overhead (about 1-3 us for a tiny ``@``) dwarfs
 the arithmetic: a step of DOP853 makes some 90 small array operations. Here the stages are
@@ -6,13 +6,21 @@ combined in plain Python floats by a function *generated once per tableau* (the 
 inlined, zero terms dropped), and ``fun`` still receives a fresh ndarray at every call. Used
 by :mod:`~rigidmech.ode.adaptive` for a single trajectory with ``n <= FLOAT_PATH_MAX_N``; the
 code is unrolled over the stages and over the components.
+
+Every generated function of the layer comes from here, through one compiler
+(:func:`compile_function`) and one cache (:func:`cached`): the explicit Runge-Kutta steps
+(:func:`make_unrolled_stepper`, fixed-step and embedded pairs, from a Butcher tableau), the
+Runge-Kutta-Nystrom steps (:func:`make_rkn_stepper`, from an RKN pair's coefficients) and
+Gragg's midpoint substeps of the extrapolation method (:func:`make_midpoint`); the Adams run
+hands its source to :func:`compile_function` and :func:`cached`.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper"]
+__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_rkn_stepper", "make_midpoint",
+           "compile_function", "cached"]
 
 #: Largest system size for which the plain-float kernel is used (measured crossover with the
 #: numpy path: about 16 equations for DOP853 on a 2-core machine).
@@ -24,11 +32,34 @@ def _combo(coeffs, names):
     return " + ".join(terms) if terms else "0.0"
 
 
+_CACHE: dict = {}
+
+
+def cached(key, build):
+    """The kernel of `key`, built once by ``build()`` (the one cache of generated code)."""
+    fn = _CACHE.get(key)
+    if fn is None:
+        fn = _CACHE[key] = build()
+    return fn
+
+
+def compile_function(lines, name, label, namespace=None):
+    """Compile the source `lines` and return its function `name` (the one ``exec`` of ode).
+
+    The namespace holds ``_arr`` (:func:`numpy.array`), ``_tolist`` and `namespace`.
+
+    Examples
+    --------
+    >>> compile_function(["def f(x):", "    return _arr([x]).tolist()"], "f", "doc")(2.0)
+    [2.0]
+    """
+    ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, **(namespace or {})}
+    exec(compile("\n".join(lines), f"<rigidmech.ode {label}>", "exec"), ns)  # noqa: S102
+    return ns[name]
+
+
 def _compile(name, lines):
-    src = "\n".join(lines)
-    namespace = {"_arr": np.array, "_tolist": np.ndarray.tolist}
-    exec(compile(src, f"<rigidmech.ode {name} float kernel>", "exec"), namespace)  # noqa: S102
-    return namespace[f"step_{name}"]
+    return compile_function(lines, f"step_{name}", f"{name} float kernel")
 
 
 def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
@@ -123,3 +154,123 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     lines.append(f"    return yn, ({', '.join(f'k{i}' for i in range(s + 1))},), {last}, "
                  f"{', '.join(outs)}")
     return _compile(f"{name}_{n}{'n' if norm else ''}", lines)
+
+
+def _rkn_source(pair, d, unrolled):
+    """Generate ``step(fun, t, q, v, k1, h, rtol, aq, av, control)``.
+
+    Returns ``(q1, v1, k_last, err2)`` where ``err2`` is the sum over the ``2 d`` components of
+    the squared scaled error (0.0 when ``control`` is false). With `unrolled`, ``q``, ``v`` and
+    the stages are lists of floats; otherwise 1-D ndarrays.
+    """
+    co = pair.floats()
+    s = pair.stages
+    dq = [x - y for x, y in zip(co["bbar"], co["bbar_hat"], strict=True)]
+    dv = [x - y for x, y in zip(co["b"], co["b_hat"], strict=True)]
+    idx = [f"[{j}]" for j in range(d)] if unrolled else [""]
+
+    def vec(fmt):
+        parts = [fmt(j) for j in idx]
+        return "[" + ", ".join(parts) + "]" if unrolled else parts[0]
+
+    def ks(i, j):
+        return [f"k{m + 1}{j}" for m in range(i)]
+
+    L = ["def step(fun, t, q, v, k1, h, rtol, aq, av, control):", "    h2 = h * h"]
+    conv = ".tolist()" if unrolled else ".copy()"
+    nk = s - 1 if pair.fsal else s  # stages entering q1 and v1 before the end-point call
+    for i in range(1, nk):
+        ci = co["c"][i]
+        row = co["abar"][i][:i]
+
+        def stage(j, i=i, ci=ci, row=row):
+            return f"q{j} + {ci!r}*h*v{j} + h2*(" + _rcombo(row, ks(i, j)) + ")"
+
+        L.append("    Q = " + vec(stage))
+        L.append(f"    k{i + 1} = _asarray(fun(t + {ci!r}*h, _arr(Q)), dtype=float){conv}")
+    wq, wv = co["bbar"][:nk], co["b"][:nk]
+    L.append("    q1 = " + vec(lambda j: f"q{j} + h*v{j} + h2*(" + _rcombo(wq, ks(nk, j)) + ")"))
+    L.append("    v1 = " + vec(lambda j: f"v{j} + h*(" + _rcombo(wv, ks(nk, j)) + ")"))
+    # the acceleration at (t + h, q1): the last stage (FSAL) or the next step's first
+    end = f"k{s}" if pair.fsal else "knext"
+    L.append(f"    {end} = _asarray(fun(t + h, _arr(q1)), dtype=float){conv}")
+    if pair.fsal:
+        bs = co["b"][s - 1]
+        if bs != 0.0:  # with FSAL the last stage may weigh in the velocity update
+            L.append("    v1 = " + vec(lambda j: f"v1{j} + h*{bs!r}*k{s}{j}"))
+    L.append("    if not control:")
+    L.append(f"        return q1, v1, {end}, 0.0")
+    L.append("    eq = " + vec(lambda j: "h2*(" + _rcombo(dq, ks(s, j)) + ")"))
+    L.append("    ev = " + vec(lambda j: "h*(" + _rcombo(dv, ks(s, j)) + ")"))
+    if unrolled:
+        terms = []
+        for j in range(d):
+            terms.append(f"(eq[{j}]/(aq[{j}] + rtol*max(abs(q[{j}]), abs(q1[{j}]))))**2")
+            terms.append(f"(ev[{j}]/(av[{j}] + rtol*max(abs(v[{j}]), abs(v1[{j}]))))**2")
+        L.append("    err2 = " + " + ".join(terms))
+    else:
+        L.append("    sq = eq / (aq + rtol*_max(_abs(q), _abs(q1)))")
+        L.append("    sv = ev / (av + rtol*_max(_abs(v), _abs(v1)))")
+        L.append("    err2 = float(sq @ sq + sv @ sv)")
+    L.append(f"    return q1, v1, {end}, err2")
+    return L
+
+
+def make_rkn_stepper(pair, d, unrolled):
+    """The step of the Runge-Kutta-Nystrom `pair` for `d` positions (generated once).
+
+    ``step(fun, t, q, v, k1, h, rtol, aq, av, control) -> (q1, v1, k_last, err2)`` where
+    ``err2`` is the sum over the ``2 d`` components of the squared scaled error (0.0 when
+    ``control`` is false). With `unrolled`, ``q``, ``v`` and the stages are lists of floats;
+    otherwise 1-D ndarrays (one function for every `d`).
+
+    Examples
+    --------
+    >>> from rigidmech.ode.rkn import DPRKN6
+    >>> step = make_rkn_stepper(DPRKN6, 1, True)
+    >>> q1, v1, a1, _ = step(lambda t, q: -q, 0.0, [1.0], [0.0], [-1.0], 0.1, 0.0, None,
+    ...                      None, False)
+    >>> bool(abs(q1[0] - np.cos(0.1)) < 1e-12)
+    True
+    """
+    key = ("rkn", pair.name, d if unrolled else -1)
+    return cached(key, lambda: compile_function(
+        _rkn_source(pair, d, unrolled), "step", f"{pair.name} kernel d={d}",
+        {"_arr": np.array, "_asarray": np.asarray, "_max": np.maximum, "_abs": np.abs}))
+
+
+def _rcombo(coeffs, names):
+    terms = [f"{a!r}*{k}" for a, k in zip(coeffs, names, strict=False) if a != 0.0]
+    return " + ".join(terms) if terms else "0.0"
+
+
+def make_midpoint(n):
+    """Gragg's midpoint rule on `n` plain floats, unrolled over the components (cached).
+
+    ``mid(fun, t, y, f0, hs, nj)`` makes `nj` substeps of `hs` from the lists `y`, `f0` and
+    returns the final list; `fun` receives a fresh ndarray at every substep.
+
+    Examples
+    --------
+    >>> mid = make_midpoint(1)
+    >>> mid(lambda t, y: -y, 0.0, [1.0], [-1.0], 0.5, 2)  # y1 = 0.5, y2 = 1 - 1 * 0.5
+    [0.5]
+    """
+    def build():
+        c = range(n)
+        p_ = ", ".join(f"p{j}" for j in c)
+        q_ = ", ".join(f"q{j}" for j in c)
+        lines = [
+            "def mid(fun, t, y, f0, hs, nj):",
+            f"    {p_}, = y",
+            f"    {', '.join(f'f{j}' for j in c)}, = f0",
+            *(f"    q{j} = p{j} + hs*f{j}" for j in c),
+            "    h2 = hs + hs",
+            "    for i in range(1, nj):",
+            f"        {', '.join(f'f{j}' for j in c)}, = _tolist(fun(t + i*hs, _arr([{q_}])))",
+            f"        {p_}, {q_} = {q_}, {', '.join(f'p{j} + h2*f{j}' for j in c)}",
+            f"    return [{q_}]",
+        ]
+        return compile_function(lines, "mid", f"gbs midpoint {n}")
+
+    return cached(("gbs-midpoint", n), build)

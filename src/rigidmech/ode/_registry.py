@@ -48,12 +48,21 @@ class MethodEntry:
     name: str
     function: Callable
     kind: str
+    #: Declared capabilities: ``"t_eval"`` (the method takes ``t_eval=`` and keeps only those
+    #: samples, memory proportional to them when no dense output is asked for) and
+    #: ``"t_eval_at_steps"`` (it takes ``t_eval=`` and lands its steps on those times,
+    #: because its interpolant is less accurate than its steps).
+    capabilities: frozenset = frozenset()
 
 
 _METHODS: dict[str, MethodEntry] = {}
 
 
-def register(name: str, fn: Callable, *, kind: str) -> Callable:
+#: The capabilities a method may declare (see :class:`MethodEntry`).
+CAPABILITIES = ("t_eval", "t_eval_at_steps")
+
+
+def register(name: str, fn: Callable, *, kind: str, capabilities=()) -> Callable:
     """Register the integration function `fn` under `name`.
 
     Parameters
@@ -64,6 +73,8 @@ def register(name: str, fn: Callable, *, kind: str) -> Callable:
         ``fn(fun, t_span, y0, *, step, **options) -> OdeResult``.
     kind : {"fixed", "adaptive", "second_order", "adaptive_second_order", "stiff"}
         How :func:`~rigidmech.ode.solve` calls `fn` (see the module docstring).
+    capabilities : sequence of str
+        Among :data:`CAPABILITIES`.
 
     Returns
     -------
@@ -91,6 +102,11 @@ def register(name: str, fn: Callable, *, kind: str) -> Callable:
         raise ArgumentTypeError(f"`fn` must be callable; got {type(fn).__name__}.")
     if kind not in KINDS:
         raise ArgumentError(f"`kind` must be one of {KINDS}; got {kind!r}.")
+    unknown = set(capabilities) - set(CAPABILITIES)
+    if unknown:
+        raise ArgumentError(
+            f"`capabilities` must be among {CAPABILITIES}; got {sorted(unknown)}."
+        )
     key = name.lower()
     old = _METHODS.get(key)
     if old is not None and old.function is not fn:
@@ -98,7 +114,7 @@ def register(name: str, fn: Callable, *, kind: str) -> Callable:
             f"`name` {name!r} is already registered to {old.function.__module__}."
             f"{old.function.__qualname__}; choose another name."
         )
-    _METHODS[key] = MethodEntry(key, fn, kind)
+    _METHODS[key] = MethodEntry(key, fn, kind, frozenset(capabilities))
     return fn
 
 

@@ -31,7 +31,9 @@ class OdeResult:
     nrejected : int
         Rejected steps (0 for fixed-step methods).
     status : int
-        0: reached the end of ``t_span``; 1: a terminal event occurred; -1: numerical failure.
+        0: reached the end of ``t_span``; 1: a terminal event occurred; 2: stopped early on
+        request (Ctrl-C, or a ``progress`` callback returning False), with everything computed
+        so far; -1: numerical failure.
     message : str
         Human-readable reason for ``status``; on failure it names the time and the state.
     method : str
@@ -69,5 +71,6 @@ class OdeResult:
 
     @property
     def success(self) -> bool:
-        """True unless the integration failed numerically (``status >= 0``)."""
-        return self.status >= 0
+        """True if the integration reached the end of ``t_span`` or a terminal event (``status``
+        0 or 1): not after a numerical failure or an early stop on request."""
+        return self.status in (0, 1)

@@ -71,8 +71,8 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
-from ._driver import Recorder
-from ._floatpath import FLOAT_PATH_MAX_N
+from ._driver import Recorder, flat_tolerance
+from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
 from .multistep import adams_gamma
@@ -441,19 +441,11 @@ def _float_run_source(n):
     return "\n".join(L)
 
 
-_FLOAT_RUNS = {}
-
-
 def _float_run(n):
-    """The plain-float run for `n` equations (generated once, then cached)."""
-    if n not in _FLOAT_RUNS:
-        ns = {"_arr": np.array, "_tolist": np.ndarray.tolist, "_sqrt": math.sqrt, "_hrho": _hrho,
-              "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}
-        src = _float_run_source(n)
-        code = compile(src, f"<rigidmech.ode adams, {n} equations>", "exec")
-        exec(code, ns)  # noqa: S102
-        _FLOAT_RUNS[n] = ns[f"adams_run_{n}"]
-    return _FLOAT_RUNS[n]
+    """The plain-float run for `n` equations (generated once by the shared compiler)."""
+    return cached(("adams", n), lambda: compile_function(
+        _float_run_source(n).split("\n"), f"adams_run_{n}", f"adams, {n} equations",
+        {"_sqrt": math.sqrt, "_hrho": _hrho, "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}))
 
 
 def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, hist_append):
@@ -550,7 +542,7 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     rounding). 15 stiff checks (6 others in a row reset the count, as in Hairer's test) raise a
     :class:`~rigidmech.ode.StiffnessWarning`. Measured on Van der Pol (mu = 1000), Robertson's
     kinetics and a stiff linear equation: the warning comes after 20-160 checks at rtol 1e-3
-    to 1e-12; never on the reference problems of :mod:`~rigidmech.ode.problems`.
+    to 1e-12; never on the reference problems of :mod:`~rigidmech.testing.problems`.
 
     The first step is Shampine and Gordon's
     ``0.25 / sqrt(||f(t0, y0)||)`` (weighted norm), bounded by the interval, `max_step` and
@@ -653,7 +645,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y)
         return rec.result("adams", nfev, 0)
-    atol_arr = np.broadcast_to(np.asarray(atol, dtype=float), shape).reshape(-1).copy()
+    atol_arr = flat_tolerance(atol, shape)
     if batch:
         def norm(v):
             v = v.reshape(shape)

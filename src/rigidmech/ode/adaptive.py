@@ -1,4 +1,9 @@
-"""Adaptive embedded Runge-Kutta pairs: Dormand-Prince 5(4) and DOP853 (book, ch. 26.2).
+"""Adaptive embedded Runge-Kutta pairs: Dormand-Prince 5(4), DOP853, Bogacki-Shampine 3(2)
+(book, ch. 26.2).
+
+Each pair is data (:class:`ExplicitPair`: tableau, error weights, dense output,
+:class:`~rigidmech.ode._loop.Capabilities`) run by one of two steppers (plain floats for one
+small trajectory, numpy otherwise) through the one loop of :mod:`rigidmech.ode._loop`.
 
 The step is chosen so that an estimate of the local error stays below the tolerance, measured
 in Hairer's weighted RMS norm ``sqrt(mean((err / (atol + rtol max(|y0|, |y1|)))**2))``; the
@@ -34,356 +39,278 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
-from ._driver import Problem, Recorder, initial_step
-from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
-from ._warnings import stiffness_count
+from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
+from ._loop import (
+    MAX_FACTOR,
+    MIN_FACTOR,
+    PI_ERR_FLOOR,
+    PI_KI,
+    PI_KP,
+    SAFETY,
+    Capabilities,
+    Run,
+    StepResult,
+    integrate,
+)
 
-__all__ = ["dopri5", "dop853"]
+__all__ = ["dopri5", "dop853", "bs32", "ExplicitPair", "PAIRS"]
 
-SAFETY = 0.9
-MIN_FACTOR = 0.2
-MAX_FACTOR = 10.0
-#: Gains of the PI step-size controller (Gustafsson 1991; HNW II, IV.2, eq. (2.43)):
-#: ``h_new = h * SAFETY * err_n**(-PI_KI / k) * err_{n-1}**(PI_KP / k)``, ``k = q + 1``.
-PI_KI = 0.7
-PI_KP = 0.4
-#: Floor of the previous error in the PI formula (as in Hairer's DOPRI5 code).
-PI_ERR_FLOOR = 1e-4
+#: Kept here for the code and the tests that read them from this module.
+CONTROL_CONSTANTS = (SAFETY, MIN_FACTOR, MAX_FACTOR, PI_KI, PI_KP, PI_ERR_FLOOR)
 STEP_CONTROLS = ("i", "pi")
 
 
-def _stiffness_test(pair, hlamb, t_new, iasti, nonsti, warned):
-    """One step of Hairer's stiffness detection for `pair` (shared by the numpy and the float
-    paths); see :func:`~rigidmech.ode._warnings.stiffness_count`."""
-    return stiffness_count(pair.name, pair.stiff_border, hlamb, t_new, iasti, nonsti, warned)
+class ExplicitPair:
+    """An embedded explicit Runge-Kutta pair as data: its tableau, error weights, dense output
+    and capabilities. Everything else (the loop, the controllers, the kernels) is shared.
 
+    Parameters
+    ----------
+    capabilities : Capabilities
+    tableau : ButcherTableau
+        With the FSAL stage ``f(t + h, y1)`` as its last stage when `fsal` is True.
+    errors : sequence of ndarray
+        Error weight vectors over the stages and the FSAL stage; one vector: Hairer's RMS norm
+        of ``h sum e_i k_i``; two (``E5``, ``E3``): DOP853's combined estimate.
+    fsal : bool
+        Whether the tableau's last stage is the evaluation at ``(t + h, y1)``.
+    dense : callable
+        ``dense(pair, prob, t, y, y_new, h, K) -> coefficients`` (or a lazy callable).
 
-class _Pair:
-    """Constants of one embedded pair, precomputed once."""
+    Examples
+    --------
+    >>> BS32.capabilities.order, BS32.s
+    (3, 3)
+    """
 
-    def __init__(self, name, tableau, order_est, stiff_border):
-        self.name = name
-        self.s = tableau.stages if name == "dop853" else tableau.stages - 1  # w/o FSAL stage
+    def __init__(self, capabilities, tableau, errors, *, fsal, dense):
+        self.capabilities = capabilities
+        self.name = capabilities.name
+        self.s = tableau.stages - 1 if fsal else tableau.stages  # stages before f(t+h, y1)
         self.c = tableau.c[: self.s].copy()
         self.b = tableau.b[: self.s].copy()
-        self.exponent = -1.0 / (order_est + 1)
         self.Ab = np.zeros((self.s + 1, self.s))
         self.Ab[: self.s] = tableau.A[: self.s, : self.s]
         self.Ab[self.s] = self.b
-        self.order_est = order_est
-        self.stiff_border = stiff_border
+        self.A = tableau.A
+        self.errors = [np.asarray(e, dtype=float) for e in errors]
+        self.E = np.stack(self.errors)
+        self.dense = dense
+
+    def kernel(self, n):
+        """The plain-float step for `n` equations (generated once by the shared generator)."""
+        return cached(("rk-pair", self.name, n), lambda: make_unrolled_stepper(
+            self.name, self.A, self.b, self.c, self.s, self.errors, n, norm=True))
+
+    def error_from_squares(self, h_abs, sq, n):
+        """The error norm from the weighted sums of squares `sq` of the error vectors."""
+        if len(sq) == 1:
+            return h_abs * math.sqrt(sq[0] / n)
+        s5, s3 = sq
+        den = s5 + 0.01 * s3
+        return h_abs * s5 / math.sqrt(den * n) if den > 0 else (0.0 if den == 0 else den)
 
 
-_DP5 = _Pair("dopri5", tableaux.DOPRI5, 4, 3.25)
-_DP5.E = tableaux.DOPRI5_E.copy()
-_DP5.P = tableaux.DOPRI5_P.T.copy()  # (4, 7)
-_D8 = _Pair("dop853", tableaux.DOP853, 7, 6.1)
-_D8.E5 = tableaux.DOP853_E5.copy()
-_D8.E3 = tableaux.DOP853_E3.copy()
-_D8.D = tableaux.DOP853_D.copy()
-_D8.E53 = np.stack([_D8.E5, _D8.E3])
-_D8.A_extra = [np.ascontiguousarray(a[: 13 + i]) for i, a in enumerate(tableaux.DOP853_A_EXTRA)]
-_D8.c_extra = tableaux.DOP853_C_EXTRA.copy()
-_DP5.kernel_args = ("dopri5", tableaux.DOPRI5.A, _DP5.b, _DP5.c, 6, [_DP5.E])
-_D8.kernel_args = ("dop853", tableaux.DOP853.A, _D8.b, _D8.c, 12, [_D8.E5, _D8.E3])
-_KERNELS = {}
+class _FloatStepper:
+    """A pair on lists of plain floats (one small trajectory): the generated kernel."""
+
+    def __init__(self, pair, fun, n, rtol, atol):
+        self.pair, self.fun, self.n, self.rtol = pair, fun, n, rtol
+        self.capabilities = pair.capabilities
+        self.atols = list(np.broadcast_to(np.asarray(atol, dtype=float), (n,)).tolist())
+        self.kernel = pair.kernel(n)
+        self.nfev = 0
+
+    def begin(self, prob, t0, y0, f0):
+        self.prob, self.k0 = prob, f0.tolist()
+        self.start_order = self.capabilities.error_order
+        return y0.tolist()
+
+    def finite(self, step):
+        return math.isfinite(sum(step.y))
+
+    def stats(self):
+        return {}
+
+    def attempt(self, t, y, h):
+        out = self.kernel(self.fun, t, y, self.k0, h, self.rtol, self.atols)
+        self.nfev += self.pair.s
+        return StepResult(out[0], out[1][-1],
+                          self.pair.error_from_squares(abs(h), out[3:], self.n), out)
+
+    def accept(self, step):
+        self.k0 = step.f
+
+    def hlamb(self, h_abs, step):
+        ys, ks = step.data[2], step.data[1]
+        den = sum((a - b_) ** 2 for a, b_ in zip(step.y, ys, strict=True))
+        if den > 0:
+            num = sum((a - b_) ** 2 for a, b_ in zip(ks[-1], ks[-2], strict=True))
+            return h_abs * math.sqrt(num / den)
+        return None
+
+    def dense(self, t, y, h, step):
+        ya, yna = np.array(y), np.array(step.y)
+        return yna, self.pair.dense(self.pair, self.prob, t, ya, yna, h,
+                                    np.array(step.data[1])), None
 
 
-def _kernel(pair, n, norm=False):
-    """The plain-float step of `pair` for `n` equations (generated once, then cached)."""
-    key = (pair.name, n, norm)
-    if key not in _KERNELS:
-        _KERNELS[key] = make_unrolled_stepper(*pair.kernel_args, n, norm=norm)
-    return _KERNELS[key]
+class _ArrayStepper:
+    """A pair on flat ndarrays (batches, larger systems): numpy products over the stages."""
 
+    def __init__(self, pair, fun, shape, rtol, atol):
+        self.pair, self.fun, self.shape, self.rtol, self.atol = pair, fun, shape, rtol, atol
+        self.capabilities = pair.capabilities
+        self.n = shape[0]
+        self.nfev = 0
 
-def _use_float_path(shape, fun, t0, y0):
-    """The plain-float kernel serves one small trajectory whose `fun` returns an ndarray."""
-    if len(shape) != 1 or shape[0] > FLOAT_PATH_MAX_N:
-        return False, None
-    f0 = fun(t0, y0.copy())
-    ok = type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64
-    return ok, f0
+    def begin(self, prob, t0, y0, f0):
+        self.prob = prob
+        self.flat = not prob.batch  # single trajectory: call fun directly, copy into K
+        self.K = np.empty((max(16, self.pair.s + 1), y0.size))
+        self.K[0] = f0
+        self.start_order = self.capabilities.error_order
+        return y0
 
+    def finite(self, step):
+        return bool(np.isfinite(step.y).all())
 
-def _next_step(err, h_abs, err_old, rejected, exponent, pi, pi_alpha, pi_beta):
-    """The step-size controller of both paths: ``(h_abs, err_old, accepted)`` after an attempt
-    with error norm `err` (accepted if ``err < 1``; nan or inf shrink as much as allowed)."""
-    if err < 1.0:
-        if err == 0.0:
-            factor = MAX_FACTOR
-        elif pi:
-            factor = min(MAX_FACTOR, SAFETY * err**pi_alpha * err_old**pi_beta)
-        else:
-            factor = min(MAX_FACTOR, SAFETY * err**exponent)
-        if rejected:
-            factor = min(1.0, factor)
-        if pi:
-            err_old = max(err, PI_ERR_FLOOR)
-        return h_abs * factor, err_old, True
-    if math.isfinite(err):
-        return h_abs * max(MIN_FACTOR, SAFETY * err**exponent), err_old, False
-    return h_abs * MIN_FACTOR, err_old, False
+    def stats(self):
+        return {}
 
-
-def _integrate(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, nstiff, f0=None, step_control="i"):
-    t0, t_end = t_span
-    direction = 1.0 if t_end > t0 else -1.0
-    shape = y0.shape
-    prob = Problem(fun, shape)
-    n = shape[0]
-    y = y0.reshape(-1).copy()
-    N = y.size
-    s = pair.s
-    is853 = pair.name == "dop853"
-    K = np.empty((16 if is853 else s + 1, N))
-    rec = Recorder(t0, y, shape, dense_output, events, "nested" if is853 else "power")
-    if f0 is None:
-        prob(t0, y, K[0])
-    else:  # already evaluated by the dispatcher
-        prob.nfev += 1
-        K[0] = f0
-    if not np.isfinite(K[0]).all():
-        rec.fail("The right-hand side is not finite", t0, y)
-        return rec.result(pair.name, prob.nfev, 0)
-    if first_step is None:
-        h_abs = initial_step(prob, t0, y, K[0], direction, pair.order_est, rtol, atol, t_end,
-                             max_step)
-    else:
-        h_abs = first_step
-    c, exponent = pair.c, pair.exponent
-    pi, pi_alpha, pi_beta, err_old = _pi_constants(pair, step_control)
-    Amat = pair.Ab  # stage matrix with the weights b as its last row
-    E53 = pair.E53 if is853 else None
-    dot = np.dot
-    flat = not prob.batch  # single trajectory: call fun directly, copy its output into K
-    nfev = 0
-    t = t0
-    nrej = 0
-    naccpt = 0
-    iasti = nonsti = 0
-    warned = False
-    ys = y
-    while direction * (t - t_end) < 0:
-        if naccpt >= max_steps:
-            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
-            break
-        min_step = 10.0 * abs(math.nextafter(t, direction * math.inf) - t)
-        if h_abs > max_step:
-            h_abs = max_step
-        elif h_abs < min_step:
-            h_abs = min_step
-        rejected = accepted = False
-        while True:
-            if not h_abs >= min_step:  # also catches a nan step
-                break
-            h = h_abs * direction
-            t_new = t + h
-            if direction * (t_new - t_end) > 0:
-                t_new = t_end
-            h = t_new - t
-            h_abs = abs(h)
-            hA = h * Amat  # one product for all the stages of this attempt
-            for i in range(1, s):
-                ys = dot(hA[i, :i], K[:i])
-                ys += y
-                if flat:
-                    K[i] = fun(t + c[i] * h, ys)
-                else:
-                    prob(t + c[i] * h, ys, K[i])
-            y_new = dot(hA[s, :s], K[:s])
-            y_new += y
+    def attempt(self, t, y, h):
+        pair, K, s = self.pair, self.K, self.pair.s
+        dot, fun, prob, flat, c = np.dot, self.fun, self.prob, self.flat, pair.c
+        hA = h * pair.Ab  # one product for all the stages of this attempt
+        ys = y
+        for i in range(1, s):
+            ys = dot(hA[i, :i], K[:i])
+            ys += y
             if flat:
-                K[s] = fun(t_new, y_new)
+                K[i] = fun(t + c[i] * h, ys)
             else:
-                prob(t_new, y_new, K[s])
-            if flat:
-                nfev += s
-            scale = np.abs(y)
-            np.maximum(scale, np.abs(y_new), out=scale)
-            scale *= rtol
-            scale += atol
-            if is853:
-                e53 = dot(E53, K[:13])
-                e53 /= scale
-                if prob.batch:
-                    sq = (e53 * e53).reshape((2,) + shape).sum(axis=1)
-                    s5, s3 = sq[0], sq[1]
-                    den = s5 + 0.01 * s3
-                    with np.errstate(invalid="ignore", divide="ignore"):
-                        e = np.where(den > 0, h_abs * s5 / np.sqrt(den * n), 0.0)
-                    err = float(np.max(e))
-                else:
-                    s5, s3 = np.einsum("ij,ij->i", e53, e53).tolist()
-                    den = s5 + 0.01 * s3
-                    err = h_abs * s5 / math.sqrt(den * N) if den > 0 else (
-                        0.0 if den == 0 else den)
-            else:
-                e = dot(pair.E, K[: s + 1])
-                e /= scale
-                err = h_abs * prob.norm(e)
-            h_abs, err_old, accepted = _next_step(err, h_abs, err_old, rejected, exponent, pi,
-                                                  pi_alpha, pi_beta)
-            if accepted:
-                break
-            rejected = True
-            nrej += 1
-        if not accepted:
-            rec.fail("The step size fell below the resolution of t (step size underflow)",
-                     t, y)
-            break
-        if not np.isfinite(y_new).all():  # pragma: no cover - caught by err above
-            rec.fail("The state became non-finite", t_new, y_new)
-            break
-        naccpt += 1
-        # stiffness detection (Hairer's DOPRI5/DOP853 test)
-        if nstiff and (naccpt % nstiff == 0 or iasti > 0):
-            den = float(np.dot(y_new - ys, y_new - ys))
-            if den > 0:
-                d = K[s] - K[s - 1]
-                hlamb = h_abs * math.sqrt(float(np.dot(d, d)) / den)
-                iasti, nonsti, warned = _stiffness_test(pair, hlamb, t_new, iasti, nonsti,
-                                                        warned)
-        if rec.cs is not None or events is not None:
-            coeffs = _dense_dop853(pair, prob, t, y, y_new, h, K) if is853 else (
-                (h * pair.P) @ K[: s + 1])
+                prob(t + c[i] * h, ys, K[i])
+        y_new = dot(hA[s, :s], K[:s])
+        y_new += y
+        if flat:
+            K[s] = fun(t + h, y_new)
+            self.nfev += s
         else:
-            coeffs = None
-        stop = rec.accept(t_new, y_new, coeffs)
-        t = t_new
-        y = y_new
-        K[0] = K[s]
-        if stop:
-            break
-    return rec.result(pair.name, prob.nfev + nfev, nrej)
+            prob(t + h, y_new, K[s])
+        scale = np.abs(y)
+        np.maximum(scale, np.abs(y_new), out=scale)
+        scale *= self.rtol
+        scale += self.atol
+        return StepResult(y_new, K[s], self._error(abs(h), K[: s + 1], scale), ys)
+
+    def _error(self, h_abs, K, scale):
+        errors = self.pair.errors
+        if len(errors) == 1:  # Hairer's RMS norm (max over a batch)
+            e = np.dot(errors[0], K)
+            e /= scale
+            return h_abs * self.prob.norm(e)
+        e53 = np.dot(self.pair.E, K)  # DOP853: the 5th- and 3rd-order estimates combined
+        e53 /= scale
+        if not self.prob.batch:
+            sq = np.einsum("ij,ij->i", e53, e53).tolist()
+            return self.pair.error_from_squares(h_abs, sq, e53.shape[1])
+        sq = (e53 * e53).reshape((2,) + self.shape).sum(axis=1)
+        s5, s3 = sq[0], sq[1]
+        den = s5 + 0.01 * s3
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return float(np.max(np.where(den > 0, h_abs * s5 / np.sqrt(den * self.n), 0.0)))
+
+    def accept(self, step):
+        self.K[0] = self.K[self.pair.s]
+
+    def hlamb(self, h_abs, step):
+        d_y = step.y - step.data
+        den = float(np.dot(d_y, d_y))
+        if den > 0:
+            d = self.K[self.pair.s] - self.K[self.pair.s - 1]
+            return h_abs * math.sqrt(float(np.dot(d, d)) / den)
+        return None
+
+    def dense(self, t, y, h, step):
+        return step.y, self.pair.dense(self.pair, self.prob, t, y, step.y, h, self.K), None
 
 
-def _integrate_float(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-                     dense_output, events, nstiff, f0, step_control="i"):
-    """The same algorithm as :func:`_integrate` on lists of floats (one small trajectory)."""
-    t0, t_end = t_span
-    direction = 1.0 if t_end > t0 else -1.0
-    shape = y0.shape
-    N = shape[0]
-    prob = Problem(fun, shape)
-    prob.nfev = 1
-    is853 = pair.name == "dop853"
-    rec = Recorder(t0, y0.reshape(-1), shape, dense_output, events,
-                   "nested" if is853 else "power")
-    if not np.isfinite(f0).all():
-        rec.fail("The right-hand side is not finite", t0, y0)
-        return rec.result(pair.name, prob.nfev, 0)
-    if first_step is None:
-        h_abs = initial_step(prob, t0, y0, f0, direction, pair.order_est, rtol, atol, t_end,
-                             max_step)
-    else:
-        h_abs = first_step
-    atols = list(np.broadcast_to(np.asarray(atol, dtype=float), (N,)).tolist())
-    y = y0.tolist()
-    k0 = f0.tolist()
-    kernel = _kernel(pair, N, norm=True)  # returns the weighted sums of squares
-    exponent = pair.exponent
-    pi, pi_alpha, pi_beta, err_old = _pi_constants(pair, step_control)
-    want = rec.cs is not None or events is not None
-    isfinite = math.isfinite
-    sqrt = math.sqrt
-    t = t0
-    nrej = naccpt = iasti = nonsti = 0
-    nfev = 1
-    warned = False
-    while direction * (t - t_end) < 0:
-        if naccpt >= max_steps:
-            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
-            break
-        min_step = 10.0 * abs(math.nextafter(t, direction * math.inf) - t)
-        if h_abs > max_step:
-            h_abs = max_step
-        elif h_abs < min_step:
-            h_abs = min_step
-        rejected = accepted = False
-        while True:
-            if not h_abs >= min_step:
-                break
-            h = h_abs * direction
-            t_new = t + h
-            if direction * (t_new - t_end) > 0:
-                t_new = t_end
-            h = t_new - t
-            h_abs = abs(h)
-            out = kernel(fun, t, y, k0, h, rtol, atols)
-            nfev += pair.s
-            y_new = out[0]
-            if is853:
-                s5 = out[3]
-                den = s5 + 0.01 * out[4]
-                err = h_abs * s5 / sqrt(den * N) if den > 0 else (0.0 if den == 0 else den)
-            else:
-                err = h_abs * sqrt(out[3] / N)
-            h_abs, err_old, accepted = _next_step(err, h_abs, err_old, rejected, exponent, pi,
-                                                  pi_alpha, pi_beta)
-            if accepted:
-                break
-            rejected = True
-            nrej += 1
-        if not accepted:
-            rec.fail("The step size fell below the resolution of t (step size underflow)",
-                     t, y)
-            break
-        if not isfinite(sum(y_new)):
-            rec.fail("The state became non-finite", t_new, y_new)
-            break
-        naccpt += 1
-        ks = out[1]
-        if nstiff and (naccpt % nstiff == 0 or iasti > 0):
-            ys = out[2]
-            den = sum((a - b_) ** 2 for a, b_ in zip(y_new, ys, strict=True))
-            if den > 0:
-                num = sum((a - b_) ** 2 for a, b_ in zip(ks[-1], ks[-2], strict=True))
-                hlamb = h_abs * sqrt(num / den)
-                iasti, nonsti, warned = _stiffness_test(pair, hlamb, t_new, iasti, nonsti,
-                                                        warned)
-        if want:
-            ya, yna = np.array(y), np.array(y_new)
-            if is853:
-                K = np.empty((16, N))
-                K[:13] = ks
-                coeffs = _dense_dop853(pair, prob, t, ya, yna, h, K)
-            else:
-                coeffs = (h * pair.P) @ np.array(ks)
-            stop = rec.accept(t_new, yna, coeffs)
-        else:
-            stop = rec.accept(t_new, y_new)
-        t = t_new
-        y = y_new
-        k0 = ks[-1]
-        if stop:
-            break
-    return rec.result(pair.name, nfev + prob.nfev - 1, nrej)
+def _dense_shampine(pair, prob, t, y, y_new, h, K):
+    """Shampine's 4th-order interpolant of DOPRI5 (free: it reuses the stages)."""
+    return (h * _DP5_P) @ K[: pair.s + 1]
+
+
+def _dense_hermite(pair, prob, t, y, y_new, h, K):
+    """The cubic Hermite interpolant through ``y, f`` at both ends (free with FSAL)."""
+    f0, f1 = K[0], K[pair.s]
+    dy = y_new - y
+    return np.stack([h * f0, 3.0 * dy - 2.0 * h * f0 - h * f1, h * f0 + h * f1 - 2.0 * dy])
 
 
 def _dense_dop853(pair, prob, t, y, y_new, h, K):
     """DOP853's interpolation coefficients, computed lazily (3 more evaluations of f)."""
-    Kc = K.copy()
+    Kc = np.empty((16, y.size))
+    Kc[:13] = K[:13]
 
     def coeffs():
-        for j, (a, cj) in enumerate(zip(pair.A_extra, pair.c_extra, strict=True)):
+        for j, (a, cj) in enumerate(zip(_D853_A_EXTRA, tableaux.DOP853_C_EXTRA, strict=True)):
             prob(t + cj * h, y + (h * a) @ Kc[: 13 + j], Kc[13 + j])
         F = np.empty((7, y.size))
         dy = y_new - y
         F[0] = dy
         F[1] = h * Kc[0] - dy
         F[2] = 2.0 * dy - h * (Kc[12] + Kc[0])
-        F[3:] = h * (pair.D @ Kc)
+        F[3:] = h * (tableaux.DOP853_D @ Kc)
         return F
 
     return coeffs
 
 
-def _pi_constants(pair, step_control):
-    """``(pi, alpha, beta, err_old)``: exponents of the PI controller, or unused values."""
-    k = pair.order_est + 1
-    return step_control == "pi", -PI_KI / k, PI_KP / k, 1.0
+_DP5_P = tableaux.DOPRI5_P.T.copy()  # (4, 7)
+_D853_A_EXTRA = [np.ascontiguousarray(a[: 13 + i])
+                 for i, a in enumerate(tableaux.DOP853_A_EXTRA)]
+
+DOPRI5 = ExplicitPair(
+    Capabilities("dopri5", error_order=4, order=5, stiff_border=3.25, dense_order=4),
+    tableaux.DOPRI5, [tableaux.DOPRI5_E], fsal=True, dense=_dense_shampine)
+DOP853 = ExplicitPair(
+    Capabilities("dop853", error_order=7, order=8, stiff_border=6.1, dense_form="nested",
+                 dense_order=7),
+    tableaux.DOP853, [tableaux.DOP853_E5, tableaux.DOP853_E3], fsal=False,
+    dense=_dense_dop853)
+#: Bogacki-Shampine 3(2), FSAL (the proof of the protocol: coefficients and capabilities
+#: only). Its last two stages do not share a time: no stiffness test.
+BS32 = ExplicitPair(
+    Capabilities("bs32", error_order=2, order=3, dense_order=3),
+    tableaux.BS32, [tableaux.BS32_E], fsal=True, dense=_dense_hermite)
+#: The pairs, by name.
+PAIRS = {p.name: p for p in (DOPRI5, DOP853, BS32)}
+
+
+def _stepper(pair, fun, t0, y0, rtol, atol):
+    """The plain-float stepper for one small trajectory whose `fun` returns a float64
+    ndarray, else the numpy stepper; and ``f(t0, y0)`` when it was evaluated to decide."""
+    shape = y0.shape
+    if len(shape) != 1 or shape[0] > FLOAT_PATH_MAX_N:
+        return _ArrayStepper(pair, fun, shape, rtol, atol), None
+    f0 = fun(t0, y0.copy())
+    if type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64:
+        return _FloatStepper(pair, fun, shape[0], rtol, atol), f0.copy()  # fun may reuse it
+    return _ArrayStepper(pair, fun, shape, rtol, atol), f0
+
+
+def _solve_pair(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
+                dense_output, events, nstiff, step_control, progress, t_eval):
+    nstiff = _check_nstiff(nstiff)
+    step_control = _check_step_control(step_control)
+    if progress is not None and not callable(progress):
+        raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
+                            f"{progress!r}.")
+    run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
+              events, nstiff, step_control, progress, None, t_eval)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
+        stepper, f0 = _stepper(pair, fun, t_span[0], y0, rtol, atol)
+        return integrate(stepper, run, f0)
 
 
 def _check_step_control(step_control):
@@ -404,7 +331,7 @@ def _check_nstiff(nstiff):
 
 def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i"):
+           nstiff=1000, step_control="i", progress=None, t_eval=None):
     """Dormand-Prince 5(4) with error control, dense output and stiffness detection.
 
     Called through :func:`rigidmech.ode.solve` (``method="dopri5"`` or ``"rk45"``), which
@@ -424,19 +351,15 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(abs(r.y[0, -1] - np.exp(-2.0)) < 1e-8), r.status
     (True, 0)
     """
-    nstiff = _check_nstiff(nstiff)
-    step_control = _check_step_control(step_control)
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
-        ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
-        run = _integrate_float if ok else _integrate
-        return run(_DP5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                   max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                   events=events, nstiff=nstiff, f0=f0, step_control=step_control)
+    return _solve_pair(DOPRI5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                       max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                       events=events, nstiff=nstiff, step_control=step_control,
+                       progress=progress, t_eval=t_eval)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i"):
+           nstiff=1000, step_control="i", progress=None, t_eval=None):
     """Dormand-Prince 8(5,3) (Hairer's DOP853) with error control, 7th-order dense output and
     stiffness detection.
 
@@ -460,16 +383,44 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(abs(r.y[0, -1] - np.cos(20.0)) < 1e-11)
     True
     """
-    nstiff = _check_nstiff(nstiff)
-    step_control = _check_step_control(step_control)
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
-        ok, f0 = _use_float_path(y0.shape, fun, t_span[0], y0)
-        run = _integrate_float if ok else _integrate
-        return run(_D8, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                   max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                   events=events, nstiff=nstiff, f0=f0, step_control=step_control)
+    return _solve_pair(DOP853, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                       max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                       events=events, nstiff=nstiff, step_control=step_control,
+                       progress=progress, t_eval=t_eval)
 
 
-_registry.register("dopri5", dopri5, kind="adaptive")
-_registry.register("rk45", dopri5, kind="adaptive")
-_registry.register("dop853", dop853, kind="adaptive")
+def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
+         max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
+         nstiff=1000, step_control="i", progress=None, t_eval=None):
+    """Bogacki-Shampine 3(2) with error control and cubic Hermite dense output.
+
+    Called through :func:`rigidmech.ode.solve` (``method="bs32"``, scipy's ``RK23``): four
+    stages with FSAL (three evaluations a step), order 3 propagated, order 2 for the error
+    estimate (P. Bogacki, L. F. Shampine, *A 3(2) pair of Runge-Kutta formulas*, Appl. Math.
+    Lett. 2 (1989) 321-325). Cheap per step, for loose tolerances. The dense output is the
+    cubic Hermite interpolant (order 3, that of the method, free with FSAL). The method is
+    only its coefficients and capabilities (:data:`BS32`) on the shared loop; `nstiff` is
+    accepted for uniformity (no stiffness test: its last stages do not share a time).
+
+    Returns
+    -------
+    OdeResult
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rigidmech import ode
+    >>> r = ode.solve(lambda t, y: -y, (0.0, 2.0), [1.0], method="bs32", rtol=1e-8)
+    >>> bool(abs(r.y[0, -1] - np.exp(-2.0)) < 1e-7), r.status
+    (True, 0)
+    """
+    return _solve_pair(BS32, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
+                       max_step=max_step, max_steps=max_steps, dense_output=dense_output,
+                       events=events, nstiff=nstiff, step_control=step_control,
+                       progress=progress, t_eval=t_eval)
+
+
+_registry.register("bs32", bs32, kind="adaptive", capabilities=("t_eval",))
+_registry.register("dopri5", dopri5, kind="adaptive", capabilities=("t_eval",))
+_registry.register("rk45", dopri5, kind="adaptive", capabilities=("t_eval",))
+_registry.register("dop853", dop853, kind="adaptive", capabilities=("t_eval",))

@@ -36,6 +36,7 @@ import dataclasses
 import inspect
 import math
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -77,7 +78,7 @@ def _entry(method):
 
 
 _COMMON = {"step", "rtol", "atol", "first_step", "max_step", "max_steps", "dense_output",
-           "events"}
+           "events", "t_eval"}
 
 
 def _check_options(entry, options):
@@ -113,8 +114,6 @@ def _check_t_span(t_span):
     t0, t1 = _float("t_span[0]", t0), _float("t_span[1]", t1)
     if not (math.isfinite(t0) and math.isfinite(t1)):
         raise ArgumentError(f"`t_span` must hold finite times; got ({t0}, {t1}).")
-    if t0 == t1:
-        raise ArgumentError(f"`t_span` must have t0 != t1; got ({t0}, {t1}).")
     return t0, t1
 
 
@@ -256,6 +255,19 @@ def _check_fun_output(fun, t0, y, kind):
         )
 
 
+def _zero_length(run):
+    """The result of an empty `t_span`: the initial state at ``t0`` (or at each of `t_eval`)."""
+    t = np.array([run.t0]) if run.t_eval is None else run.t_eval
+    ys = np.repeat(run.y[:, None], len(t), axis=1)
+    ev = run.tracker
+    return OdeResult(
+        t=t, y=ys, nfev=0, nsteps=0, nrejected=0, status=0,
+        message="`t_span` has zero length: the result is `y0` at `t0`.", method=run.entry.name,
+        t_events=ev.t_events if ev is not None else [],
+        y_events=ev.y_events if ev is not None else [],
+    )
+
+
 def _restrict(t_eval, t, sol):
     """``t_eval`` cut to the part of `t_span` actually integrated, and the states there."""
     sign = 1.0 if t[-1] >= t[0] else -1.0
@@ -359,13 +371,67 @@ def solve(
     >>> bool(abs(r.y[0, -1] + 1) < 1e-9), r.method
     (True, 'dop853')
     """
+    run = validate(fun, t_span, y0, method, step=step, rtol=rtol, atol=atol, t_eval=t_eval,
+                   dense_output=dense_output, events=events, first_step=first_step,
+                   max_step=max_step, max_steps=max_steps, args=args, options=options)
+    if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
+        return _zero_length(run)
+    _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+    if run.entry.kind in _FIXED:
+        res = _run_fixed(run)
+    else:
+        res = _run_adaptive(run)
+    if res.status < 0 and run.y.ndim == 2:
+        res = name_failed_member(res, run)
+    return res
+
+
+_FIXED = ("fixed", "second_order")
+
+
+class Settings(NamedTuple):
+    """The validated arguments of one run of :func:`solve` (built by :func:`validate`)."""
+
+    entry: _registry.MethodEntry
+    fun: Callable
+    t0: float
+    t1: float
+    y: np.ndarray
+    step: float | None
+    rtol: float
+    atol: float | np.ndarray
+    t_eval: np.ndarray | None
+    dense_output: bool
+    tracker: EventTracker | None
+    first_step: float | None
+    max_step: float
+    max_steps: int
+    options: dict
+
+
+def validate(fun, t_span, y0, method, *, step, rtol, atol, t_eval, dense_output, events,
+             first_step, max_step, max_steps, args, options) -> Settings:
+    """Check every argument of :func:`solve` once; return them as :class:`Settings`.
+
+    Raises
+    ------
+    ArgumentError, ArgumentTypeError
+        As documented by :func:`solve`.
+
+    Examples
+    --------
+    >>> s = validate(lambda t, y: -y, (0, 1), [1.0], "rk4", step=0.3, rtol=1e-6, atol=1e-9,
+    ...              t_eval=None, dense_output=False, events=None, first_step=None,
+    ...              max_step=math.inf, max_steps=100, args=(), options={})
+    >>> s.step, s.entry.kind
+    (0.25, 'fixed')
+    """
     if not callable(fun):
         raise ArgumentTypeError(f"`fun` must be callable f(t, y); got {type(fun).__name__}.")
     entry = _entry(method)
     _check_options(entry, options)
     t0, t1 = _check_t_span(t_span)
     y = _check_y0(y0)
-    shape = y.shape
     if not isinstance(args, tuple):
         raise ArgumentTypeError(f"`args` must be a tuple; got {type(args).__name__}.")
     if args:
@@ -385,36 +451,45 @@ def solve(
         if y.ndim == 2:
             raise ArgumentError(
                 "`events` are not available with a batch `y0` of shape (n, batch); got shape "
-                f"{shape}: integrate the trajectories one by one to locate events."
+                f"{y.shape}: integrate the trajectories one by one to locate events."
             )
         tracker = EventTracker(events, t0, y.copy())
-    kind = entry.kind
-    _check_fun_output(fun, t0, y, kind)
-    if kind in _SECOND_ORDER and shape[0] % 2:
+    if entry.kind in _SECOND_ORDER and y.shape[0] % 2:
         raise ArgumentError(
             f"`y0` must be [q0, v0] of even length n for method {entry.name!r}; got n = "
-            f"{shape[0]}."
+            f"{y.shape[0]}."
         )
-    if kind in ("fixed", "second_order"):
-        if step is None:
-            raise ArgumentError(
-                f"`step` is required by the fixed-step method {entry.name!r}; got None."
-            )
-        h = _float("step", step)
-        if not (math.isfinite(h) and h > 0):
-            raise ArgumentError(f"`step` must be a finite number > 0; got {h}.")
-        nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
-        if nsteps > max_steps:
-            raise ArgumentError(
-                f"`step` = {h:g} needs {nsteps} steps over `t_span`, more than `max_steps` = "
-                f"{max_steps}; use a larger step or raise max_steps."
-            )
-        res = entry.function(fun, (t0, t1), y, step=(t1 - t0) / nsteps, max_steps=max_steps,
-                             **options)
-        if tracker is not None or dense_output or te is not None:
-            res = _fixed_post(res, fun, kind, shape, tracker, dense_output, te)
-        return res
+    common = dict(entry=entry, fun=fun, t0=t0, t1=t1, y=y, t_eval=te,
+                  dense_output=bool(dense_output), tracker=tracker, max_steps=max_steps,
+                  options=options)
+    if entry.kind in _FIXED:
+        h = _check_fixed_step(entry, step, t0, t1, max_steps)
+        return Settings(step=h, rtol=rtol, atol=atol, first_step=None, max_step=max_step,
+                        **common)
+    return Settings(step=None, **_check_adaptive(entry, step, rtol, atol, y, t0, t1,
+                                                 first_step, max_step), **common)
 
+
+def _check_fixed_step(entry, step, t0, t1, max_steps):
+    """The signed uniform step of a fixed-step method, landing exactly on ``t1``."""
+    if step is None:
+        raise ArgumentError(
+            f"`step` is required by the fixed-step method {entry.name!r}; got None."
+        )
+    h = _float("step", step)
+    if not (math.isfinite(h) and h > 0):
+        raise ArgumentError(f"`step` must be a finite number > 0; got {h}.")
+    nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
+    if nsteps > max_steps:
+        raise ArgumentError(
+            f"`step` = {h:g} needs {nsteps} steps over `t_span`, more than `max_steps` = "
+            f"{max_steps}; use a larger step or raise max_steps."
+        )
+    return (t1 - t0) / nsteps
+
+
+def _check_adaptive(entry, step, rtol, atol, y, t0, t1, first_step, max_step):
+    """`rtol`, `atol`, `first_step` and `max_step` of an error-controlled method."""
     if step is not None:
         raise ArgumentError(
             f"`step` is only for fixed-step methods; method {entry.name!r} chooses its own "
@@ -432,20 +507,66 @@ def solve(
         raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")
     if first_step is not None:
         first_step = _float("first_step", first_step)
-        if not (math.isfinite(first_step) and 0 < first_step <= abs(t1 - t0)):
+        length = abs(t1 - t0)
+        if not (math.isfinite(first_step) and 0 < first_step <= max(length, first_step * (
+                length == 0))):
             raise ArgumentError(
-                f"`first_step` must be in (0, |t1 - t0|] = (0, {abs(t1 - t0)}]; "
-                f"got {first_step}."
+                f"`first_step` must be in (0, |t1 - t0|] = (0, {length}]; got {first_step}."
             )
-    res = entry.function(
-        fun, (t0, t1), y, step=None, rtol=rtol, atol=atol, first_step=first_step,
-        max_step=max_step, max_steps=max_steps,
-        dense_output=bool(dense_output) or te is not None, events=tracker, **options,
-    )
-    if te is not None:
-        if res.sol is not None:
-            t_new, y_new = _restrict(te, res.t, res.sol)
-        else:  # failed before the first step
-            t_new, y_new = te[:0], np.empty((shape[0], 0) + shape[1:])
-        res = dataclasses.replace(res, t=t_new, y=y_new, sol=res.sol if dense_output else None)
+    return dict(rtol=rtol, atol=atol, first_step=first_step, max_step=max_step)
+
+
+def _run_fixed(run):
+    res = run.entry.function(run.fun, (run.t0, run.t1), run.y, step=run.step,
+                             max_steps=run.max_steps, **run.options)
+    if run.tracker is not None or run.dense_output or run.t_eval is not None:
+        res = _fixed_post(res, run.fun, run.entry.kind, run.y.shape, run.tracker,
+                          run.dense_output, run.t_eval)
     return res
+
+
+def _run_adaptive(run):
+    te, caps = run.t_eval, run.entry.capabilities
+    lands, samples = "t_eval_at_steps" in caps, "t_eval" in caps
+    own = te is not None and (lands or samples)  # the method takes t_eval itself
+    res = run.entry.function(
+        run.fun, (run.t0, run.t1), run.y, step=None, rtol=run.rtol, atol=run.atol,
+        first_step=run.first_step, max_step=run.max_step, max_steps=run.max_steps,
+        dense_output=run.dense_output or (te is not None and not own),
+        events=run.tracker, **({"t_eval": te} if own else {}), **run.options,
+    )
+    if te is None or (samples and not run.dense_output):  # done (or samples kept already)
+        return res
+    if lands:  # the steps landed on t_eval: keep those steps
+        keep = np.isin(res.t, te)
+        return dataclasses.replace(res, t=res.t[keep], y=res.y[:, keep])
+    if res.sol is not None:
+        t_new, y_new = _restrict(te, res.t, res.sol)
+    else:  # failed before the first step
+        shape = run.y.shape
+        t_new, y_new = te[:0], np.empty((shape[0], 0) + shape[1:])
+    return dataclasses.replace(res, t=t_new, y=y_new, sol=res.sol if run.dense_output else None)
+
+
+def name_failed_member(res, run):
+    """Name, in the message of a failed batch run, the trajectory that stopped it.
+
+    A batch shares one step, so one diverging member stops them all (the run stops there and
+    keeps what was computed). The member named is the first with a non-finite state or
+    right-hand side, else the one whose rate of change ``|f| / (atol + rtol |y|)`` is the
+    largest at the last accepted state: the member that forces the step down.
+    """
+    y = np.moveaxis(res.y, 1, 0)[-1] if res.y.shape[1] else run.y  # (n, batch)
+    t = float(res.t[-1]) if len(res.t) else run.t0
+    with np.errstate(all="ignore"):
+        f = np.asarray(run.fun(t, y.copy()), dtype=float)
+        atol = np.asarray(run.atol, dtype=float)
+        atol = atol.reshape(y.shape) if atol.size == y.size else atol
+        rate = np.max(np.abs(f) / (atol + run.rtol * np.abs(y)), axis=0)
+    bad = ~(np.all(np.isfinite(y), axis=0) & np.all(np.isfinite(f), axis=0))
+    j = int(np.argmax(bad)) if bad.any() else int(np.nanargmax(np.where(np.isnan(rate),
+                                                                        np.inf, rate)))
+    message = (f"{res.message} The batch shares one step: batch member {j} (of {y.shape[1]},"
+               f" y0[:, {j}]) stops it; integrate it alone to see where it fails.")
+    return dataclasses.replace(res, message=message,
+                               stats={**res.stats, "failed_member": j})

@@ -11,9 +11,13 @@ An event function is any callable ``g(t, y) -> float``. Two optional attributes,
     negative; ``0`` (default): both.
 
 A zero of ``g`` at the initial state is not an event (a ball thrown from the ground does not
-land at ``t0``). The zeros are located with Brent's method (:func:`scipy.optimize.brentq`) on
-the dense output of the step where ``g`` changed sign, to a tolerance of a few ulps of ``t``;
-their accuracy is therefore that of the dense output.
+land at ``t0``), but a crossing later in the first step is. Each step is scanned on the dense
+output at :attr:`EventTracker.SAMPLES` - 1 interior points as well as at its ends, so that two
+zeros inside one step (``g`` of the same sign at both ends, a ``- + -`` pattern in between)
+are seen; zeros closer together than a quarter of a step can still be missed. Each zero is
+located with Brent's method (:func:`scipy.optimize.brentq`) on the dense output between two
+samples of opposite signs, to a tolerance of a few ulps of ``t``; its accuracy is therefore
+that of the dense output.
 """
 
 from __future__ import annotations
@@ -138,47 +142,35 @@ class EventTracker:
                 f"event function `events[{i}]` must return a real scalar; got {v!r}."
             ) from None
 
-    def check(self, t_old: float, t_new: float, y_new: np.ndarray, interp: Callable) -> bool:
+    #: Sub-intervals of a step on which the event functions are sampled (on the interpolant),
+    #: so that two zeros inside one step (``g`` negative at both ends) are seen.
+    SAMPLES = 4
+
+    def check(self, t_old: float, t_new: float, y_new: np.ndarray, interp: Callable,
+              exact: Callable | None = None) -> bool:
         """Look for zeros in ``(t_old, t_new]``; return True if a terminal event stops here.
 
-        `interp(t)` must return the state (in the user's shape) anywhere in the step. After a
-        True return, :attr:`t_stop` and :attr:`y_stop` hold the time and the state of the
-        terminal event.
+        `interp(t)` must return the state (in the user's shape) anywhere in the step. The
+        functions are sampled at :attr:`SAMPLES` - 1 interior points of the step (on
+        `interp`), so that a pair of zeros inside one step (a sign pattern ``- + -`` of the
+        samples) is found and each zero refined, on `exact(t)` if given (the solution inside
+        the step as accurate as the step, for methods whose interpolant is less accurate; the
+        state reported at the event is taken there too). After a True return, :attr:`t_stop` and
+        :attr:`y_stop` hold the time and the state of the terminal event.
         """
         g_old = self.g
         g_new = np.array([self._call(i, t_new, y_new) for i in range(len(self.functions))])
         self.g = g_new
-        up = (g_old <= 0) & (g_new >= 0)
-        down = (g_old >= 0) & (g_new <= 0)
+        ts, gs = self._samples(t_old, t_new, g_old, g_new, interp)
         found = []
         for i in range(len(g_new)):
-            d = self.direction[i]
-            if g_old[i] == 0.0 and g_new[i] == 0.0:
-                continue
-            if g_old[i] == 0.0 and (
-                t_old == self._t0 or (len(self.times[i]) and self.times[i][-1] == t_old)
-            ):
-                continue  # a zero at the initial time, or already reported
-            if (d > 0 and up[i]) or (d < 0 and down[i]) or (d == 0 and (up[i] or down[i])):
-                if g_new[i] == 0.0:
-                    te = t_new
-                elif g_old[i] == 0.0:
-                    te = t_old
-                else:
-                    te = brentq(
-                        lambda s, i=i: self._call(i, s, interp(s)),
-                        t_old,
-                        t_new,
-                        xtol=4 * np.finfo(float).eps * max(abs(t_old), abs(t_new), 1e-300),
-                        rtol=4 * np.finfo(float).eps,
-                    )
-                found.append((te, i))
+            found += [(te, i) for te in self._zeros(i, ts, gs[:, i], interp, exact)]
         if not found:
             return False
         sign = 1.0 if t_new >= t_old else -1.0
         found.sort(key=lambda p: sign * p[0])
         for te, i in found:
-            ye = interp(te)
+            ye = (exact or interp)(te)
             self.times[i].append(te)
             self.states[i].append(np.array(ye, dtype=float, copy=True))
             self.hits[i] += 1
@@ -186,6 +178,67 @@ class EventTracker:
                 self.t_stop, self.y_stop = te, np.array(ye, dtype=float, copy=True)
                 return True
         return False
+
+    def _samples(self, t_old, t_new, g_old, g_new, interp):
+        """Times ``(SAMPLES + 1,)`` across the step and the event values there."""
+        m = self.SAMPLES
+        ts = [t_old + (t_new - t_old) * (k / m) for k in range(m)] + [t_new]
+        rows = [g_old]
+        for tk in ts[1:-1]:
+            yk = interp(tk)
+            rows.append([self._call(i, tk, yk) for i in range(len(self.functions))])
+        rows.append(g_new)
+        return ts, np.array(rows, dtype=float)
+
+    def _zeros(self, i, ts, g, interp, exact):
+        """Zeros of function `i` between consecutive samples, in the directions it watches."""
+        d = self.direction[i]
+        out = []
+        for k in range(len(ts) - 1):
+            ga, gb = g[k], g[k + 1]
+            if ga == 0.0:
+                continue  # reported as the end of the previous interval (or t0: not an event)
+            up, down = ga < 0.0 <= gb, ga > 0.0 >= gb
+            if not ((d >= 0 and up) or (d <= 0 and down)):
+                continue
+            if gb == 0.0:
+                out.append(ts[k + 1])
+                continue
+            te = self._refine(i, ts[k], ts[k + 1], interp)
+            out.append(te if exact is None else self._secant(i, te, ts[0], ts[-1], exact))
+        return out
+
+    def _refine(self, i, ta, tb, interp):
+        """The zero of function `i` in ``(ta, tb)`` by Brent's method on the interpolant."""
+
+        def g(s):
+            return self._call(i, s, interp(s))
+
+        ga, gb = g(ta), g(tb)
+        if ga == 0.0 or gb == 0.0 or (ga > 0) == (gb > 0):  # the interpolant's rounding
+            return tb if abs(gb) <= abs(ga) else ta
+        return brentq(g, ta, tb, xtol=4 * np.finfo(float).eps * max(abs(ta), abs(tb), 1e-300),
+                      rtol=4 * np.finfo(float).eps)
+
+    def _secant(self, i, te, t_old, t_new, exact):
+        """The zero of function `i` on the accurate solution `exact`, by secant iterations
+        from `te` (the zero on the interpolant); `te` itself if they leave the step."""
+        lo, hi = min(t_old, t_new), max(t_old, t_new)
+        eps = np.finfo(float).eps
+        a, b = te, te + 1e-6 * (t_new - t_old)
+        ga, gb = self._call(i, a, exact(a)), self._call(i, b, exact(b))
+        for _ in range(30):
+            if gb == ga or not np.isfinite(gb):
+                break
+            a, b, ga = b, b - gb * (b - a) / (gb - ga), gb
+            if not lo <= b <= hi:
+                return te
+            if abs(b - a) <= 4 * eps * max(abs(b), 1e-300):
+                return b
+            gb = self._call(i, b, exact(b))
+            if gb == 0.0:
+                return b
+        return b if lo <= b <= hi and abs(gb) <= abs(ga) else te
 
     @property
     def t_events(self) -> list[np.ndarray]:

@@ -28,7 +28,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
-from ._driver import Problem, Recorder, initial_step
+from ._loop import Capabilities, Run, StepResult, integrate
 
 __all__ = ["radau"]
 
@@ -57,6 +57,7 @@ NEWTON_MAXITER = 6
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 _EPS = np.finfo(float).eps
+_SQRT_EPS = _EPS**0.5
 
 
 class _Linear:
@@ -78,13 +79,23 @@ class _Linear:
         return self.flat(Minv @ self.stack(v))
 
 
-def _finite_difference_jac(prob, lin, t, y, f):
+def _finite_difference_jac(prob, lin, t, y, f, atol):
+    """Forward differences, each component perturbed by ``sqrt(eps) max(|y_j|, atol_j)``.
+
+    The perturbation follows the scale of ``y`` (as scipy's ``num_jac``, with `atol` as the
+    threshold below which ``|y_j|`` counts as zero), so that the Jacobian of ``s u(t)`` is that
+    of ``u(t)`` for any scale ``s``: neither lost below the resolution of ``y`` (``|y| >=
+    1e17``) nor far too large (``|y| ~ 1e-20``).
+    """
     n, b = lin.n, lin.b
     J = np.empty((b, n, n))
     Y = y.reshape(n, b) if lin.batch else y[:, None]
+    floor = np.broadcast_to(np.asarray(atol, dtype=float).reshape(-1), (y.size,))
+    floor = floor.reshape(n, b) if lin.batch else floor[:, None]
     out = np.empty_like(y)
     for j in range(n):
-        d = np.sqrt(_EPS * np.maximum(1e-5, np.abs(Y[j])))
+        d = _SQRT_EPS * np.maximum(np.abs(Y[j]), floor[j])
+        d[d == 0.0] = _SQRT_EPS
         yp = Y.copy()
         yp[j] += d
         d = yp[j] - Y[j]  # the perturbation actually represented
@@ -129,144 +140,140 @@ def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     """
     if jac is not None and not callable(jac):
         raise ArgumentTypeError(f"`jac` must be a callable jac(t, y) or None; got {jac!r}.")
+    run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
+              events, 0)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
-        return _radau(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
-                      max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                      events=events, jac=jac)
+        return integrate(_RadauStepper(jac, y0.shape, rtol, atol, max_step), run)
 
 
-def _radau(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps, dense_output,
-           events, jac):
-    t0, t_end = t_span
-    direction = 1.0 if t_end > t0 else -1.0
-    shape = y0.shape
-    prob = Problem(fun, shape)
-    lin = _Linear(shape)
-    y = y0.reshape(-1).copy()
-    N = y.size
-    rec = Recorder(t0, y, shape, dense_output, events, "power")
-    f = prob(t0, y, np.empty(N))
-    if not np.isfinite(f).all():
-        rec.fail("The right-hand side is not finite", t0, y)
-        return rec.result("radau", prob.nfev, 0)
-    newton_tol = max(10 * _EPS / rtol, min(0.03, rtol**0.5))
-    if first_step is None:
-        h_abs = initial_step(prob, t0, y, f, direction, 3, rtol, atol, t_end, max_step)
-    else:
-        h_abs = first_step
-    h_abs_old = err_old = None
-    njev = nlu = nrej = naccpt = 0
+_CAPS = Capabilities("radau", error_order=3, order=5, dense_order=3)
 
-    def jacobian(t, y, f):
-        nonlocal njev
-        njev += 1
-        if jac is not None:
-            return _user_jac(jac, lin, t, y, shape)
-        return _finite_difference_jac(prob, lin, t, y, f)
 
-    J = jacobian(t0, y, f)
-    current_jac = True
-    eye = np.eye(lin.n)
-    Minv_r = Minv_c = None
-    Zprev = None  # collocation values of the previous step, for the predictor
-    h_prev = None
-    t = t0
-    F = np.empty((3, N))
-    while direction * (t - t_end) < 0:
-        if naccpt >= max_steps:
-            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached", t, y)
-            break
-        min_step = 10 * abs(math.nextafter(t, direction * math.inf) - t)
-        if h_abs > max_step:
-            h_abs, h_abs_old, err_old = max_step, None, None
-        elif h_abs < min_step:
-            h_abs, h_abs_old, err_old = min_step, None, None
-        rejected = accepted = False
-        while h_abs >= min_step:
-            h = h_abs * direction
-            t_new = t + h
-            if direction * (t_new - t_end) > 0:
-                t_new = t_end
-            h = t_new - t
-            h_abs = abs(h)
-            if Zprev is None:
-                Z0 = np.zeros((3, N))
-            else:  # extrapolate the previous collocation polynomial
-                x = 1.0 + C * (h / h_prev)
-                Q = P.T @ Zprev  # (3, N)
-                Z0 = (x[:, None] * Q[0] + (x**2)[:, None] * Q[1] + (x**3)[:, None] * Q[2]
-                      - Zprev[-1])
-            scale = atol + np.abs(y) * rtol
-            converged = False
-            while not converged:
-                if Minv_r is None:
-                    Minv_r = np.linalg.inv(MU_REAL / h * eye - J)
-                    Minv_c = np.linalg.inv(MU_COMPLEX / h * eye - J)
-                    nlu += 1
-                converged, n_iter, Z, rate = _newton(prob, lin, t, y, h, Z0, scale, newton_tol,
-                                                     Minv_r, Minv_c, F)
-                if not converged:
-                    if current_jac:
-                        break
-                    J = jacobian(t, y, f)
-                    current_jac = True
-                    Minv_r = Minv_c = None
-            if not converged:
-                h_abs *= 0.5
-                Minv_r = Minv_c = None
-                nrej += 1
-                continue
-            y_new = y + Z[-1]
-            ZE = (E @ Z) / h
-            error = lin.solve(Minv_r, f + ZE).real
-            scale = atol + np.maximum(np.abs(y), np.abs(y_new)) * rtol
+class _RadauStepper:
+    """Radau IIA on the one loop: an attempt solves the collocation system by simplified
+    Newton iterations and estimates the error; the step is chosen by Gustafsson's predictive
+    controller (its own ``controller``), with the Jacobian and the factorisations reused
+    while Newton converges fast (HNW II, IV.8)."""
+
+    def __init__(self, jac, shape, rtol, atol, max_step):
+        self.capabilities, self.controller = _CAPS, self
+        self.jac, self.shape, self.rtol, self.atol, self.max_step = jac, shape, rtol, atol, \
+            max_step
+        self.start_order = 3
+        self.lin = _Linear(shape)
+        self.newton_tol = max(10 * _EPS / rtol, min(0.03, rtol**0.5))
+        self.njev = self.nlu = self.nfev = 0
+        self.h_abs_old = self.err_old = self.h_next = None
+        self.Minv_r = self.Minv_c = self.Zprev = self.h_prev = None
+        self.rejected = False  # an error rejection in this step (not a Newton failure)
+
+    def _jacobian(self, t, y, f):
+        self.njev += 1
+        self.current_jac = True
+        if self.jac is not None:
+            return _user_jac(self.jac, self.lin, t, y, self.shape)
+        return _finite_difference_jac(self.prob, self.lin, t, y, f, self.atol)
+
+    def begin(self, prob, t0, y0, f0):
+        self.prob, self.f, self.eye = prob, f0, np.eye(self.lin.n)
+        self.F = np.empty((3, y0.size))
+        self.J = self._jacobian(t0, y0, f0)
+        return y0
+
+    def _predictor(self, h, size):
+        if self.Zprev is None:
+            return np.zeros((3, size))
+        x = 1.0 + C * (h / self.h_prev)  # extrapolate the previous collocation polynomial
+        Q = P.T @ self.Zprev  # (3, N)
+        return (x[:, None] * Q[0] + (x**2)[:, None] * Q[1] + (x**3)[:, None] * Q[2]
+                - self.Zprev[-1])
+
+    def _newton(self, t, y, h):
+        """Newton on the collocation system, with a fresh Jacobian once if it fails."""
+        Z0, scale = self._predictor(h, y.size), self.atol + np.abs(y) * self.rtol
+        while True:
+            if self.Minv_r is None:
+                self.Minv_r = np.linalg.inv(MU_REAL / h * self.eye - self.J)
+                self.Minv_c = np.linalg.inv(MU_COMPLEX / h * self.eye - self.J)
+                self.nlu += 1
+            out = _newton(self.prob, self.lin, t, y, h, Z0, scale, self.newton_tol,
+                          self.Minv_r, self.Minv_c, self.F)
+            if out[0] or self.current_jac:
+                return out
+            self.J = self._jacobian(t, y, self.f)
+            self.Minv_r = self.Minv_c = None
+
+    def attempt(self, t, y, h):
+        if self.h_next is not None and self.h_next > self.max_step:  # clamped by max_step
+            self.h_abs_old = self.err_old = None
+        converged, n_iter, Z, rate = self._newton(t, y, h)
+        if not converged:
+            self._last_data = "newton"
+            return StepResult(None, None, math.nan, "newton")
+        lin, prob, N = self.lin, self.prob, y.size
+        y_new = y + Z[-1]
+        ZE = (E @ Z) / h
+        error = lin.solve(self.Minv_r, self.f + ZE).real
+        scale = self.atol + np.maximum(np.abs(y), np.abs(y_new)) * self.rtol
+        err = prob.norm(error / scale)
+        if self.rejected and err > 1:
+            error = lin.solve(self.Minv_r, prob(t, y + error, np.empty(N)) + ZE).real
             err = prob.norm(error / scale)
-            safety = 0.9 * (2 * NEWTON_MAXITER + 1) / (2 * NEWTON_MAXITER + n_iter)
-            if rejected and err > 1:
-                error = lin.solve(Minv_r, prob(t, y + error, np.empty(N)) + ZE).real
-                err = prob.norm(error / scale)
-            if not err <= 1:
-                factor = _predict(h_abs, h_abs_old, err, err_old) if err == err else 0.0
-                h_abs *= max(MIN_FACTOR, safety * factor)
-                Minv_r = Minv_c = None
-                rejected = True
-                nrej += 1
-            else:
-                accepted = True
-                break
-        if not accepted:
-            rec.fail("The step size fell below the resolution of t (step size underflow)", t, y)
-            break
-        naccpt += 1
-        recompute_jac = n_iter > 2 and rate > 1e-3
-        factor = min(MAX_FACTOR, safety * _predict(h_abs, h_abs_old, err, err_old))
-        if not recompute_jac and factor < 1.2:
+        safety = 0.9 * (2 * NEWTON_MAXITER + 1) / (2 * NEWTON_MAXITER + n_iter)
+        self._last_data = (t + h, h, Z, n_iter, rate, safety)
+        return StepResult(y_new, None, err, self._last_data)
+
+    def next(self, err, h_abs, rejected):
+        step_data = self._last_data
+        if step_data == "newton":  # Newton failed: halve the step, new factorisations
+            self.Minv_r = self.Minv_c = None
+            self.h_next = h_abs * 0.5
+            return self.h_next, False
+        safety = step_data[5]
+        if not err <= 1:
+            factor = _predict(h_abs, self.h_abs_old, err, self.err_old) if err == err else 0.0
+            self.Minv_r = self.Minv_c = None
+            self.rejected = True
+            self.h_next = h_abs * max(MIN_FACTOR, safety * factor)
+            return self.h_next, False
+        n_iter, rate = step_data[3], step_data[4]
+        self.recompute_jac = n_iter > 2 and rate > 1e-3
+        factor = min(MAX_FACTOR, safety * _predict(h_abs, self.h_abs_old, err, self.err_old))
+        if not self.recompute_jac and factor < 1.2:
             factor = 1.0
         else:
-            Minv_r = Minv_c = None
-        f_new = prob(t_new, y_new, np.empty(N))
-        if recompute_jac:
-            J = jacobian(t_new, y_new, f_new)
-            current_jac = True
+            self.Minv_r = self.Minv_c = None
+        self.h_abs_old, self.err_old = h_abs, err
+        self.h_next = h_abs * factor
+        return self.h_next, True
+
+    def finite(self, step):
+        return bool(np.isfinite(step.y).all())
+
+    def accept(self, step):
+        t_new, h, Z = step.data[0], step.data[1], step.data[2]
+        self.f = self.prob(t_new, step.y, np.empty(step.y.size))
+        if self.recompute_jac:
+            self.J = self._jacobian(t_new, step.y, self.f)
         else:
-            current_jac = False
-        h_abs_old, err_old = h_abs, err
-        coeffs = (P.T @ Z) if (rec.cs is not None or events is not None) else None
-        stop = rec.accept(t_new, y_new, coeffs)
-        Zprev, h_prev = Z, h
-        h_abs *= factor
-        t, y, f = t_new, y_new, f_new
-        if not np.isfinite(y).all():  # pragma: no cover - the error test rejects these
-            rec.fail("The state became non-finite", t, y)
-            break
-        if stop:
-            break
-    return rec.result("radau", prob.nfev, nrej, {"njev": njev, "nlu": nlu})
+            self.current_jac = False
+        self.Zprev, self.h_prev, self.rejected = Z, h, False
+
+    def hlamb(self, h_abs, step):
+        return None
+
+    def dense(self, t, y, h, step):
+        return step.y, P.T @ step.data[2], None
+
+    def stats(self):
+        return {"njev": self.njev, "nlu": self.nlu}
 
 
 def _predict(h_abs, h_abs_old, err, err_old):
     """Gustafsson's predictive step-size factor (HNW II, IV.8, eq. (8.25))."""
-    if err_old is None or h_abs_old is None or err == 0:
+    if err == 0:  # an exact step (y' = 1, free fall): grow as much as allowed
+        return MAX_FACTOR
+    if err_old is None or h_abs_old is None:
         mult = 1.0
     else:
         mult = h_abs / h_abs_old * (err_old / err) ** 0.25

@@ -38,8 +38,12 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _rkn12_coefficients as _rkn12
-from ._driver import Recorder
+from ._driver import Recorder, Stops
+from ._floatpath import make_rkn_stepper
+from ._loop import Capabilities, Run, StepResult, integrate
 from ._registry import register
+from .api import _check_t_span, _check_y0, solve
+from .events import EventTracker
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
 
@@ -191,75 +195,6 @@ DPRKN12 = _pair_from_table("rkn1210", 12, 10, _rkn12)
 # generated kernels
 
 
-def _combo(coeffs, names):
-    terms = [f"{a!r}*{k}" for a, k in zip(coeffs, names, strict=False) if a != 0.0]
-    return " + ".join(terms) if terms else "0.0"
-
-
-def _make_step(pair, d, unrolled):
-    """Generate ``step(fun, t, q, v, k1, h, rtol, aq, av, control)``.
-
-    Returns ``(q1, v1, k_last, err2)`` where ``err2`` is the sum over the ``2 d`` components of
-    the squared scaled error (0.0 when ``control`` is false). With `unrolled`, ``q``, ``v`` and
-    the stages are lists of floats; otherwise 1-D ndarrays.
-    """
-    co = pair.floats()
-    s = pair.stages
-    dq = [x - y for x, y in zip(co["bbar"], co["bbar_hat"], strict=True)]
-    dv = [x - y for x, y in zip(co["b"], co["b_hat"], strict=True)]
-    idx = [f"[{j}]" for j in range(d)] if unrolled else [""]
-
-    def vec(fmt):
-        parts = [fmt(j) for j in idx]
-        return "[" + ", ".join(parts) + "]" if unrolled else parts[0]
-
-    def ks(i, j):
-        return [f"k{m + 1}{j}" for m in range(i)]
-
-    L = ["def step(fun, t, q, v, k1, h, rtol, aq, av, control):", "    h2 = h * h"]
-    conv = ".tolist()" if unrolled else ".copy()"
-    nk = s - 1 if pair.fsal else s  # stages entering q1 and v1 before the end-point call
-    for i in range(1, nk):
-        ci = co["c"][i]
-        row = co["abar"][i][:i]
-
-        def stage(j, i=i, ci=ci, row=row):
-            return f"q{j} + {ci!r}*h*v{j} + h2*(" + _combo(row, ks(i, j)) + ")"
-
-        L.append("    Q = " + vec(stage))
-        L.append(f"    k{i + 1} = _asarray(fun(t + {ci!r}*h, _arr(Q)), dtype=float){conv}")
-    wq, wv = co["bbar"][:nk], co["b"][:nk]
-    L.append("    q1 = " + vec(lambda j: f"q{j} + h*v{j} + h2*(" + _combo(wq, ks(nk, j)) + ")"))
-    L.append("    v1 = " + vec(lambda j: f"v{j} + h*(" + _combo(wv, ks(nk, j)) + ")"))
-    # the acceleration at (t + h, q1): the last stage (FSAL) or the next step's first
-    end = f"k{s}" if pair.fsal else "knext"
-    L.append(f"    {end} = _asarray(fun(t + h, _arr(q1)), dtype=float){conv}")
-    if pair.fsal:
-        bs = co["b"][s - 1]
-        if bs != 0.0:  # with FSAL the last stage may weigh in the velocity update
-            L.append("    v1 = " + vec(lambda j: f"v1{j} + h*{bs!r}*k{s}{j}"))
-    L.append("    if not control:")
-    L.append(f"        return q1, v1, {end}, 0.0")
-    L.append("    eq = " + vec(lambda j: "h2*(" + _combo(dq, ks(s, j)) + ")"))
-    L.append("    ev = " + vec(lambda j: "h*(" + _combo(dv, ks(s, j)) + ")"))
-    if unrolled:
-        terms = []
-        for j in range(d):
-            terms.append(f"(eq[{j}]/(aq[{j}] + rtol*max(abs(q[{j}]), abs(q1[{j}]))))**2")
-            terms.append(f"(ev[{j}]/(av[{j}] + rtol*max(abs(v[{j}]), abs(v1[{j}]))))**2")
-        L.append("    err2 = " + " + ".join(terms))
-    else:
-        L.append("    sq = eq / (aq + rtol*_max(_abs(q), _abs(q1)))")
-        L.append("    sv = ev / (av + rtol*_max(_abs(v), _abs(v1)))")
-        L.append("    err2 = float(sq @ sq + sv @ sv)")
-    L.append(f"    return q1, v1, {end}, err2")
-    src = "\n".join(L)
-    ns = {"_arr": np.array, "_asarray": np.asarray, "_max": np.maximum, "_abs": np.abs}
-    exec(compile(src, f"<rigidmech.ode {pair.name} kernel d={d}>", "exec"), ns)  # noqa: S102
-    return ns["step"]
-
-
-_KERNELS: dict = {}
 #: classical step-size controller: factor safety * err**(-1/(q+1)) clipped to [0.2, facmax]
 #: (q the embedded order), no increase right after a rejection
 _SAFETY, _FACMAX = 0.9, 5.0
@@ -272,11 +207,7 @@ _CONTROL = {"rkn1210": (0.6, 3.0)}
 
 def _kernel(pair, d):
     unrolled = d <= FLOAT_PATH_MAX_D
-    key = (pair.name, d if unrolled else -1)
-    k = _KERNELS.get(key)
-    if k is None:
-        k = _KERNELS[key] = _make_step(pair, d, unrolled)
-    return k, unrolled
+    return make_rkn_stepper(pair, d, unrolled), unrolled
 
 
 # ---------------------------------------------------------------------------------------------
@@ -284,21 +215,14 @@ def _kernel(pair, d):
 
 
 def _check_common(fun, t_span, y0):
+    """The checks of :func:`~rigidmech.ode.solve` (one set of rules), plus ``[q0, v0]``."""
     if not callable(fun):
         raise ArgumentTypeError(f"`fun` must be callable a(t, q); got {type(fun).__name__}.")
-    try:
-        t0, t1 = (float(x) for x in t_span)
-    except (TypeError, ValueError):
+    t0, t1 = _check_t_span(t_span)
+    y = _check_y0(y0)
+    if y.ndim != 1 or y.shape[0] % 2:
         raise ArgumentError(
-            f"`t_span` must be a pair of floats (t0, t1); got {t_span!r}.") from None
-    if not (math.isfinite(t0) and math.isfinite(t1)) or t0 == t1:
-        raise ArgumentError(f"`t_span` must be two distinct finite times; got {t_span!r}.")
-    y = np.array(y0, dtype=float)
-    if y.ndim != 1 or y.shape[0] % 2 or y.shape[0] == 0:
-        raise ArgumentError(
-            f"`y0` must be a 1-D [q0, v0] of even length 2 d; got shape {y.shape}.")
-    if not np.all(np.isfinite(y)):
-        raise ArgumentError(f"`y0` must be finite; got {y}.")
+            f"`y0` must be [q0, v0] of even length n (no batch axis); got shape {y.shape}.")
     return t0, t1, y
 
 
@@ -330,10 +254,11 @@ def _dense_coeffs(h, q0, v0, a0, q1, v1, a1):
 
 
 def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-         dense_output, events):
+         dense_output, events, t_eval=None):
     t0, t1, y = _check_common(fun, t_span, y0)
+    if t0 == t1:  # nothing to integrate: y0, as solve returns it
+        return solve(fun, (t0, t1), y, method=pair.name, max_steps=max_steps)
     d = y.shape[0] // 2
-    direction = 1.0 if t1 > t0 else -1.0
     if isinstance(max_steps, bool) or not isinstance(max_steps, int | np.integer) or (
             max_steps < 1):
         raise ArgumentError(f"`max_steps` must be an int >= 1; got {max_steps!r}.")
@@ -344,117 +269,148 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     if a.shape != (d,):
         raise ArgumentError(
             f"`fun` must return the acceleration of shape ({d},); got shape {a.shape}.")
-    nfev = 1
     if unrolled:
         q, v, a = q.tolist(), v.tolist(), a.tolist()
-    rec = Recorder(t0, y, (2 * d,), bool(dense_output), events)
+    if step is not None:  # constant step, no error control
+        return _run_fixed(pair, fun, (t0, t1), y, step, max_steps, dense_output, events, kern,
+                          unrolled, (q, v, a))
+    # rtol, atol, max_step and first_step were checked by ode.solve (the only way here)
+    rtol, at, max_step = float(rtol), _tol_list("atol", atol, d), float(max_step)
+    first_order = _FirstOrder(fun, d)
+    if first_step is not None:
+        first_step = min(abs(float(first_step)), abs(t1 - t0), max_step)
+    run = Run(first_order, (t0, t1), y, rtol, at, first_step, max_step, max_steps,
+              bool(dense_output), events, 0, "i", None,
+              Stops(t_eval, (t0, t1)) if t_eval is not None else None)
+    stepper = _RknStepper(pair, fun, d, kern, unrolled, rtol, at, (q, v, a))
+    with np.errstate(over="ignore", invalid="ignore"):
+        return integrate(stepper, run, np.concatenate([np.asarray(v, dtype=float),
+                                                       np.asarray(a, dtype=float)]))
+
+
+def _coeffs_of(h, qa, va, aa, qb, vb, ab):
+    arr = np.asarray
+    return lambda: _dense_coeffs(h, arr(qa), arr(va), arr(aa), arr(qb), arr(vb), arr(ab))
+
+
+def _run_fixed(pair, fun, t_span, y, step, max_steps, dense_output, events, kern, unrolled,
+               qva):
+    """The constant-step run (direct calls with ``step=h``): the 6th/12th-order formula
+    without error control."""
+    t0, t1 = t_span
+    q, v, a = qva
     length = abs(t1 - t0)
     per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end-point call
-
-    def coeffs_of(h, qa, va, aa, qb, vb, ab):
-        arr = np.asarray
-        return lambda: _dense_coeffs(h, arr(qa), arr(va), arr(aa), arr(qb), arr(vb), arr(ab))
-
-    if step is not None:  # constant step, no error control
-        h = float(step)
-        if not (math.isfinite(h) and h > 0):
-            raise ArgumentError(f"`step` must be a finite number > 0; got {step!r}.")
-        n = max(1, math.ceil(length / h * (1 - 1e-12)))
-        if n > max_steps:
-            raise ArgumentError(
-                f"`step` = {h:g} needs {n} steps over `t_span`, more than `max_steps` = "
-                f"{max_steps}.")
-        h = (t1 - t0) / n
-        with np.errstate(over="ignore", invalid="ignore"):
-            for i in range(n):
-                t = t0 + i * h
-                q1, v1, a1, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
-                nfev += per_step
-                tn = t0 + (i + 1) * h
-                y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
-                if rec.accept(tn, y1, coeffs_of(h, q, v, a, q1, v1, a1)):
-                    break
-                q, v, a = q1, v1, a1
-                if not np.all(np.isfinite(y1)):
-                    rec.fail("Non-finite state", tn, y1)
-                    break
-        return rec.result(pair.name, nfev, 0, stats={"step": abs(h), "stages": pair.stages})
-
-    rtol = float(rtol)
-    if not (math.isfinite(rtol) and rtol >= 0):
-        raise ArgumentError(f"`rtol` must be a finite float >= 0; got {rtol!r}.")
-    at = _tol_list("atol", atol, d)
-    if rtol == 0 and np.any(at == 0):
-        raise ArgumentError("`rtol` and `atol` must not both be 0; got rtol = 0, atol = 0.")
-    max_step = abs(float(max_step))
-    if not max_step > 0:
-        raise ArgumentError(f"`max_step` must be > 0; got {max_step}.")
-    aq, av = (at[:d].tolist(), at[d:].tolist()) if unrolled else (at[:d], at[d:])
-    expo = 1.0 / (pair.order_embedded + 1)
-    safety, fmax = _CONTROL.get(pair.name, (_SAFETY, _FACMAX))
-    # Hairer's initial step (HNW I, II.4) on the first-order form y' = (v, a)
-    if first_step is None:
-        Y = np.concatenate([np.asarray(q), np.asarray(v)])
-        Fv = np.concatenate([np.asarray(v), np.asarray(a)])
-        sc = at + rtol * np.abs(Y)
-        d0 = math.sqrt(np.mean((Y / sc) ** 2))
-        d1 = math.sqrt(np.mean((Fv / sc) ** 2))
-        h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
-        h0 = min(h0, length)
-        qh = np.asarray(q) + direction * h0 * np.asarray(v)
-        ah = np.asarray(fun(t0 + direction * h0, qh), dtype=float)
-        nfev += 1
-        F1 = np.concatenate([np.asarray(v) + direction * h0 * np.asarray(a), ah])
-        d2 = math.sqrt(np.mean(((F1 - Fv) / sc) ** 2)) / h0
-        if max(d1, d2) <= 1e-15:
-            h1 = max(1e-6, h0 * 1e-3)
-        else:
-            h1 = (0.01 / max(d1, d2)) ** (1.0 / (pair.order + 1))
-        h = min(100 * h0, h1, length, max_step)
-    else:
-        h = min(abs(float(first_step)), length, max_step)
-    t = t0
-    nrej = 0
-    nacc = 0
-    inv2d = 1.0 / (2 * d)
-    facmax = fmax
+    coeffs_of = _coeffs_of
+    nfev = 1
+    rec = Recorder(t0, y, y.shape, bool(dense_output), events)
+    h = float(step)
+    if not (math.isfinite(h) and h > 0):
+        raise ArgumentError(f"`step` must be a finite number > 0; got {step!r}.")
+    n = max(1, math.ceil(length / h * (1 - 1e-12)))
+    if n > max_steps:
+        raise ArgumentError(
+            f"`step` = {h:g} needs {n} steps over `t_span`, more than `max_steps` = "
+            f"{max_steps}.")
+    h = (t1 - t0) / n
     with np.errstate(over="ignore", invalid="ignore"):
-        while direction * (t1 - t) > 0:
-            if nacc >= max_steps:
-                rec.fail(f"`max_steps` = {max_steps} reached", t, rec.ys[-1])
-                break
-            if h < 10 * abs(np.nextafter(t, direction * np.inf) - t):
-                rec.fail("Step size underflow", t, rec.ys[-1])
-                break
-            last = h >= abs(t1 - t) * (1 - 1e-12)
-            hs = (t1 - t) if last else direction * h
-            q1, v1, a1, err2 = kern(fun, t, q, v, a, hs, rtol, aq, av, True)
+        for i in range(n):
+            t = t0 + i * h
+            q1, v1, a1, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
             nfev += per_step
-            err = math.sqrt(err2 * inv2d)
-            if err <= 1.0:
-                tn = t1 if last else t + hs
-                y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
-                if not np.all(np.isfinite(y1)):
-                    rec.fail("Non-finite state", tn, y1)
-                    break
-                nacc += 1
-                stop = rec.accept(tn, y1, coeffs_of(hs, q, v, a, q1, v1, a1))
-                t, q, v, a = tn, q1, v1, a1
-                if stop:
-                    break
-                fac = facmax if err == 0.0 else min(facmax, max(0.2, safety * err ** -expo))
-                h = min(abs(hs) * fac, max_step)
-                facmax = fmax
-            else:
-                nrej += 1
-                fac = 0.2 if not math.isfinite(err) else max(0.2, safety * err ** -expo)
-                h = abs(hs) * fac
-                facmax = 1.0
-    return rec.result(pair.name, nfev, nrej, stats={"stages": pair.stages})
+            tn = t0 + (i + 1) * h
+            y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
+            if rec.accept(tn, y1, coeffs_of(h, q, v, a, q1, v1, a1)):
+                break
+            q, v, a = q1, v1, a1
+            if not np.all(np.isfinite(y1)):
+                rec.fail("Non-finite state", tn, y1)
+                break
+    return rec.result(pair.name, nfev, 0, stats={"step": abs(h), "stages": pair.stages})
+
+
+class _FirstOrder:
+    """``y' = (v, a(t, q))``: the first-order form of ``q'' = a(t, q)``, for the starting step
+    and the checks of the loop."""
+
+    __slots__ = ("fun", "d")
+
+    def __init__(self, fun, d):
+        self.fun, self.d = fun, d
+
+    def __call__(self, t, y):
+        d = self.d
+        return np.concatenate([y[d:], np.asarray(self.fun(t, y[:d].copy()), dtype=float)])
+
+
+class _RknStepper:
+    """A Runge-Kutta-Nystrom pair on the one loop: the generated step of the pair, its own
+    controller (safety factor and growth limit of the pair, error accepted up to 1)."""
+
+    def __init__(self, pair, fun, d, kern, unrolled, rtol, at, qva):
+        self.pair, self.fun, self.d, self.kern, self.unrolled = pair, fun, d, kern, unrolled
+        self.capabilities = Capabilities(pair.name, error_order=pair.order_embedded,
+                                         order=pair.order, dense_order=5)
+        self.start_order = pair.order
+        self.controller = self
+        self.rtol = rtol
+        self.aq, self.av = (at[:d].tolist(), at[d:].tolist()) if unrolled else (at[:d], at[d:])
+        self.expo = 1.0 / (pair.order_embedded + 1)
+        self.safety, self.fmax = _CONTROL.get(pair.name, (_SAFETY, _FACMAX))
+        self.per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end call
+        self.inv2d = 1.0 / (2 * d)
+        self.a = qva[2]
+        self.nfev = 0
+
+    def begin(self, prob, t0, y0, f0):
+        return y0.tolist() if self.unrolled else y0.copy()
+
+    def _split(self, y):
+        d = self.d
+        return y[:d], y[d:]
+
+    def attempt(self, t, y, h):
+        q, v = self._split(y)
+        q1, v1, a1, err2 = self.kern(self.fun, t, q, v, self.a, h, self.rtol, self.aq,
+                                     self.av, True)
+        self.nfev += self.per_step
+        y1 = (q1 + v1) if self.unrolled else np.concatenate([q1, v1])
+        return StepResult(y1, a1, math.sqrt(err2 * self.inv2d), (h, q, v, q1, v1))
+
+    def next(self, err, h_abs, rejected):
+        facmax = 1.0 if rejected else self.fmax
+        if err <= 1.0:
+            fac = facmax if err == 0.0 else min(facmax, max(0.2, self.safety * err**-self.expo))
+            return h_abs * fac, True
+        fac = 0.2 if not math.isfinite(err) else max(0.2, self.safety * err**-self.expo)
+        return h_abs * fac, False
+
+    def finite(self, step):
+        return bool(np.all(np.isfinite(step.y)))
+
+    def accept(self, step):
+        self.a = step.f
+
+    def hlamb(self, h_abs, step):
+        return None
+
+    def dense(self, t, y, h, step):
+        hs, q, v, q1, v1 = step.data
+        a0, a1, kern, fun = self.a, step.f, self.kern, self.fun
+
+        def exact(s):
+            self.nfev += self.per_step
+            q_, v_, _, _ = kern(fun, t, q, v, a0, s - t, 0.0, None, None, False)
+            return np.concatenate([np.asarray(q_, dtype=float), np.asarray(v_, dtype=float)])
+
+        return (np.asarray(step.y, dtype=float), _coeffs_of(hs, q, v, a0, q1, v1, a1), exact)
+
+    def stats(self):
+        return {"stages": self.pair.stages}
 
 
 def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-          max_step=np.inf, max_steps=100_000, dense_output=False, events=None):
+          max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
     r"""Dormand-Prince 6(4) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)` (ch. 27).
 
     Parameters
@@ -479,7 +435,13 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     dense_output : bool
         Fill ``result.sol`` (quintic Hermite, see Notes).
     events : EventTracker, optional
-        As built by :func:`~rigidmech.ode.solve` (see :mod:`rigidmech.ode.events`).
+        As built by :func:`~rigidmech.ode.solve` (see :mod:`rigidmech.ode.events`); the event
+        times located on the interpolant are refined on the method's own step from the start
+        of the step to each trial time, so that they are as accurate as the steps.
+    t_eval : array_like, optional
+        Times the adaptive steps land on (the result still holds every step;
+        :func:`~rigidmech.ode.solve` keeps those at `t_eval`), so that the samples are as
+        accurate as the steps.
 
     Returns
     -------
@@ -515,12 +477,12 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     >>> bool(np.allclose(r.y[:, -1], [1.0, 0.0], atol=1e-9)), r.status
     (True, 0)
     """
-    return _run(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events)
+    return _direct(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step,
+                   max_steps, dense_output, events, t_eval)
 
 
 def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-            max_step=np.inf, max_steps=100_000, dense_output=False, events=None):
+            max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
     r"""Dormand-El-Mikkawy-Prince 12(10) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)`.
 
     Parameters, returns and errors are those of :func:`rkn64`.
@@ -552,9 +514,38 @@ def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None
     >>> bool(np.allclose(r.y[:, -1], [1.0, 0.0], atol=1e-12)), r.nsteps < 20
     (True, True)
     """
-    return _run(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events)
+    return _direct(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step,
+                   max_steps, dense_output, events, t_eval)
 
 
-register("rkn64", rkn64, kind="adaptive_second_order")
-register("rkn1210", rkn1210, kind="adaptive_second_order")
+def _direct(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+            dense_output, events, t_eval):
+    """A direct call: through :func:`~rigidmech.ode.solve` (its checks, its rules) with error
+    control; the constant step (`step`), which ``solve`` does not offer for these pairs, runs
+    here after the same checks of ``t_span`` and ``y0``."""
+    if step is None:
+        if isinstance(events, EventTracker):  # built by the caller: its functions
+            events = events.functions
+        return solve(fun, t_span, y0, method=pair.name, rtol=rtol, atol=atol,
+                     first_step=first_step, max_step=max_step, max_steps=max_steps,
+                     dense_output=dense_output, events=events, t_eval=t_eval)
+    return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+                dense_output, events, t_eval)
+
+
+def _solver(pair):
+    def method(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
+               max_step=np.inf, max_steps=100_000, dense_output=False, events=None,
+               t_eval=None):
+        return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
+                    dense_output, events, t_eval)
+
+    method.__name__ = method.__qualname__ = pair.name
+    method.__doc__ = f"The {pair.name} pair as called by :func:`~rigidmech.ode.solve`."
+    return method
+
+
+register("rkn64", _solver(DPRKN6), kind="adaptive_second_order",
+         capabilities=("t_eval_at_steps",))
+register("rkn1210", _solver(DPRKN12), kind="adaptive_second_order",
+         capabilities=("t_eval_at_steps",))

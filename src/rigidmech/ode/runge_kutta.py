@@ -17,7 +17,7 @@ from rigidmech._core.errors import ArgumentTypeError
 
 from . import _registry, tableaux
 from ._driver import Problem, fail_message
-from ._floatpath import FLOAT_PATH_MAX_N, make_unrolled_stepper
+from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
 from ._result import OdeResult
 
 __all__ = ["fixed_step_method", "integrate_fixed"]
@@ -98,17 +98,11 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
                      status=status, message=message, method=tableau.name)
 
 
-_KERNELS: dict = {}
-
-
 def _integrate_fixed_float(tableau, fun, t0, t1, y0, f0, nsteps, h):
     """:func:`integrate_fixed` on lists of floats, for one small trajectory."""
     n = y0.shape[0]
-    key = (tableau, n)
-    if key not in _KERNELS:
-        _KERNELS[key] = make_unrolled_stepper(tableau.name, tableau.A, tableau.b, tableau.c,
-                                              tableau.stages, None, n)
-    step = _KERNELS[key]
+    step = cached(("rk-fixed", tableau, n), lambda: make_unrolled_stepper(
+        tableau.name, tableau.A, tableau.b, tableau.c, tableau.stages, None, n))
     arr, isfinite = np.array, math.isfinite
     y = y0.tolist()
     ys = [y]

@@ -352,5 +352,14 @@ DOP853 = ButcherTableau(
     b_embedded=_d853.B - _d853.E5[:_n], order_embedded=5,
 )
 
+# Bogacki & Shampine (1989), 3(2) with FSAL: the 4th stage is f(t + h, y1) (scipy's RK23).
+_BS_B = [2 / 9, 1 / 3, 4 / 9, 0]
+#: Error weights b - b_embedded of Bogacki-Shampine 3(2) (b_embedded of order 2).
+BS32_E = _readonly([2 / 9 - 7 / 24, 1 / 3 - 1 / 4, 4 / 9 - 1 / 3, -1 / 8])
+BS32 = ButcherTableau(
+    "bs32", [[0, 0, 0, 0], [1 / 2, 0, 0, 0], [0, 3 / 4, 0, 0], _BS_B], _BS_B,
+    [0, 1 / 2, 3 / 4, 1], order=3, b_embedded=[7 / 24, 1 / 4, 1 / 3, 1 / 8], order_embedded=2,
+)
+
 #: Every tableau of this module, by name.
-ALL = {t.name: t for t in (EULER, HEUN, MIDPOINT, RK4, RK38, DOPRI5, DOP853)}
+ALL = {t.name: t for t in (EULER, HEUN, MIDPOINT, RK4, RK38, DOPRI5, DOP853, BS32)}

@@ -1,4 +1,4 @@
-"""Exact solutions of the reference problems (rigidmech.ode.problems, book ch. 27).
+"""Exact solutions of the reference problems (rigidmech.testing.problems, book ch. 27).
 
 Each closed form is checked against an independent route: scipy's DOP853 at rtol = atol = 1e-13
 (global error about 1e-11 over one or two periods, measured while writing these tests), its
@@ -15,7 +15,7 @@ from numpy.testing import assert_allclose
 from scipy.integrate import solve_ivp
 
 from rigidmech._core.errors import ArgumentError
-from rigidmech.ode import problems as P
+from rigidmech.testing import problems as P
 
 SMOOTH = [
     pytest.param(lambda: P.pendulum(170.0, periods=2), id="pendulum-170deg"),

@@ -27,9 +27,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from fractions import Fraction
 
 import numpy as np
-from scipy.special import ellipj, ellipk, ellipkinc
+from scipy.special import ellipj, ellipk, ellipkm1, elliprf
 
 from rigidmech._core.errors import ArgumentError
 
@@ -612,6 +613,35 @@ def arenstorf(orbits: int = 1):
 # ---------------------------------------------------------------------------------------------
 
 
+def _incomplete_f(phi, m1, K):
+    """``F(phi | m)`` from ``m1 = 1 - m`` (Carlson's form ``sin phi R_F(cos^2, cos^2 + m1 sin^2,
+    1)``, free of ``1 - m sin^2 phi``), extended by ``F(phi + k pi) = F(phi) + 2 k K``."""
+    k = round(phi / math.pi)
+    p = phi - k * math.pi
+    s, c = math.sin(p), math.cos(p)
+    return 2 * k * K + s * float(elliprf(c * c, c * c + m1 * s * s, 1.0))
+
+
+def _jacobi_agm(u, m1):
+    """``sn, cn, dn (u | m)`` from ``m1 = 1 - m`` by the arithmetic-geometric mean
+    (Abramowitz and Stegun 16.4), started from ``b0 = sqrt(m1)`` so that no digit of ``1 - m``
+    is lost when ``m`` is close to 1."""
+    a, b, c = [1.0], [math.sqrt(m1)], [math.sqrt(1.0 - m1)]
+    while abs(c[-1]) > 1e-17 * a[-1] and len(a) < 40:
+        a.append(0.5 * (a[-1] + b[-1]))
+        c.append(0.5 * (a[-2] - b[-1]))
+        b.append(math.sqrt(a[-2] * b[-1]))
+    n = len(a) - 1
+    phi = (2.0**n) * a[n] * np.asarray(u, dtype=float)
+    phi_next = phi
+    for j in range(n, 0, -1):
+        phi_next = phi
+        phi = 0.5 * (phi + np.arcsin(c[j] / a[j] * np.sin(phi)))
+    sn, cn = np.sin(phi), np.cos(phi)
+    dn = cn / np.cos(phi_next - phi) if n else np.ones_like(phi)
+    return sn, cn, dn
+
+
 def free_rigid_body(
     inertia=(1.0, 2.0, 3.0), omega0=(1.0, 0.2, 0.5), *, periods: float = 5.0
 ):
@@ -672,6 +702,13 @@ def free_rigid_body(
     \mathrm{cn}\,u_0)` at :math:`t = 0`; the period is :math:`4K(m)/\lambda` (Landau and
     Lifshitz, *Mechanics*, section 37, with the signs fixed by Euler's equations).
 
+    To stay exact near the separatrix, :math:`2TC - L^2 = A(C-A)\omega_1^2 + B(C-B)\omega_2^2`,
+    :math:`L^2 - 2TA = B(B-A)\omega_2^2 + C(C-A)\omega_3^2` and
+    :math:`2TB - L^2 = A(B-A)\omega_1^2 - C(C-B)\omega_3^2` are formed in exact rational
+    arithmetic from the given floats, and :math:`K`, :math:`u_0` and
+    :math:`\mathrm{sn}, \mathrm{cn}, \mathrm{dn}` are computed from :math:`1 - m` (Carlson's
+    :math:`R_F`, the arithmetic-geometric mean) rather than from :math:`m`.
+
     Examples
     --------
     >>> p = free_rigid_body()
@@ -689,32 +726,39 @@ def free_rigid_body(
     if w.shape != (3,) or not np.all(np.isfinite(w)):
         raise ArgumentError(f"`omega0` must be 3 finite numbers; got {omega0!r}.")
     periods = _check_positive("periods", periods)
-    T2 = A * w[0] ** 2 + B * w[1] ** 2 + C * w[2] ** 2  # 2T
     L2 = A * A * w[0] ** 2 + B * B * w[1] ** 2 + C * C * w[2] ** 2
-    gap = T2 * B - L2
+    # the three differences exactly (rational arithmetic on the given floats), then rounded
+    # once: near the separatrix 2TB - L^2 is a tiny difference of large terms, whose rounding
+    # in floats would cost as many digits of 1 - m (and of the solution) as it cancels
+    fA, fB, fC = (Fraction(v) for v in (A, B, C))
+    f1, f2, f3 = (Fraction(float(v)) ** 2 for v in w)
+    cC_q = fA * (fC - fA) * f1 + fB * (fC - fB) * f2  # 2TC - L^2 >= 0
+    cA_q = fB * (fB - fA) * f2 + fC * (fC - fA) * f3  # L^2 - 2TA >= 0
+    gap_q = fA * (fB - fA) * f1 - fC * (fC - fB) * f3  # 2TB - L^2
+    cC, cA, gap = float(cC_q), float(cA_q), float(gap_q)
     if abs(gap) <= 1e-12 * L2 or L2 == 0.0:
         raise ArgumentError(
             f"`omega0` lies on the separatrix 2TB = L^2 (2TB - L^2 = {gap:.3g}); the rotation "
             f"is not periodic there - perturb `omega0`."
         )
+    a1 = math.sqrt(cC / (A * (C - A)))
+    a3 = math.sqrt(cA / (C * (C - A)))
     if gap < 0.0:  # L^2 > 2TB: turns about the C axis, omega_3 keeps its sign
-        lam = math.sqrt((C - B) * (L2 - T2 * A) / (A * B * C))
-        m = (B - A) * (T2 * C - L2) / ((C - B) * (L2 - T2 * A))
-        a1 = math.sqrt((T2 * C - L2) / (A * (C - A)))
-        a2 = math.sqrt((T2 * C - L2) / (B * (C - B)))
-        a3 = math.sqrt((L2 - T2 * A) / (C * (C - A)))
+        lam = math.sqrt((C - B) * cA / (A * B * C))
+        m1 = float((fC - fA) * -gap_q / ((fC - fB) * cA_q))  # 1 - m, exactly then rounded
+        a2 = math.sqrt(cC / (B * (C - B)))
         s = 1.0 if w[2] >= 0 else -1.0
         phi0 = math.atan2(w[1] / a2, s * w[0] / a1)
     else:  # L^2 < 2TB: turns about the A axis, omega_1 keeps its sign
-        lam = math.sqrt((B - A) * (T2 * C - L2) / (A * B * C))
-        m = (C - B) * (L2 - T2 * A) / ((B - A) * (T2 * C - L2))
-        a1 = math.sqrt((T2 * C - L2) / (A * (C - A)))
-        a2 = math.sqrt((L2 - T2 * A) / (B * (B - A)))
-        a3 = math.sqrt((L2 - T2 * A) / (C * (C - A)))
+        lam = math.sqrt((B - A) * cC / (A * B * C))
+        m1 = float((fC - fA) * gap_q / ((fB - fA) * cC_q))
+        a2 = math.sqrt(cA / (B * (B - A)))
         s = 1.0 if w[0] >= 0 else -1.0
         phi0 = math.atan2(w[1] / a2, s * w[2] / a3)
-    u0 = float(ellipkinc(phi0, m))
-    K = float(ellipk(m))
+    # from 1 - m, not m: near the separatrix (m -> 1) scipy's ellipkinc and ellipj lose the
+    # digits of 1 - m that a float m cannot hold
+    K = float(ellipkm1(m1))
+    u0 = _incomplete_f(phi0, m1, K)
     period = 4.0 * K / lam
     about_c = gap < 0.0
 
@@ -729,7 +773,7 @@ def free_rigid_body(
 
     def exact(t):
         u = np.mod(lam * np.asarray(t, dtype=float) + u0, 4.0 * K)
-        sn, cn, dn, _ph = ellipj(u, m)
+        sn, cn, dn = _jacobi_agm(u, m1)
         if about_c:
             return np.array([s * a1 * cn, a2 * sn, s * a3 * dn])
         return np.array([s * a1 * dn, a2 * sn, s * a3 * cn])

@@ -1,0 +1,287 @@
+"""The stepper protocol and the one integration loop that drives it (book, ch. 26).
+
+A method is a *stepper*: an object that knows how to attempt ONE step and nothing else. The
+loop of :func:`integrate` owns everything around the step, once for all the methods built on
+it: the starting step, clamping to the end of ``t_span`` (and to the times a method must land
+on), the integral (I) and proportional-integral (PI) step-size controllers, rejections,
+``max_steps``, step underflow and non-finite states with their messages, recording of the
+accepted steps, the dense output, events, batches, Hairer's stiffness counter, a progress
+callback ``progress(t)`` after every accepted step (returning False stops the run) and
+interruption (Ctrl-C ends the run with everything computed so far; both give status 2).
+
+The protocol (model: scipy's ``OdeSolver``):
+
+``capabilities``
+    A :class:`Capabilities`: error order (for the controller and the starting step),
+    stiffness border (or None: no test), form of the dense coefficients.
+``begin(t0, y0, f0) -> y``
+    Prepare a run from the flat initial state and its derivative; return the state in the
+    stepper's own representation (a list of floats or an ndarray).
+``attempt(t, y, h) -> StepResult``
+    One attempted step of signed size `h` from ``(t, y)``; the error norm decides.
+``finite(step) -> bool``
+    Whether the accepted state (and what the next step needs) is finite.
+``accept(step)``
+    The attempt `step` was accepted (e.g. keep its last stage, FSAL).
+``dense(t, y, h, step) -> (y_new, coeffs, exact)``
+    The accepted state as a flat ndarray, the step's dense coefficients (or a
+    zero-argument callable computing them, evaluated only if needed) and ``exact`` (None, or
+    ``s -> y(s)`` as accurate as the step, on which event times are refined).
+``hlamb(h_abs, step) -> float or None``
+    The estimate ``|h lambda|`` of the stiffness test, or None if it cannot be formed.
+``start_order``
+    The order used by Hairer's starting step.
+``stats() -> dict``
+    Method-specific counters for ``OdeResult.stats``.
+``controller`` (optional)
+    An object with ``next(err, h_abs, rejected) -> (h_abs, accepted)`` replacing the loop's
+    I/PI :class:`Controller` for a method that chooses its step with its order (extrapolation).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from ._driver import Problem, Recorder, SampleRecorder, initial_step
+from ._warnings import stiffness_count
+
+__all__ = ["Capabilities", "StepResult", "Controller", "integrate"]
+
+SAFETY = 0.9
+MIN_FACTOR = 0.2
+MAX_FACTOR = 10.0
+#: Gains of the PI step-size controller (Gustafsson 1991; HNW II, IV.2, eq. (2.43)):
+#: ``h_new = h * SAFETY * err_n**(-PI_KI / k) * err_{n-1}**(PI_KP / k)``, ``k = q + 1``.
+PI_KI = 0.7
+PI_KP = 0.4
+#: Floor of the previous error in the PI formula (as in Hairer's DOPRI5 code).
+PI_ERR_FLOOR = 1e-4
+
+
+class Capabilities(NamedTuple):
+    """What a stepper declares instead of a string kind.
+
+    Examples
+    --------
+    >>> Capabilities(name="bs32", error_order=2, order=3).dense_form
+    'power'
+    """
+
+    name: str
+    #: order of the error estimator (exponent ``-1/(q+1)`` of the controller)
+    error_order: int
+    #: order of the propagated solution
+    order: int
+    #: ``|h lambda|`` beyond which a step counts as stiff (None: no stiffness test)
+    stiff_border: float | None = None
+    #: form of the dense coefficients (see :class:`~rigidmech.ode._dense.DenseSolution`)
+    dense_form: str = "power"
+    #: order of the dense output
+    dense_order: int = 3
+
+
+class StepResult(NamedTuple):
+    """One attempted step: the new state, its derivative, the error norm and the data the
+    stepper needs to build the dense output and the stiffness estimate of this step."""
+
+    y: object
+    f: object
+    error: float
+    data: object
+
+
+class Controller:
+    """The integral (scipy's and Hairer's codes) or PI (Gustafsson) step-size controller.
+
+    ``next(err, h_abs, rejected) -> (h_abs_new, accepted)``: accepted if ``err < 1``; a nan
+    or infinite error shrinks the step as much as allowed; never grows just after a
+    rejection.
+
+    Examples
+    --------
+    >>> c = Controller(error_order=4, pi=False)
+    >>> c.next(1.0 / 32, 0.1, False)  # 0.9 * 32**(1/5) = 1.8
+    (0.18000000000000002, True)
+    """
+
+    __slots__ = ("exponent", "pi", "alpha", "beta", "err_old")
+
+    def __init__(self, error_order, pi):
+        k = error_order + 1
+        self.exponent = -1.0 / k
+        self.pi = pi
+        self.alpha, self.beta = -PI_KI / k, PI_KP / k
+        self.err_old = 1.0
+
+    def next(self, err, h_abs, rejected):
+        if err < 1.0:
+            if err == 0.0:
+                factor = MAX_FACTOR
+            elif self.pi:
+                factor = min(MAX_FACTOR, SAFETY * err**self.alpha * self.err_old**self.beta)
+            else:
+                factor = min(MAX_FACTOR, SAFETY * err**self.exponent)
+            if rejected:
+                factor = min(1.0, factor)
+            if self.pi:
+                self.err_old = max(err, PI_ERR_FLOOR)
+            return h_abs * factor, True
+        if math.isfinite(err):
+            return h_abs * max(MIN_FACTOR, SAFETY * err**self.exponent), False
+        return h_abs * MIN_FACTOR, False
+
+
+class _Stiffness:
+    """Hairer's stiffness counter: a test every `nstiff` accepted steps, then at every step
+    while the estimate stays high; warns once (see :func:`stiffness_count`)."""
+
+    __slots__ = ("name", "border", "nstiff", "iasti", "nonsti", "warned")
+
+    def __init__(self, caps, nstiff):
+        self.name, self.border = caps.name, caps.stiff_border
+        self.nstiff = nstiff if caps.stiff_border is not None else 0
+        self.iasti = self.nonsti = 0
+        self.warned = False
+
+    def due(self, naccpt):
+        return self.nstiff and (naccpt % self.nstiff == 0 or self.iasti > 0)
+
+    def check(self, hlamb, t_new):
+        if hlamb is not None:
+            self.iasti, self.nonsti, self.warned = stiffness_count(
+                self.name, self.border, hlamb, t_new, self.iasti, self.nonsti, self.warned)
+
+
+class Run(NamedTuple):
+    """The settings of one run of :func:`integrate` (already validated by ``solve``)."""
+
+    fun: object
+    t_span: tuple
+    y0: np.ndarray
+    rtol: float
+    atol: object
+    first_step: float | None
+    max_step: float
+    max_steps: int
+    dense_output: bool
+    events: object
+    nstiff: int = 1000
+    step_control: str = "i"
+    progress: object = None
+    #: times the steps must land on (a :class:`~rigidmech.ode._driver.Stops`), or None
+    stops: object = None
+    #: times at which to keep the solution, or None (keep every step)
+    t_eval: object = None
+
+
+def integrate(stepper, run, f0=None):
+    """Integrate `run` with `stepper` (see the module docstring); return an ``OdeResult``.
+
+    `f0`, if given, is ``fun(t0, y0)`` already evaluated (and counted here).
+    """
+    caps = stepper.capabilities
+    t0, t_end = run.t_span
+    direction = 1.0 if t_end > t0 else -1.0
+    prob = Problem(run.fun, run.y0.shape)
+    y0 = run.y0.reshape(-1).copy()
+    if run.t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
+        rec = SampleRecorder(t0, y0, prob.shape, run.events, run.t_eval, caps.dense_form,
+                             at_steps=run.stops is not None)
+    else:
+        rec = Recorder(t0, y0, prob.shape, run.dense_output, run.events, caps.dense_form)
+    if f0 is None:
+        f0 = prob(t0, y0, np.empty_like(y0))
+    else:
+        prob.nfev += 1
+        f0 = np.array(f0, dtype=float).reshape(-1)
+    if not np.isfinite(f0).all():
+        rec.fail("The right-hand side is not finite", t0, y0)
+        return rec.result(caps.name, prob.nfev, 0)
+    y = stepper.begin(prob, t0, y0, f0)
+    if run.first_step is None:
+        h_abs = initial_step(prob, t0, y0, f0, direction, stepper.start_order, run.rtol,
+                             run.atol, t_end, run.max_step)
+    else:
+        h_abs = run.first_step
+    state = _Loop(stepper, run, rec, direction)
+    try:
+        state.run(t0, y, h_abs)
+    except KeyboardInterrupt:  # everything computed so far is kept
+        rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
+    return rec.result(caps.name, prob.nfev + stepper.nfev, state.nrej, stepper.stats())
+
+
+class _Loop:
+    """The state of the one loop (kept on an object so that an interruption finds it)."""
+
+    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej")
+
+    def __init__(self, stepper, run, rec, direction):
+        self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
+        self.t = run.t_span[0]
+        self.nrej = 0
+
+    def run(self, t, y, h_abs):
+        stepper, run, rec, direction = self.stepper, self.run_, self.rec, self.direction
+        t_end, max_step, max_steps = run.t_span[1], run.max_step, run.max_steps
+        control = getattr(stepper, "controller", None) or Controller(
+            stepper.capabilities.error_order, run.step_control == "pi")
+        control = control.next
+        stiff = _Stiffness(stepper.capabilities, run.nstiff)
+        want = rec.needs_dense
+        attempt, finite, progress, stops = stepper.attempt, stepper.finite, run.progress, \
+            run.stops
+        t_goal = t_end if stops is None else stops.after(t)
+        naccpt = 0
+        while direction * (t - t_end) < 0:
+            if naccpt >= max_steps:
+                rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
+                         t, y)
+                return
+            min_step = 10.0 * abs(math.nextafter(t, direction * math.inf) - t)
+            if h_abs > max_step:
+                h_abs = max_step
+            elif h_abs < min_step:
+                h_abs = min_step
+            rejected = accepted = False
+            while h_abs >= min_step:  # also false for a nan step
+                t_new = t + h_abs * direction
+                if direction * (t_new - t_goal) > 0:
+                    t_new = t_goal
+                h = t_new - t
+                h_abs = abs(h)
+                step = attempt(t, y, h)
+                h_abs, accepted = control(step.error, h_abs, rejected)
+                if accepted:
+                    break
+                rejected = True
+                self.nrej += 1
+            if not accepted:
+                rec.fail("The step size fell below the resolution of t (step size underflow)",
+                         t, y)
+                return
+            y_new = step.y
+            if not finite(step):
+                rec.fail("The state became non-finite", t_new, y_new)
+                return
+            naccpt += 1
+            if stiff.due(naccpt):
+                stiff.check(stepper.hlamb(h_abs, step), t_new)
+            if want:
+                y_rec, coeffs, exact = stepper.dense(t, y, h, step)
+                stop = rec.accept(t_new, y_rec, coeffs, exact)
+            else:
+                stop = rec.accept(t_new, y_new)
+            stepper.accept(step)
+            self.t = t = t_new
+            y = y_new
+            if stop:
+                return
+            if stops is not None:
+                t_goal = stops.after(t)
+            if progress is not None and progress(t) is False:
+                rec.interrupt("The integration was stopped by the `progress` callback", t)
+                return
