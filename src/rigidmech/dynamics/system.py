@@ -85,6 +85,11 @@ def _mechanical_energy(galilean, solids, bodies, actions):
     return T + sp.Add(*V)
 
 
+def _kinetic_energy(galilean, bodies):
+    """Kinetic energy of `bodies` relative to `galilean` (a snapshot, for the equations)."""
+    return sp.Add(*[b.kinetic_energy(galilean) for b in bodies if b.mass])
+
+
 def _constants(bodies, contributions):
     """The constant symbols of bodies (mass, inertia, centre, frames) and action torsors."""
     exprs = []
@@ -398,7 +403,8 @@ class System:
             coordinates=self.coordinates, mass_matrix=sp.ImmutableMatrix(M),
             forcing=sp.ImmutableMatrix(n, 1, f),
             energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
-            model_parameters=partial(_constants, bodies, tuple(self._contributions())))
+            model_parameters=partial(_constants, bodies, tuple(self._contributions())),
+            kinetic_energy=partial(_kinetic_energy, R, bodies), system=self)
         self._cache["eom"] = eqs
         return eqs
 
