@@ -7,6 +7,7 @@ that memory follows the samples asked for, Ctrl-C turned into a partial result.
 from __future__ import annotations
 
 import inspect
+import re
 import math
 import sys
 import time
@@ -249,15 +250,23 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                           message=f"The integration was interrupted at t = {watch.t!r}; method "
                           f"{method!r} keeps no partial result: only the initial state is "
                           "kept.", t=[t0], y=np.asarray(y0, dtype=float)[:, None],
-                          t_events=[], method=method)
+                          t_events=[], method=method, t_stop=watch.t)
     finally:
         watch.close()
     elapsed = time.perf_counter() - start
     message = res.message
+    t_stop = None
+    if res.status in (2, -1):  # the driver names the last accepted step's time
+        found = re.search(r"at t = (\S+?)[;,]", res.message)
+        t_stop = float(found.group(1)) if found else float(watch.t)
+    elif res.status == 1 and res.t_events:
+        t_stop = max((float(te[-1]) for te in res.t_events if len(te)), default=None)
+    elif res.status == 0:
+        t_stop = t1
     if res.status == 2:
         t_end = float(res.t[-1]) if len(res.t) else t0
         who = ("the `progress` callback" if watch.stopped else "Ctrl-C (KeyboardInterrupt)")
-        message = (f"The integration was stopped by {who} at t = {watch.t!r}; the samples "
+        message = (f"The integration was stopped by {who} at t = {t_stop!r}; the samples "
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
         message = message + watch.diagnosis()
@@ -269,4 +278,5 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
-    return Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out)
+    return Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
+                      t_stop=t_stop)

@@ -510,7 +510,7 @@ class EquationsOfMotion:
             callable ``progress(t)``: called about every 0.1 s with the time reached,
             returning False stops the run (status ``"interrupted"``).
         raise_on_failure : bool
-            Raise :class:`~rigidmech.NumericalError` on failure (the partial simulation
+            Raise :class:`~rigidmech._core.errors.NumericalError` on failure (the partial simulation
             attached as its ``simulation`` attribute) instead of returning it.
         params : dict, optional
             Values of :attr:`parameters` and :attr:`inputs` by name. Needed for a constant

@@ -118,10 +118,10 @@ class Simulation:
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
-                 "message", "_names", "_t_events", "_method")
+                 "message", "_names", "_t_events", "_method", "_t_stop")
 
     def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
-                 names=None, t=None, y=None, t_events=None, method=None):
+                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None):
         self._eqs = eqs
         self.result = result
         self._names = tuple(names) if names is not None else tuple(eqs.names)
@@ -138,6 +138,8 @@ class Simulation:
                           [np.asarray(x) for x in result.t_events] if result is not None
                           else [])
         self._method = method if method is not None else (result.method if result else None)
+        self._t_stop = float(t_stop) if t_stop is not None else (
+            float(self.t[-1]) if self.t.size else math.nan)
 
     # -- what the run was ---------------------------------------------------------------
     @property
@@ -166,12 +168,19 @@ class Simulation:
         return self.status in ("finished", "event")
 
     @property
+    def t_stop(self) -> float:
+        """The time the integration reached: the end of the span, the terminal event, or the
+        last step accepted before a failure or an interruption (the last sample,
+        ``t[-1]``, may be earlier: samples are taken at the times asked for)."""
+        return self._t_stop
+
+    @property
     def t_events(self) -> list:
         """For each event given to ``simulate``, the times where it occurred."""
         return list(self._t_events)
 
     def check(self):
-        """Raise :class:`~rigidmech.NumericalError` if the run failed (status ``"failed"``),
+        """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status ``"failed"``),
         with this simulation, holding the motion up to the failure, attached as the error's
         ``simulation`` attribute; return the simulation otherwise (an interruption is not a
         failure: it was asked for).
@@ -183,11 +192,11 @@ class Simulation:
         >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
         ...                            forcing=sp.ImmutableMatrix([[2 * x**3]]))  # x = 1/(1 - t)
         >>> sim = eqs.simulate(t=(0, 2), q0=[1.0], u0=[1.0])
-        >>> sim.status, bool(0.9 < sim.t[-1] < 1.0)
+        >>> sim.status, bool(0.99 < sim.t_stop < 1.01)
         ('failed', True)
         >>> try:
         ...     sim.check()
-        ... except rm.NumericalError as exc:
+        ... except NumericalError as exc:
         ...     exc.simulation is sim
         True
         """
@@ -430,6 +439,7 @@ class Simulation:
         params = {k: (float(v) if not callable(v) else repr(v)) for k, v in self._params.items()}
         meta = {"names": list(self._names), "parameters": params, "status": self.status,
                 "message": self.message, "method": self._method, "elapsed": self.elapsed,
+                "t_stop": self._t_stop,
                 "notes": list(self.notes)}
         if ext == ".npz":
             np.savez(text, t=self.t, q=self.q, u=self.u, meta=np.array(json.dumps(meta)),
@@ -480,7 +490,7 @@ class Simulation:
             raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
         return cls(None, None, meta["parameters"], meta.get("elapsed", 0.0), meta["notes"],
                    status=meta["status"], message=meta["message"], names=meta["names"], t=t,
-                   y=y, t_events=events, method=meta.get("method"))
+                   y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"))
 
     # -- display ------------------------------------------------------------------------
     def plot(self, path=None, *, ax=None):

@@ -16,7 +16,7 @@ the failure); Ctrl-C during the integration ends it with the samples computed so
 the outputs, prints ``rigidmech: interrupted at t = ...`` and exits with status 130 (at any
 other moment: ``rigidmech: interrupted``, status 130). Any other failure prints one line too;
 ``--debug`` shows its traceback instead. ``--save PATH`` writes the samples (``.npz`` or
-``.csv``), ``--max-steps N`` bounds the solver's steps, ``--progress/--no-progress`` shows or
+``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps, ``--progress/--no-progress`` shows or
 hides a progress bar on stderr (default: shown on a terminal for runs longer than 2 s).
 """
 
@@ -121,6 +121,8 @@ def _parser():
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
     r.add_argument("--save", metavar="PATH",
                    help="save the samples there (.npz or .csv, columns t, q, q')")
+    r.add_argument("--samples", type=_positive_int, default=1001, metavar="N",
+                   help="number of evenly spaced output times (default 1001, at least 2)")
     r.add_argument("--max-steps", type=_positive_int, metavar="N",
                    help="largest number of solver steps (default 1000000)")
     r.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
@@ -152,6 +154,8 @@ def _run(args, out):
         check_plot_path(args.plot, "--plot")
     if args.save is not None:
         check_save_path(args.save, "--save")
+    if args.samples < 2:
+        raise _UsageError(f"argument --samples: expected at least 2; got {args.samples}")
     params = {}
     for name, value in args.param:
         if name in params:
@@ -160,12 +164,12 @@ def _run(args, out):
     report = run(args.name, t_end=args.t_end, params=params, q0=args.q0, u0=args.u0,
                  method=args.method, rtol=args.rtol, atol=args.atol, step=args.step,
                  plot=args.plot, save=args.save, max_steps=args.max_steps,
-                 progress=args.progress)
+                 progress=args.progress, n_output=args.samples, dense_output=False)
     print(report.summary(pretty=args.pretty), file=out)
     sim = report.simulation
     if report.status == "interrupted":
-        raise _Interrupted(f"interrupted at t = {sim.t[-1]:g} (the samples up to there are "
-                           f"kept{_outputs(report)})")
+        raise _Interrupted(f"interrupted at t = {sim.t_stop:g} (the samples up to t = "
+                           f"{sim.t[-1]:g} are kept{_outputs(report)})")
     if report.status == "failed":
         raise NumericalError(report.message.rstrip(".")
                              + _outputs(report, "; partial output in "))

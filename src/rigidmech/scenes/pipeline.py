@@ -142,9 +142,9 @@ class RunReport:
             f"q0 = {list(self.q0)}, u0 = {list(self.u0)}",
             *([f"the run ended early ({self.status}): {self.message}"]
               if self.status not in ("finished", "event") else []),
-            f"final state (t = {self.simulation.t[-1]:g}): "
-            f"q = {[float(f'{x:.10g}') for x in self.final_q]}, "
-            f"q' = {[float(f'{x:.10g}') for x in self.final_u]}",
+            f"final state: q = {[float(f'{x:.10g}') for x in self.final_q]}, "
+            f"q' = {[float(f'{x:.10g}') for x in self.final_u]}"
+            + ("" if self.status == "finished" else f" at t = {self.simulation.t[-1]:g}"),
             f"energy drift: {drift}",
             f"timings: derive {ms['derive']:.1f} ms, compile {ms['compile']:.1f} ms, "
             f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
@@ -285,7 +285,7 @@ def _method(method, step):
 
 def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=None,
         atol=None, step=None, n_output=1001, plot=None, save=None, max_steps=None,
-        progress=None) -> RunReport:
+        progress=None, dense_output=True) -> RunReport:
     """Derive, compile and integrate a scene; follow its energy; optionally plot it.
 
     Parameters
@@ -314,6 +314,10 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         Largest number of steps of the solver (default 10^6).
     progress : None, bool or callable
         As for :meth:`EquationsOfMotion.simulate` (default: a bar on a terminal only).
+    dense_output : bool
+        Keep the solver's continuous solution (``report.simulation.result.sol``), default
+        True; its memory grows with the number of steps: turn it off for long runs (the
+        command line does), memory then follows the ``n_output`` samples.
 
     A run that fails or is interrupted still returns its report, with the samples computed
     so far (plotted and saved if asked): see :attr:`RunReport.status`.
@@ -388,6 +392,7 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     timings["compile"] = time.perf_counter() - start
     sim = eqs.simulate(t=(0.0, t_end), q0=q0, u0=u0, method=method, rtol=rtol, atol=atol,
                        step=step, n_output=n_output, params=values, progress=progress,
+                       dense_output=dense_output,
                        **({"max_steps": max_steps} if max_steps is not None else {}))
     timings["integrate"] = sim.elapsed
     start = time.perf_counter()
