@@ -314,6 +314,21 @@ def test_complex_input_is_a_failure_that_keeps_the_motion():
     assert_allclose(sim.q[0], sim.t**2 / 2, atol=1e-12)
 
 
+@pytest.mark.parametrize("kind", ["callable", "expression"])
+def test_an_event_returning_nan_is_a_failure(kind):
+    # defect: an event function returning NaN was ignored
+    eqs, x, k = oscillator()
+    if kind == "callable":
+        ev = rm.ode.event(lambda tt, y: math.nan if tt > 1.0 else y[0] - 2.0)
+    else:
+        ev = Event(sp.log(x + sp.Rational(1, 2)))       # log of a negative once x < -1/2
+    sim = eqs.simulate(t=(0, 3), q0=[1.0], events=ev, k=4.0)
+    assert sim.status == "failed"
+    assert "The event function events[0] returned nan at t = " in sim.message
+    assert "events may be missing" in sim.message
+    assert sim.t[-1] == 3.0  # the motion itself is complete
+
+
 def test_fixed_step_larger_than_the_span_is_refused():
     # defect: it was shrunk silently to the span and the run called a success
     eqs, x, k = oscillator()
