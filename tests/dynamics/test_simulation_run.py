@@ -288,6 +288,43 @@ def test_fixed_step_samples_are_grid_points():
     assert_allclose(sim.q[0], grid.y[0, ::10], rtol=0, atol=0)
 
 
+@pytest.mark.parametrize("method", ["rk4", "verlet"])
+def test_fixed_step_run_in_chunks_gives_the_same_numbers(method, monkeypatch):
+    # a one-step method run chunk by chunk (memory ~ samples, Ctrl-C keeps the chunks done)
+    # gives the grid of one run, to rounding of the grid times
+    from rigidmech.dynamics import _run
+
+    monkeypatch.setattr(_run, "CHUNK", 70)
+    eqs, x, k = oscillator()
+    sim = eqs.simulate(t=(0, 10), q0=[1.0], method=method, step=0.01, n_output=101, k=4.0)
+    fun = eqs.rhs(k=4.0) if method == "rk4" else (lambda tt, q: -4.0 * q)
+    grid = rm.ode.solve(fun, (0, 10), [1.0, 0.0], method=method, step=0.01)
+    assert sim.status == "finished"
+    assert_allclose(sim.t, grid.t[::10], rtol=0, atol=1e-12)
+    assert_allclose(sim.q[0], grid.y[0, ::10], rtol=0, atol=1e-13)
+    assert sim.result.nsteps == 1000
+
+
+def test_fixed_step_interrupted_keeps_the_chunks_done(monkeypatch):
+    from rigidmech.dynamics import _run
+
+    monkeypatch.setattr(_run, "CHUNK", 100)
+    x = rm.coordinates("x")
+    F = sp.Function("F")(t)
+    eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-4 * x + F]]))
+
+    def force(tt):
+        if tt > 2.5:
+            raise KeyboardInterrupt
+        return 0.0
+
+    sim = eqs.simulate(t=(0, 10), q0=[1.0], method="rk4", step=0.01, F=force)
+    assert sim.status == "interrupted"
+    assert sim.t_stop == pytest.approx(2.0) and sim.t[-1] == pytest.approx(2.0)
+    assert_allclose(sim.q[0], np.cos(2 * sim.t), atol=1e-8)
+
+
 def test_nan_in_the_right_hand_side_is_named():
     # defect: NaN in the right-hand side was reported as "step size underflow"
     x = rm.coordinates("x")

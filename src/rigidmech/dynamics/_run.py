@@ -7,8 +7,8 @@ that memory follows the samples asked for, Ctrl-C turned into a partial result.
 from __future__ import annotations
 
 import inspect
-import re
 import math
+import re
 import sys
 import time
 from math import isfinite
@@ -213,6 +213,52 @@ class _EventWatch:
         return value
 
 
+#: one-step fixed-step methods, which can be run chunk by chunk with the same numbers
+ONE_STEP = ("euler", "heun", "midpoint", "rk38", "rk4", "verlet", "yoshida4", "yoshida6")
+#: steps per chunk of a one-step fixed-step run
+CHUNK = 10_000
+
+
+def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
+    """A one-step fixed-step run as successive runs of about :data:`CHUNK` steps (a whole
+    number of `stride` steps each), keeping every `stride`-th grid point: memory follows the
+    samples, and Ctrl-C keeps the chunks done (the driver's fixed-step runs keep nothing)."""
+    h = (t1 - t0) / nsteps
+    per = stride * max(1, math.ceil(CHUNK / stride))
+    ts, ys = [np.array([t0])], [np.asarray(y0, dtype=float)[:, None]]
+    y, done, nfev = np.asarray(y0, dtype=float), 0, 0
+    status, message = 0, "The integration reached the end of `t_span`."
+    while done < nsteps:
+        k = min(per, nsteps - done)
+        ta, tb = t0 + done * h, (t0 + (done + k) * h) if done + k < nsteps else t1
+        try:
+            r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
+                          max_steps=k + 1)
+        except KeyboardInterrupt:
+            status = 2
+            message = (f"The integration was interrupted (KeyboardInterrupt) at t = {ta!r}; "
+                       "the result holds the steps made so far.")
+            break
+        nfev += r.nfev
+        keep = np.arange(stride, len(r.t), stride)
+        ts.append(r.t[keep])
+        ys.append(r.y[:, keep])
+        if r.status != 0:
+            status, message = r.status, r.message
+            if len(r.t) and (len(r.t) - 1) % stride:
+                ts.append(r.t[-1:])
+                ys.append(r.y[:, -1:])
+            break
+        y = r.y[:, -1]
+        done += k
+    t_all = np.concatenate(ts)
+    if status == 0 and t_all[-1] != t1:  # the end, if not a sample already
+        t_all = np.append(t_all, t1)
+        ys.append(y[:, None])
+    return ode.OdeResult(t=t_all, y=np.concatenate(ys, axis=1), nfev=nfev, nsteps=done,
+                         nrejected=0, status=status, message=message, method=method)
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -250,6 +296,13 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
             stride = max(1, nsteps // (n_output - 1))
             if stride > 1 and _takes(method, "save_every") and events is None:
                 options["save_every"], stride = stride, 1
+            elif (method in ONE_STEP and events is None and not dense_output
+                  and nsteps > CHUNK):
+                if nsteps > max_steps:
+                    raise ArgumentError(
+                        f"`step` = {step:g} needs {nsteps} steps over `t_span`, more than "
+                        f"`max_steps` = {max_steps}; use a larger step or raise max_steps.")
+                options = {"chunks": (nsteps, stride)}
         else:
             options["t_eval"] = t_eval
     else:
@@ -258,11 +311,17 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
     watch = Watch(fun, _labels(eqs.names, second), (t0, t1), progress, second)
     nan_seen = {}
-    options["events"] = compile_events(eqs, events, values, nan_seen)
+    chunks = options.pop("chunks", None)
+    if chunks is None:
+        options["events"] = compile_events(eqs, events, values, nan_seen)
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            res = ode.solve(watch, (t0, t1), y0, method=method, **options)
+            if chunks is None:
+                res = ode.solve(watch, (t0, t1), y0, method=method, **options)
+            else:
+                res = _in_chunks(watch, t0, t1, y0, method, *chunks)
+                stride = 1
     except KeyboardInterrupt:  # a method that keeps no partial result: the initial state
         watch.close()
         elapsed = time.perf_counter() - start

@@ -527,18 +527,26 @@ class EquationsOfMotion:
 
         Notes
         -----
-        Where the samples come from: adaptive methods evaluate their dense output at the
-        sample times while they integrate, so memory follows the number of samples (and
-        events), not the number of steps; its order is the method's own for ``dop853``
-        (7), ``bs32`` (3) and ``rkn64``/``rkn1210`` (5), one less for ``dopri5`` (4), and
-        cubic for ``radau`` and ``adams``; ``gbs`` lands its steps on the sample times (the
-        samples are as accurate as its steps). Fixed-step methods keep their grid points
-        (the samples are grid points, about ``n_output`` of them, evenly spaced by a whole
-        number of steps; with ``t_eval``, a cubic Hermite interpolant of the grid).
+        Where the samples come from: ``dop853``, ``dopri5`` and ``bs32`` evaluate their dense
+        output at the sample times while they integrate, so memory follows the number of
+        samples (and events), not the number of steps; its order is the method's own for
+        ``dop853`` (7) and ``bs32`` (3), one less for ``dopri5`` (4). ``gbs``, ``rkn64`` and
+        ``rkn1210`` land their steps on the sample times: the samples are as accurate as the
+        steps, memory follows the samples. ``radau`` and ``adams`` keep their whole dense
+        output and evaluate it at the end (memory grows with the steps; ``radau``'s
+        interpolant is cubic, less accurate than its steps). Fixed-step methods sample their
+        own grid points (about ``n_output`` of them, evenly spaced by a whole number of
+        steps; with ``t_eval``, a cubic Hermite interpolant of the grid); the one-step ones
+        (``rk4``, ``verlet``, ...) run chunk by chunk (10^4 steps each, same numbers), so
+        memory follows the samples, the multistep ones (``ab4``, ...) keep every
+        ``stride``-th point as they go.
 
         On Ctrl-C (KeyboardInterrupt) the methods built on the solver's one loop (``dop853``,
         ``dopri5``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``) keep the samples
-        computed so far; the others keep only the initial state (the message says so).
+        computed so far, status ``"interrupted"``, and so do the one-step fixed-step methods
+        (up to the last chunk done); the others (``adams``, multistep methods, a fixed-step
+        run with events, ``t_eval`` or dense output) keep only the initial state (the
+        message says so).
 
         Examples
         --------

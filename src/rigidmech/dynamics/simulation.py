@@ -180,10 +180,10 @@ class Simulation:
         return list(self._t_events)
 
     def check(self):
-        """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status ``"failed"``),
-        with this simulation, holding the motion up to the failure, attached as the error's
-        ``simulation`` attribute; return the simulation otherwise (an interruption is not a
-        failure: it was asked for).
+        """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status
+        ``"failed"``), with this simulation, holding the motion up to the failure, attached
+        as the error's ``simulation`` attribute; return the simulation otherwise (an
+        interruption is not a failure: it was asked for).
 
         Examples
         --------

@@ -16,8 +16,9 @@ the failure); Ctrl-C during the integration ends it with the samples computed so
 the outputs, prints ``rigidmech: interrupted at t = ...`` and exits with status 130 (at any
 other moment: ``rigidmech: interrupted``, status 130). Any other failure prints one line too;
 ``--debug`` shows its traceback instead. ``--save PATH`` writes the samples (``.npz`` or
-``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps, ``--progress/--no-progress`` shows or
-hides a progress bar on stderr (default: shown on a terminal for runs longer than 2 s).
+``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps,
+``--progress/--no-progress`` shows or hides a progress bar on stderr (default: shown on a
+terminal for runs longer than 2 s).
 """
 
 from __future__ import annotations
