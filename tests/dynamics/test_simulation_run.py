@@ -366,6 +366,17 @@ def test_an_event_returning_nan_is_a_failure(kind):
     assert sim.t[-1] == 3.0  # the motion itself is complete
 
 
+def test_explicit_euler_growth_without_overflow_is_noted():
+    # x'' = -k x with h^2 k = 1: explicit Euler multiplies the energy by 1 + h^2 k = 2 at each
+    # step; over 200 steps E grows 2^200 (~1e60) times without overflow: finished, but noted
+    eqs, x, k = oscillator()
+    sim = eqs.simulate(t=(0, 100), q0=[1.0], method="euler", step=0.5, k=4.0)
+    assert sim.status == "finished"
+    assert any("step is probably too large for 'euler'" in note for note in sim.notes)
+    good = eqs.simulate(t=(0, 1), q0=[1.0], method="rk4", step=0.01, k=4.0)
+    assert good.notes == ()
+
+
 def test_fixed_step_larger_than_the_span_is_refused():
     # defect: it was shrunk silently to the span and the run called a success
     eqs, x, k = oscillator()

@@ -217,6 +217,8 @@ class _EventWatch:
 ONE_STEP = ("euler", "heun", "midpoint", "rk38", "rk4", "verlet", "yoshida4", "yoshida6")
 #: steps per chunk of a one-step fixed-step run
 CHUNK = 10_000
+#: energy drift beyond which a fixed-step run of a conservative system gets a note
+UNSTABLE_DRIFT = 0.5
 
 
 def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
@@ -363,5 +365,14 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
-    return Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
-                      t_stop=t_stop, status=status)
+    sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
+                     t_stop=t_stop, status=status)
+    if fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1:
+        drift = sim.energy_drift()
+        if not drift <= UNSTABLE_DRIFT:  # a conservative system: E should stay constant
+            sim = Simulation(eqs, res, values, elapsed, (*notes, (
+                f"the energy changed by {drift:.3g} times its scale T(0) + |V(0)| with the "
+                f"fixed step {step!r}: the step is probably too large for {method!r} (an "
+                "unstable explicit method grows without bound); the motion is not to be "
+                "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status)
+    return sim
