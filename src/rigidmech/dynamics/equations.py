@@ -235,7 +235,19 @@ class EquationsOfMotion:
     @property
     def kinetic_energy(self):
         """Kinetic energy T (with q(t), q'(t)), or None if not known (equations written by
-        hand). Taken from the system when the equations were derived."""
+        hand). Taken from the system when the equations were derived.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); m = rm.constants("m", positive=True)
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, 0, 0)
+        >>> s = rm.System(galilean=R0)
+        >>> s.add(rm.Body("b", frame=R0.translated("R1", P), mass=m, centre=P))
+        >>> eqs = s.equations_of_motion()
+        >>> eqs.kinetic_energy, eqs.system is s
+        (m*Derivative(x(t), t)**2/2, True)
+        """
         if "kinetic" not in self._cache:
             e = self._kinetic() if callable(self._kinetic) else self._kinetic
             self._cache["kinetic"] = e

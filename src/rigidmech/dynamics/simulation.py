@@ -171,7 +171,18 @@ class Simulation:
     def t_stop(self) -> float:
         """The time the integration reached: the end of the span, the terminal event, or the
         last step accepted before a failure or an interruption (the last sample,
-        ``t[-1]``, may be earlier: samples are taken at the times asked for)."""
+        ``t[-1]``, may be earlier: samples are taken at the times asked for).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> sim = eqs.simulate(t=(0, 10), q0=[1.0], n_output=3, max_steps=5)
+        >>> sim.status, sim.t.tolist(), 0 < sim.t_stop < 10
+        ('failed', [0.0], True)
+        """
         return self._t_stop
 
     @property
@@ -363,7 +374,17 @@ class Simulation:
         magnitude of the potential energy at the start (``V = E - T``). If that is 0 (a
         motion starting at rest where V = 0) it is ``max_t (T + |V|)`` over the samples; when
         the equations do not know their kinetic energy (written by hand), ``|E(0)|`` then
-        ``max_t |E|``."""
+        ``max_t |E|``.
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...     forcing=sp.ImmutableMatrix([[-4 * x]]), energy=(x.diff(rm.t)**2 + 4 * x**2) / 2)
+        >>> eqs.simulate(t=(0, 1), q0=[1.0], n_output=3).energy_scale()   # |E(0)| = 2
+        2.0
+        """
         eqs = self._need_equations("energy_scale()")
         e = self.energy()
         kinetic = getattr(eqs, "kinetic_energy", None)
@@ -464,6 +485,18 @@ class Simulation:
         the equations of motion (so :meth:`evaluate`, :meth:`energy` and
         :meth:`connection_action` need a new simulation) and the solver's result
         (:attr:`result` is None).
+
+        Examples
+        --------
+        >>> import os, tempfile, sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> path = eqs.simulate(t=(0, 1), q0=[1.0], n_output=4).save(
+        ...     os.path.join(tempfile.mkdtemp(), "run.npz"))
+        >>> back = Simulation.load(path)
+        >>> back.t.tolist() == [0.0, 1 / 3, 2 / 3, 1.0], back.equations, back.method
+        (True, None, 'dop853')
         """
         text = os.fspath(path)
         ext = os.path.splitext(text)[1].lower()

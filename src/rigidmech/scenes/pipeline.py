@@ -319,12 +319,11 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         True; its memory grows with the number of steps: turn it off for long runs (the
         command line does), memory then follows the ``n_output`` samples.
 
-    A run that fails or is interrupted still returns its report, with the samples computed
-    so far (plotted and saved if asked): see :attr:`RunReport.status`.
-
     Returns
     -------
     RunReport
+        Also for a run that fails or is interrupted: it holds the samples computed so far
+        (plotted and saved if asked), see ``status`` and ``message``.
 
     Raises
     ------
@@ -332,6 +331,7 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         Unknown scene, parameter or method; malformed values; a value <= 0 for a constant
         the scene declares positive; wrong length of ``q0``/``u0``; a plot path that cannot
         be written; a method for q'' = a(t, q) on equations that depend on q'.
+
     Examples
     --------
     >>> from rigidmech import scenes
