@@ -70,7 +70,8 @@ class Watch:
             return np.full(self.shape(y), np.nan)
         if out.dtype.kind == "c":
             out = self._complex(t, out)
-        elif not isfinite(sum(out.flat)) and np.isfinite(y).all():  # where it starts
+        elif not isfinite(sum(out.tolist() if out.ndim == 1 else out.ravel().tolist())) and (
+                np.isfinite(y).all()):  # where it starts (a sum is nan or inf if one is)
             flat = out.reshape(-1)
             bad = ~np.isfinite(flat)
             if bad.any():
