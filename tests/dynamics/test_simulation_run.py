@@ -468,6 +468,18 @@ def test_reactions_along_a_spherical_pendulum_follow_newton():
         assert_allclose(action[name], 0.0, atol=1e-8 * scale * values["L"])
 
 
+def test_evaluate_a_point_velocity_along_the_motion():
+    # G = L (cos q, sin q, 0) in R0: v(G) = L q' (-sin q, cos q, 0)
+    system, bob, R0, q = planar_pendulum()
+    sim = system.equations_of_motion().simulate(t=(0, 1), q0=[1.0], n_output=11, **PLANAR)
+    v = sim.evaluate(bob.centre.velocity(R0), frame=R0)
+    L = PLANAR["L"]
+    assert_allclose(v, [-L * sim.u[0] * np.sin(sim.q[0]), L * sim.u[0] * np.cos(sim.q[0]),
+                        0 * sim.t], atol=1e-14)
+    with pytest.raises(TypeError, match=r"`frame` must be a Frame"):
+        sim.evaluate(bob.centre.velocity(R0))
+
+
 def test_connection_action_refuses_a_changed_system():
     system, bob, R0, q = planar_pendulum()
     sim = system.equations_of_motion().simulate(t=(0, 1), q0=[1.0], n_output=3, **PLANAR)

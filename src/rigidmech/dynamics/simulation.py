@@ -237,9 +237,11 @@ class Simulation:
             out.append(np.broadcast_to(np.asarray(v, dtype=float), self.t.shape))
         return out
 
-    def evaluate(self, expr):
+    def evaluate(self, expr, frame=None):
         """Evaluate a symbolic expression along the motion; returns an array over the sample
-        times (for a Matrix, its shape followed by the times). Compiled once per call.
+        times (for a Matrix, its shape followed by the times; for a
+        :class:`~rigidmech.vectors.Vector`, its three components in the basis of ``frame``,
+        shape (3, n_points)). Compiled once per call.
 
         The expression may hold t, the coordinates q(t) and their first and second
         derivatives (q'' is the solution of the equations of motion), the inputs and
@@ -255,7 +257,18 @@ class Simulation:
         >>> sim = eqs.simulate(t=(0, 1), q0=[1.0], n_output=3)
         >>> sim.evaluate(x.diff(rm.t, 2) + 4 * x).round(12).tolist()
         [0.0, 0.0, 0.0]
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, 0, 0)
+        >>> sim.evaluate(P.velocity(R0), frame=R0).shape     # (vx, vy, vz) at the 3 samples
+        (3, 3)
         """
+        from ..vectors import Frame, Vector
+
+        if isinstance(expr, Vector):
+            if not isinstance(frame, Frame):
+                raise ArgumentTypeError(
+                    f"`frame` must be a Frame to evaluate a Vector's components in; got "
+                    f"{type(frame).__name__}.")
+            return self.evaluate(expr.components(frame))[:, 0]
         eqs = self._need_equations("evaluate()")
         q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
         if isinstance(expr, sp.MatrixBase):
