@@ -113,8 +113,9 @@ PARAMS = dict(m=1.3, L=0.7, g=9.81)
 @pytest.fixture(scope="module")
 def motion(model):
     eqs = model[0].equations_of_motion()
+    # dense output is opt-in (its memory grows with the steps): the tests below use it
     return eqs.simulate(t=(0.0, 10.0), q0=[2.0, -0.2], u0=[0.3, 0.0], rtol=1e-12,
-                        atol=1e-14, n_output=2001, **PARAMS)
+                        atol=1e-14, n_output=2001, dense_output=True, **PARAMS)
 
 
 def test_energy_conserved_over_10_s(motion):

@@ -8,16 +8,19 @@ was no ``--version``, ``--param m=-1`` was accepted for a positive constant, and
 """
 
 import os
+import re
 import signal
 import subprocess
 import sys
 import time
 
+import numpy as np
 import pytest
 
 import rigidmech
 from rigidmech import scenes
 from rigidmech._core.errors import SceneError
+from rigidmech.dynamics import load_simulation
 from rigidmech.scenes import cli
 
 
@@ -127,14 +130,78 @@ def test_keyboard_interrupt_is_one_line(capsys, monkeypatch):
 @pytest.mark.slow
 def test_sigint_to_a_long_run_ends_with_one_line(tmp_path):
     """A real Ctrl-C (SIGINT) sent to ``python -m rigidmech run ... --t-end 1e6`` after it
-    started: one line on stderr, exit status 130, no traceback."""
+    started: one line on stderr naming the time reached, exit status 130, no traceback, and
+    the partial output written (the samples computed so far, status "interrupted")."""
     env = dict(os.environ, PYTHONUNBUFFERED="1")
     proc = subprocess.Popen(
-        [sys.executable, "-m", "rigidmech", "run", "double-pendulum", "--t-end", "1e6"],
+        [sys.executable, "-m", "rigidmech", "run", "double-pendulum", "--t-end", "1e6",
+         "--samples", "100001", "--save", "out.csv", "--plot", "out.png"],
         cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    time.sleep(6.0)  # import, derive, compile and be integrating
+    time.sleep(10.0)  # import, derive, compile and be integrating (a loaded machine: slow)
     proc.send_signal(signal.SIGINT)
-    out, err = proc.communicate(timeout=60)
+    out, err = proc.communicate(timeout=120)
     assert proc.returncode == 130, (out, err)
     assert "Traceback" not in err
-    assert err.strip().splitlines()[-1] == "rigidmech: interrupted"
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    found = re.fullmatch(r"rigidmech: interrupted at t = (\S+) \(the samples up to t = (\S+) "
+                         r"are kept, in out\.png and out\.csv\)", lines[0])
+    assert found, lines[0]
+    t_reached, t_sample = float(found.group(1)), float(found.group(2))
+    assert 10 < t_reached < 1e6 and t_reached - 10 <= t_sample <= t_reached
+    assert (tmp_path / "out.png").stat().st_size > 1000
+    sim = load_simulation(tmp_path / "out.csv")
+    assert sim.status == "interrupted"
+    assert sim.names == ("theta1", "theta2")
+    assert sim.t[0] == 0.0 and sim.t[-1] == pytest.approx(t_sample, rel=1e-5)
+    assert np.allclose(np.diff(sim.t), 10.0)  # 1e6 / (100001 - 1)
+    assert sim.t_stop == pytest.approx(t_reached, rel=1e-5)
+    assert sim.q[:, 0].tolist() == [2.0, -0.2]  # the scene's initial state
+
+
+def test_save_path_is_checked_before_the_run(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    started = []
+    monkeypatch.setattr(cli, "run", lambda *a, **k: started.append(1))
+    for name, match in [("out.txt", r"--save: unknown file type '\.txt'; one of \.npz, \.csv"),
+                        (os.path.join("missing", "o.csv"),
+                         r"--save: the folder .*missing.* does not exist")]:
+        code, out, err = _main(["run", "spring-mass", "--save", name], capsys)
+        assert code == 2 and not started
+        assert re.search(match, err) and len(err.strip().splitlines()) == 1, err
+
+
+@pytest.mark.parametrize("value", ["0", "-3", "2.5", "many"])
+def test_max_steps_must_be_a_positive_integer(value, capsys):
+    code, out, err = _main(["run", "spring-mass", "--max-steps", value], capsys)
+    assert code == 2
+    assert f"expected a whole number >= 1; got '{value}'" in err
+
+
+def test_max_steps_reached_keeps_the_partial_output(capsys, tmp_path):
+    path = tmp_path / "run.npz"
+    code, out, err = _main(["run", "spring-mass", "--max-steps", "20", "--save", str(path)],
+                           capsys)
+    assert code == 1
+    lines = err.strip().splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("rigidmech: integration failed: The maximum number of steps "
+                               "`max_steps` = 20 was reached at t = ")
+    assert lines[0].endswith(f"; partial output in {path}")
+    sim = load_simulation(path)
+    assert sim.status == "failed" and 0 < sim.t[-1] < 10
+    # spring-mass: x = 0.5 cos(2 t) (m = 1, k = 4)
+    assert np.allclose(sim.q[0], 0.5 * np.cos(2 * sim.t), atol=1e-8)
+
+
+def test_progress_options(capsys):
+    for flag in ("--progress", "--no-progress"):
+        code, out, err = _main(["run", "spring-mass", "--t-end", "0.5", flag], capsys)
+        assert code == 0, err
+
+
+def test_step_larger_than_the_duration_is_refused(capsys):
+    code, out, err = _main(["run", "spring-mass", "--method", "rk4", "--step", "2",
+                            "--t-end", "1"], capsys)
+    assert code == 2
+    assert "`step` = 2 exceeds the duration `t_end` = 1" in err

@@ -2,6 +2,8 @@
 equations of motion, connection actions, simulation."""
 
 from .equations import EquationsOfMotion, Simulation
+from .simulation import Event, load_simulation
 from .system import System
 
 __all__ = ["EquationsOfMotion", "Simulation", "System"]
+__all__ += ["Event", "load_simulation"]

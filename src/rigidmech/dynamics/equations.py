@@ -16,17 +16,17 @@ parameters' (a number, or a Python callable of t).
 from __future__ import annotations
 
 import logging
-import time as _time
 
 import numpy as np
 import sympy as sp
 
 from .. import ode
-from .._core.compile import compile_expressions, compile_linear_solve
-from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError, NumericalError
+from .._core.compile import compile_linear_solve
+from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..vectors import t as _t
 from ._singularities import warn_near_singularities
+from .simulation import Simulation
 
 __all__ = ["EquationsOfMotion", "Simulation"]
 
@@ -72,6 +72,11 @@ class EquationsOfMotion:
     singular_sets : sequence of OrientationSingularity, or callable returning one, optional
         Singular sets of the orientation angles among the coordinates (ch. 9.1.2), derived
         on demand; :meth:`simulate` warns when the motion comes near one.
+    kinetic_energy : sympy expression, callable returning one, or None, optional
+        Kinetic energy T (with q(t), q'(t)): the scale of a simulation's energy drift.
+    system : System, optional
+        The system the equations were derived from (for the connection actions along a
+        simulated motion, :meth:`Simulation.connection_action`).
 
     Notes
     -----
@@ -95,10 +100,11 @@ class EquationsOfMotion:
     """
 
     __slots__ = ("_coordinates", "_q", "_u", "_a", "_M", "_f", "_energy", "_params",
-                 "_inputs", "_model", "_cache", "_singular")
+                 "_inputs", "_model", "_cache", "_singular", "_kinetic", "_system")
 
     def __init__(self, *, coordinates, mass_matrix, forcing, energy=None, parameters=None,
-                 q=None, u=None, model_parameters=None, singular_sets=None):
+                 q=None, u=None, model_parameters=None, singular_sets=None,
+                 kinetic_energy=None, system=None):
         self._coordinates = tuple(coordinates)
         n = len(self._coordinates)
         for c in self._coordinates:
@@ -148,6 +154,8 @@ class EquationsOfMotion:
         coords = set(self._coordinates)
         self._inputs = tuple(sorted(functions - coords, key=str))
         self._model = model_parameters
+        self._kinetic = kinetic_energy
+        self._system = system
         self._cache = {"input_derivatives": tuple(sorted(
             (d for d in derivatives if d.expr not in coords), key=str))}
         self._singular = singular_sets
@@ -250,6 +258,32 @@ class EquationsOfMotion:
             s = self._singular() if callable(self._singular) else self._singular
             self._cache["singular_sets"] = tuple(s or ())
         return self._cache["singular_sets"]
+
+    @property
+    def kinetic_energy(self):
+        """Kinetic energy T (with q(t), q'(t)), or None if not known (equations written by
+        hand). Taken from the system when the equations were derived.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); m = rm.constants("m", positive=True)
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, 0, 0)
+        >>> s = rm.System(galilean=R0)
+        >>> s.add(rm.Body("b", frame=R0.translated("R1", P), mass=m, centre=P))
+        >>> eqs = s.equations_of_motion()
+        >>> eqs.kinetic_energy, eqs.system is s
+        (m*Derivative(x(t), t)**2/2, True)
+        """
+        if "kinetic" not in self._cache:
+            e = self._kinetic() if callable(self._kinetic) else self._kinetic
+            self._cache["kinetic"] = e
+        return self._cache["kinetic"]
+
+    @property
+    def system(self):
+        """The system the equations were derived from, or None."""
+        return self._system
 
     def accelerations(self, simplify: bool = False) -> sp.ImmutableMatrix:
         """q'' = M^-1 f symbolically (small systems: the expressions grow fast)."""
@@ -465,8 +499,16 @@ class EquationsOfMotion:
         return out
 
     def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
-                 atol=1e-10, step=None, n_output=1001, **params) -> Simulation:
+                 atol=1e-10, step=None, n_output=1001, t_eval=None, events=None,
+                 max_steps=1_000_000, first_step=None, max_step=None, dense_output=None,
+                 progress=None, raise_on_failure=False, params=None, **values) -> Simulation:
         """Integrate the equations from (q0, u0) over ``t`` (ch. 27.2.2).
+
+        The run never loses work: it returns a :class:`Simulation` however it ends (its
+        :attr:`~Simulation.status`: ``"finished"``, ``"event"``, ``"failed"`` with the reason
+        and the time in :attr:`~Simulation.message`, ``"interrupted"`` by Ctrl-C or by the
+        ``progress`` callback), holding every sample computed until then. It raises only on
+        misuse, or on failure if ``raise_on_failure`` (see :meth:`Simulation.check`).
 
         Parameters
         ----------
@@ -478,11 +520,44 @@ class EquationsOfMotion:
             to zeros. An unknown name is refused.
         method : str
             A method of :func:`rigidmech.ode.solve` ("dop853", "dopri5", "rk4", ...).
-        rtol, atol, step
-            Passed to the solver (``step`` for fixed-step methods).
+        rtol, atol : float
+            Tolerances of the adaptive methods.
+        step : float
+            Step of the fixed-step methods (required by those); a step larger than the time
+            span is refused.
         n_output : int
-            Number of evenly spaced output times.
-        **params
+            Number of evenly spaced sample times (ignored if ``t_eval`` is given).
+        t_eval : array_like, optional
+            The sample times, instead of ``n_output`` evenly spaced ones.
+        events : callable, sympy expression, :class:`Event`, or a list of those, optional
+            Functions ``g(t, y)`` of the state y = (q, q') (with scipy's attributes
+            ``terminal`` and ``direction``, see :func:`rigidmech.ode.event`), or expressions
+            of t, q(t), q'(t), the constants and the inputs, compiled once (an
+            :class:`Event` gives them ``terminal`` and ``direction``). Their zeros are in
+            :attr:`Simulation.t_events`; a terminal one ends the run with status ``"event"``.
+        max_steps : int
+            Largest number of steps (default 10^6); beyond it the run stops with status
+            ``"failed"`` and the samples so far.
+        first_step, max_step : float, optional
+            First and largest step of the adaptive methods.
+        dense_output : bool or None
+            Keep the solver's continuous solution (``sim.result.sol``); memory then grows
+            with the number of steps. ``None`` (default): only for equations whose
+            orientation angles have a singular set (:attr:`singular_sets`), so that a close
+            pass between two samples is found; ``False`` then checks the samples only.
+        progress : None, bool or callable
+            ``None`` (default): a progress bar on stderr for runs longer than 2 s, only when
+            stderr is a terminal; ``True``: the bar even when it is not; ``False``: none; a
+            callable ``progress(t)``: called about every 0.1 s with the time reached,
+            returning False stops the run (status ``"interrupted"``).
+        raise_on_failure : bool
+            Raise :class:`~rigidmech._core.errors.NumericalError` on failure (the partial simulation
+            attached as its ``simulation`` attribute) instead of returning it.
+        params : dict, optional
+            Values of :attr:`parameters` and :attr:`inputs` by name. Needed for a constant
+            whose name is also an argument of ``simulate`` (``params={"step": 0.2}``); the
+            others may also be given as keywords.
+        **values
             Values of :attr:`parameters` and :attr:`inputs` (numbers, or callables of t for
             the inputs). Values for constants of the model that dropped out of the equations
             are ignored with a note (:attr:`Simulation.notes`).
@@ -490,28 +565,66 @@ class EquationsOfMotion:
         Returns
         -------
         Simulation
+
+        Notes
+        -----
+        Where the samples come from: ``dop853``, ``dopri5`` and ``bs32`` evaluate their dense
+        output at the sample times while they integrate, so memory follows the number of
+        samples (and events), not the number of steps; its order is the method's own for
+        ``dop853`` (7) and ``bs32`` (3), one less for ``dopri5`` (4). ``gbs``, ``rkn64`` and
+        ``rkn1210`` land their steps on the sample times: the samples are as accurate as the
+        steps, memory follows the samples. ``radau`` and ``adams`` keep their whole dense
+        output and evaluate it at the end (memory grows with the steps; ``radau``'s
+        interpolant is cubic, less accurate than its steps). Fixed-step methods sample their
+        own grid points (about ``n_output`` of them, evenly spaced by a whole number of
+        steps; with ``t_eval``, a cubic Hermite interpolant of the grid); the one-step ones
+        (``rk4``, ``verlet``, ...) run chunk by chunk (10^4 steps each, same numbers), so
+        memory follows the samples, the multistep ones (``ab4``, ...) keep every
+        ``stride``-th point as they go.
+
+        On Ctrl-C (KeyboardInterrupt) the methods built on the solver's one loop (``dop853``,
+        ``dopri5``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``) keep the samples
+        computed so far, status ``"interrupted"``, and so do the one-step fixed-step methods
+        (up to the last chunk done); the others (``adams``, multistep methods, a fixed-step
+        run with events, ``t_eval`` or dense output) keep only the initial state (the
+        message says so).
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> x = rm.coordinates("x"); step = sp.Symbol("step")   # a constant named `step`
+        >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                         forcing=sp.ImmutableMatrix([[-step * x]]))
+        >>> sim = eqs.simulate(t=(0, 1), q0=[1.0], method="rk4", step=0.01,
+        ...                    params={"step": 4.0})
+        >>> sim.status, round(float(sim.q[0, -1]), 6), round(float(np.cos(2.0)), 6)
+        ('finished', -0.416147, -0.416147)
         """
+        from ._run import merge_values, run
+
+        values = merge_values(params, values)
         inputs = {_name(w) for w in self._inputs}
         _check_simulation_inputs(len(self._q), t, q0, u0, method, n_output,
-                                 {k: v for k, v in params.items() if k not in inputs})
+                                 {k: v for k, v in values.items() if k not in inputs})
         q0 = self._initial(q0, "q0", default_zero=False)
         u0 = self._initial(u0, "u0", default_zero=True)
         y0 = np.concatenate((q0, u0))
+        if not isinstance(method, str):
+            raise ArgumentTypeError(f"`method` must be a method name; got {method!r}.")
         if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
-            fun = self._acceleration_only(method, params)
+            fun = self._acceleration_only(method, values)
         else:
-            fun = self.rhs(**params)
-        t_eval = np.linspace(t[0], t[1], int(n_output))
-        kwargs = {"step": step} if step is not None else {"rtol": rtol, "atol": atol}
-        start = _time.perf_counter()
-        res = ode.solve(fun, (float(t[0]), float(t[1])), y0, method=method, t_eval=t_eval,
-                        dense_output=True, **kwargs)
-        elapsed = _time.perf_counter() - start
-        if not res.success:
-            raise NumericalError(f"integration failed: {res.message}")
-        _check_finite_motion(res)
-        warn_near_singularities(self.singular_sets, self._coordinates, res, params)
-        return Simulation(self, res, params, elapsed, notes=fun.notes)
+            fun = self.rhs(**values)
+        if dense_output is None:
+            dense_output = bool(self.singular_sets)
+        sim = run(self, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
+                  n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
+                  first_step=first_step, max_step=max_step, dense_output=dense_output,
+                  progress=progress, values=values, notes=fun.notes)
+        if sim.result is not None and sim.t.size:
+            warn_near_singularities(self.singular_sets, self._coordinates, sim.result, values)
+        return sim.check() if raise_on_failure else sim
 
     def display_rule(self) -> dict:
         """Symbols to print q(t), q'(t), q''(t) as q, q_dot, q_ddot (for reading only: they
@@ -613,166 +726,3 @@ def _check_simulation_inputs(n, t, q0, u0, method, n_output, params):
             f"`t`); got {n_output!r}.")
     for name, value in params.items():
         _finite_real_number(value, f"`{name}` must be a finite real number")
-
-
-def _check_finite_motion(res):
-    bad = ~np.isfinite(res.y).all(axis=0)
-    if bad.any():
-        k = int(np.argmax(bad))
-        raise NumericalError(
-            f"the motion is not finite from t = {res.t[k]!r} on (state {res.y[:, k]!r}): "
-            "check the initial values and the parameters.")
-
-
-class Simulation:
-    """A numerically integrated motion: times, states, and what can be computed along it.
-
-    Attributes
-    ----------
-    t : ndarray, shape (n_points,)
-    q, u : ndarray, shape (n, n_points)
-    result : rigidmech.ode.OdeResult
-    elapsed : float
-        Wall time of the integration, seconds.
-    notes : tuple of str
-        What the run noted without failing: values given for constants that dropped out of
-        the equations, which were ignored.
-
-    Examples
-    --------
-    >>> import sympy as sp
-    >>> import rigidmech as rm
-    >>> x = rm.coordinates("x"); k = sp.Symbol("k")
-    >>> eqs = EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
-    ...     forcing=sp.ImmutableMatrix([[-k * x]]),
-    ...     energy=(x.diff(rm.t)**2 + k * x**2) / 2)
-    >>> sim = eqs.simulate(t=(0, 3), q0=[1.0], rtol=1e-10, atol=1e-12, k=4.0)
-    >>> bool(abs(sim.q[0, -1] - np.cos(6.0)) < 1e-8), sim.energy_drift() < 1e-9
-    (True, True)
-    >>> bool(np.allclose(sim.evaluate(x.diff(rm.t, 2)), -4.0 * sim.q[0]))
-    True
-    """
-
-    __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes")
-
-    def __init__(self, eqs, result, params, elapsed, notes=()):
-        self._eqs = eqs
-        self.result = result
-        n = len(eqs.q)
-        self.t = result.t
-        self.q = result.y[:n]
-        self.u = result.y[n:]
-        self._params = dict(params)
-        self.elapsed = elapsed
-        self.notes = tuple(notes)
-
-    @property
-    def equations(self) -> EquationsOfMotion:
-        """The equations that were integrated."""
-        return self._eqs
-
-    def _input_values(self):
-        out = []
-        for w in self._eqs.inputs:
-            v = self._params[_name(w)]
-            if callable(v):
-                try:
-                    v = np.asarray(v(self.t), dtype=float)
-                except (TypeError, ValueError):  # a callable of one float only
-                    v = np.array([float(v(x)) for x in self.t])
-            out.append(np.broadcast_to(np.asarray(v, dtype=float), self.t.shape))
-        return out
-
-    def evaluate(self, expr):
-        """Evaluate a symbolic expression along the motion; returns an array over the output
-        times (for a Matrix, its shape followed by the times).
-
-        The expression may hold t, the coordinates q(t) and their first and second
-        derivatives (q'' is the solution of the equations of motion), the inputs and
-        constants given to :meth:`EquationsOfMotion.simulate` (including those that dropped
-        out of the equations).
-        """
-        eqs = self._eqs
-        q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
-        if isinstance(expr, sp.MatrixBase):
-            shape = expr.shape
-            flat = xreplace_shared(list(expr), rule)
-            e = sp.ImmutableMatrix(*shape, flat)
-        else:
-            try:
-                flat = xreplace_shared([sp.sympify(expr)], rule)
-            except (sp.SympifyError, TypeError) as exc:
-                raise ArgumentTypeError(
-                    f"`expr` must be a sympy expression or Matrix; got {type(expr).__name__}."
-                ) from exc
-            e = flat[0]
-        symbols, functions, derivatives = atoms_shared(flat)
-        if functions or derivatives:
-            raise CompilationError(
-                f"`expr` contains {', '.join(sorted(map(str, functions | derivatives)))}, "
-                "which is neither a coordinate of the equations, one of its first two "
-                "derivatives nor an input.")
-        known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t}
-        constants = sorted(symbols - known, key=lambda s: s.name)
-        missing = [c.name for c in constants if c.name not in self._params]
-        if missing:
-            raise ArgumentError(
-                f"`expr` depends on {missing}, which the simulation has no value for; give "
-                "them to simulate().")
-        values = [float(self._params[c.name]) for c in constants]
-        f = compile_expressions(e, [_t, list(q_s), list(u_s), list(a_s), *constants,
-                                    *w_s])
-        inputs = self._input_values()
-        if any(e.has(a) for a in a_s):
-            params = [float(self._params[p.name]) for p in eqs.parameters]
-            acc = eqs._solver()(self.t, self.q, self.u, *params, *inputs)
-        else:
-            acc = np.zeros_like(self.q)
-        out = f(self.t, self.q, self.u, acc, *values, *inputs)
-        if isinstance(e, sp.MatrixBase):
-            return np.broadcast_to(out, tuple(e.shape) + self.t.shape).copy()
-        return np.broadcast_to(out, self.t.shape).copy()
-
-    def energy(self):
-        """Total mechanical energy along the motion."""
-        e = self._eqs.energy
-        if e is None:
-            raise ArgumentError("the system's actions have no potential energy: no energy "
-                                "to follow.")
-        return self.evaluate(e)
-
-    def energy_drift(self) -> float:
-        """Relative drift of the energy: ``max |E(t) - E(0)| / max(|E(0)|, max |E|)``."""
-        e = self.energy()
-        scale = max(abs(e[0]), np.max(np.abs(e)), np.finfo(float).tiny)
-        return float(np.max(np.abs(e - e[0])) / scale)
-
-    def plot(self, path=None, *, ax=None):
-        """Plot the parameters of situation against time; save to ``path`` if given.
-
-        With ``path`` and no ``ax`` the figure is drawn off-screen (no pyplot state, works
-        headless); with neither, pyplot makes a figure to show. Returns the Axes.
-        """
-        if ax is None:
-            if path is not None:
-                from matplotlib.figure import Figure  # imported on use (slow import)
-
-                ax = Figure(figsize=(7, 4)).subplots()
-            else:
-                import matplotlib.pyplot as plt  # imported on use (slow import)
-
-                ax = plt.subplots(figsize=(7, 4))[1]
-        for i, name in enumerate(self._eqs.names):
-            ax.plot(self.t, self.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
-        ax.set_xlabel("t")
-        ax.set_ylabel("parameters of situation")
-        ax.legend()
-        ax.grid(True, alpha=0.3)
-        if path is not None:
-            ax.figure.tight_layout()
-            ax.figure.savefig(path, dpi=100)
-        return ax
-
-    def __repr__(self):
-        return (f"Simulation(t=[{self.t[0]}, {self.t[-1]}], points={self.t.size}, "
-                f"nfev={self.result.nfev}, method={self.result.method!r})")

@@ -87,6 +87,11 @@ def _mechanical_energy(galilean, solids, bodies, actions):
     return T + sp.Add(*V)
 
 
+def _kinetic_energy(galilean, bodies):
+    """Kinetic energy of `bodies` relative to `galilean` (a snapshot, for the equations)."""
+    return sp.Add(*[b.kinetic_energy(galilean) for b in bodies if b.mass])
+
+
 def _constants(bodies, contributions):
     """The constant symbols of bodies (mass, inertia, centre, frames) and action torsors."""
     exprs = []
@@ -524,7 +529,8 @@ class System:
             forcing=sp.ImmutableMatrix(n, 1, f),
             energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
             model_parameters=partial(_constants, bodies, tuple(self._contributions())),
-            singular_sets=partial(orientation_singularities, tuple(bodies), R))
+            singular_sets=partial(orientation_singularities, tuple(bodies), R),
+            kinetic_energy=partial(_kinetic_energy, R, bodies), system=self)
         # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
         eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
             bodies, self.coordinates))

@@ -23,3 +23,6 @@ from .pipeline import RunReport, check_plot_path, equations_text, plot_simulatio
 
 __all__ = ["Scene", "Parameter", "Built", "catalogue", "get", "names", "RunReport", "run",
            "equations_text", "plot_simulation", "check_plot_path"]
+from .pipeline import check_save_path  # noqa: E402
+
+__all__ += ["check_save_path"]

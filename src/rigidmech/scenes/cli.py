@@ -11,8 +11,14 @@ Every option and the ``--plot`` path are checked before the run. Misuse (unknown
 parameter or method, malformed value, a non-positive value for a positive constant, wrong number
 of initial values, a plot path in a missing folder or with an unknown extension) prints one line
 ``rigidmech: error: ...`` on stderr and exits with status 2; a failed integration prints one line
-and exits with status 1; Ctrl-C prints ``rigidmech: interrupted`` and exits with status 130. Any
-other failure prints one line too; ``--debug`` shows its traceback instead.
+and exits with status 1 (after writing the ``--plot`` and ``--save`` outputs of the motion up to
+the failure); Ctrl-C during the integration ends it with the samples computed so far, writes
+the outputs, prints ``rigidmech: interrupted at t = ...`` and exits with status 130 (at any
+other moment: ``rigidmech: interrupted``, status 130). Any other failure prints one line too;
+``--debug`` shows its traceback instead. ``--save PATH`` writes the samples (``.npz`` or
+``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps,
+``--progress/--no-progress`` shows or hides a progress bar on stderr (default: shown on a
+terminal for runs longer than 2 s).
 """
 
 from __future__ import annotations
@@ -25,7 +31,7 @@ from .. import ode
 from .._core.errors import NumericalError, RigidmechError, SceneError
 from .._core.version import __version__
 from .catalogue import catalogue, get, names
-from .pipeline import check_plot_path, run
+from .pipeline import check_plot_path, check_save_path, run
 from .regime_scenes import regime_scene_names, regime_scenes, run_regime_scene
 
 __all__ = ["main", "DEFAULT_SCENE"]
@@ -55,6 +61,16 @@ def _param(text):
         raise argparse.ArgumentTypeError(
             f"the value of {name} must be a number; got {value!r}") from None
     return name, number
+
+
+def _positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 1; got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 1; got {text!r}")
+    return value
 
 
 def _floats(text):
@@ -105,6 +121,15 @@ def _parser():
     r.add_argument("--u0", type=_floats, metavar="U",
                    help="initial velocities q', comma-separated")
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
+    r.add_argument("--save", metavar="PATH",
+                   help="save the samples there (.npz or .csv, columns t, q, q')")
+    r.add_argument("--samples", type=_positive_int, default=1001, metavar="N",
+                   help="number of evenly spaced output times (default 1001, at least 2)")
+    r.add_argument("--max-steps", type=_positive_int, metavar="N",
+                   help="largest number of solver steps (default 1000000)")
+    r.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                   help="show a progress bar on runs longer than 2 s (default: only when "
+                   "stderr is a terminal)")
     r.add_argument("--pretty", action="store_true",
                    help="print the equations with sympy's 2-D pretty printer")
     r.add_argument("--debug", action="store_true",
@@ -131,6 +156,10 @@ def _list_scenes(out):
 def _run(args, out):
     if args.plot is not None:
         check_plot_path(args.plot, "--plot")
+    if args.save is not None:
+        check_save_path(args.save, "--save")
+    if args.samples < 2:
+        raise _UsageError(f"argument --samples: expected at least 2; got {args.samples}")
     if args.name in regime_scene_names():  # motions with regime changes print their phases
         _run_regimes(args, out)
         return
@@ -142,15 +171,32 @@ def _run(args, out):
         params[name] = value
     report = run(args.name, t_end=args.t_end, params=params, q0=args.q0, u0=args.u0,
                  method=args.method, rtol=args.rtol, atol=args.atol, step=args.step,
-                 plot=args.plot)
+                 plot=args.plot, save=args.save, max_steps=args.max_steps,
+                 progress=args.progress, n_output=args.samples, dense_output=False)
     print(report.summary(pretty=args.pretty), file=out)
+    sim = report.simulation
+    if report.status == "interrupted":
+        raise _Interrupted(f"interrupted at t = {sim.t_stop:g} (the samples up to t = "
+                           f"{sim.t[-1]:g} are kept{_outputs(report)})")
+    if report.status == "failed":
+        raise NumericalError(report.message.rstrip(".")
+                             + _outputs(report, "; partial output in "))
+
+
+def _outputs(report, lead=", in "):
+    paths = [p for p in (report.plot_path, report.save_path) if p is not None]
+    return f"{lead}{' and '.join(paths)}" if paths else ""
+
+
+class _Interrupted(Exception):
+    """The run was interrupted; the partial outputs are written."""
 
 
 def _run_regimes(args, out):
-    for option in ("method", "step", "atol"):
+    for option in ("method", "step", "atol", "save", "max_steps", "progress"):
         if getattr(args, option) is not None:
-            raise SceneError(f"--{option} is not an option of the regime scene {args.name!r} "
-                             "(integrated phase by phase with dop853).")
+            raise SceneError(f"--{option.replace('_', '-')} is not an option of the regime "
+                             f"scene {args.name!r} (integrated phase by phase with dop853).")
     params = {}
     for name, value in args.param:
         if name in params:
@@ -184,6 +230,9 @@ def main(argv=None) -> int:
         return exc.code if isinstance(exc.code, int) else 0
     except KeyboardInterrupt:
         print("rigidmech: interrupted", file=err)
+        return 130
+    except _Interrupted as exc:
+        print(f"rigidmech: {exc}", file=err)
         return 130
     except _UsageError as exc:
         print(f"rigidmech: error: {exc}", file=err)

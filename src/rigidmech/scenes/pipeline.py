@@ -17,7 +17,6 @@ import re
 import time
 from types import MappingProxyType
 
-import numpy as np
 import sympy as sp
 
 from .. import ode
@@ -26,6 +25,7 @@ from ..dynamics import EquationsOfMotion, Simulation
 from .catalogue import Scene, get
 
 __all__ = ["RunReport", "run", "equations_text", "plot_simulation", "check_plot_path"]
+__all__ += ["check_save_path"]
 
 
 def equations_text(eqs: EquationsOfMotion, *, pretty: bool = False) -> str:
@@ -93,16 +93,22 @@ class RunReport:
     nfev, nsteps : int
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
-        ``max |E(t) - E(0)| / max |E|`` along the motion (None without a potential energy).
+        ``max |E(t) - E(0)| / (T(0) + |V(0)|)`` along the motion (None without a potential
+        energy; see :meth:`Simulation.energy_drift`).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
         Where the plot was written.
+    status, message : str
+        How the run ended (:attr:`Simulation.status`) and why; the final state is the last
+        sample computed.
+    save_path : str or None
+        Where the samples were saved (:meth:`Simulation.save`).
     """
 
     __slots__ = ("scene", "parameters", "q0", "u0", "t_end", "method", "rtol", "atol", "step",
                  "equations", "simulation", "timings", "nfev", "nsteps", "energy_drift",
-                 "final_q", "final_u", "plot_path")
+                 "final_q", "final_u", "plot_path", "status", "message", "save_path")
 
     def __init__(self, **fields):
         for name in self.__slots__:
@@ -134,8 +140,11 @@ class RunReport:
             *("  " + line for line in self.equations_text(pretty=pretty).splitlines()),
             f"integrated t in [0, {self.t_end:g}] with {self.method} ({tol}) from "
             f"q0 = {list(self.q0)}, u0 = {list(self.u0)}",
+            *([f"the run ended early ({self.status}): {self.message}"]
+              if self.status not in ("finished", "event") else []),
             f"final state: q = {[float(f'{x:.10g}') for x in self.final_q]}, "
-            f"q' = {[float(f'{x:.10g}') for x in self.final_u]}",
+            f"q' = {[float(f'{x:.10g}') for x in self.final_u]}"
+            + ("" if self.status == "finished" else f" at t = {self.simulation.t[-1]:g}"),
             f"energy drift: {drift}",
             f"timings: derive {ms['derive']:.1f} ms, compile {ms['compile']:.1f} ms, "
             f"integrate {ms['integrate']:.1f} ms ({self.nfev} evaluations, {self.nsteps} "
@@ -144,6 +153,8 @@ class RunReport:
         lines.extend(f"note: {note}" for note in self.simulation.notes)
         if self.plot_path is not None:
             lines.append(f"plot written to {self.plot_path}")
+        if self.save_path is not None:
+            lines.append(f"samples saved to {self.save_path}")
         return "\n".join(lines)
 
     def __str__(self):
@@ -221,6 +232,30 @@ def check_plot_path(path, argument="plot") -> str:
     return text
 
 
+def check_save_path(path, argument="save") -> str:
+    """Check, before a run, that the samples can be saved at ``path``: a ``.npz`` or ``.csv``
+    extension, an existing folder. Returns the path as a string.
+
+    Examples
+    --------
+    >>> check_save_path("run.csv")
+    'run.csv'
+    >>> check_save_path("run.txt")
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.SceneError: `save`: unknown file type '.txt'; one of .npz, .csv.
+    """
+    name = f"`{argument}`" if not argument.startswith("-") else argument
+    text = str(path)
+    folder, base = os.path.split(text)
+    ext = os.path.splitext(base)[1]
+    if ext.lower() not in (".npz", ".csv"):
+        raise SceneError(f"{name}: unknown file type {ext or 'none'!r}; one of .npz, .csv.")
+    if folder and not os.path.isdir(folder):
+        raise SceneError(f"{name}: the folder {folder!r} does not exist; create it first.")
+    return text
+
+
 def _positive(values, built):
     """Values of constants declared positive (``rm.constants(..., positive=True)``) must
     be > 0: a negative mass or length gives equations with no physical meaning."""
@@ -249,7 +284,8 @@ def _method(method, step):
 
 
 def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=None,
-        atol=None, step=None, n_output=1001, plot=None) -> RunReport:
+        atol=None, step=None, n_output=1001, plot=None, save=None, max_steps=None,
+        progress=None, dense_output=True) -> RunReport:
     """Derive, compile and integrate a scene; follow its energy; optionally plot it.
 
     Parameters
@@ -271,10 +307,23 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         Write a figure (coordinates and relative energy error against time) there; works
         without a display (matplotlib's Agg canvas, no pyplot). The path is checked before
         the run (:func:`check_plot_path`).
+    save : str or path-like, optional
+        Save the samples there (``.npz`` or ``.csv``, :meth:`Simulation.save`); checked
+        before the run (:func:`check_save_path`).
+    max_steps : int, optional
+        Largest number of steps of the solver (default 10^6).
+    progress : None, bool or callable
+        As for :meth:`EquationsOfMotion.simulate` (default: a bar on a terminal only).
+    dense_output : bool
+        Keep the solver's continuous solution (``report.simulation.result.sol``), default
+        True; its memory grows with the number of steps: turn it off for long runs (the
+        command line does), memory then follows the ``n_output`` samples.
 
     Returns
     -------
     RunReport
+        Also for a run that fails or is interrupted: it holds the samples computed so far
+        (plotted and saved if asked), see ``status`` and ``message``.
 
     Raises
     ------
@@ -282,8 +331,6 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         Unknown scene, parameter or method; malformed values; a value <= 0 for a constant
         the scene declares positive; wrong length of ``q0``/``u0``; a plot path that cannot
         be written; a method for q'' = a(t, q) on equations that depend on q'.
-    NumericalError
-        The integration failed.
 
     Examples
     --------
@@ -321,6 +368,13 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
                          f"atol={atol:g}.")
     if plot is not None:
         check_plot_path(plot)
+    if save is not None:
+        check_save_path(save)
+    if max_steps is not None and (isinstance(max_steps, bool) or not isinstance(
+            max_steps, int) or max_steps < 1):
+        raise SceneError(f"`max_steps` must be an integer >= 1; got {max_steps!r}.")
+    if step is not None and step > t_end:
+        raise SceneError(f"`step` = {step:g} exceeds the duration `t_end` = {t_end:g}.")
 
     timings = {}
     start = time.perf_counter()
@@ -337,22 +391,26 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     eqs.rhs(**values)  # compiles once; simulate() reuses the compiled function
     timings["compile"] = time.perf_counter() - start
     sim = eqs.simulate(t=(0.0, t_end), q0=q0, u0=u0, method=method, rtol=rtol, atol=atol,
-                       step=step, n_output=n_output, **values)
+                       step=step, n_output=n_output, params=values, progress=progress,
+                       dense_output=dense_output,
+                       **({"max_steps": max_steps} if max_steps is not None else {}))
     timings["integrate"] = sim.elapsed
     start = time.perf_counter()
-    drift = sim.energy_drift() if eqs.energy is not None else None
+    drift = sim.energy_drift() if eqs.energy is not None and sim.t.size else None
     timings["energy"] = time.perf_counter() - start
     plot_path = None
     if plot is not None:
         plot_path = str(plot)
         plot_simulation(sim, plot_path, title=f"{scene.title} ({scene.section})")
+    save_path = sim.save(save) if save is not None else None
     return RunReport(
         scene=scene, parameters=MappingProxyType(values), q0=q0, u0=u0, t_end=t_end,
         method=method, rtol=rtol, atol=atol, step=step, equations=eqs, simulation=sim,
         timings=MappingProxyType(timings), nfev=int(sim.result.nfev),
         nsteps=int(getattr(sim.result, "nsteps", 0) or 0), energy_drift=drift,
         final_q=tuple(float(x) for x in sim.q[:, -1]),
-        final_u=tuple(float(x) for x in sim.u[:, -1]), plot_path=plot_path)
+        final_u=tuple(float(x) for x in sim.u[:, -1]), plot_path=plot_path,
+        status=sim.status, message=sim.message, save_path=save_path)
 
 
 def plot_simulation(sim: Simulation, path, *, title=None):
@@ -384,9 +442,9 @@ def plot_simulation(sim: Simulation, path, *, title=None):
     axes[0].grid(True, alpha=0.3)
     if has_energy:
         e = sim.energy()
-        scale = max(abs(e[0]), float(np.max(np.abs(e))), np.finfo(float).tiny)
+        scale = sim.energy_scale() or 1.0
         axes[1].plot(sim.t, (e - e[0]) / scale)
-        axes[1].set_ylabel("(E - E0) / max|E|")
+        axes[1].set_ylabel("(E - E0) / (T0 + |V0|)")
         axes[1].grid(True, alpha=0.3)
     axes[-1].set_xlabel("t [s]")
     if title:

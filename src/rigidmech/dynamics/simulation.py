@@ -1,0 +1,585 @@
+"""A numerically integrated motion and what is computed along it (book, ch. 27).
+
+:class:`Simulation` is what :meth:`EquationsOfMotion.simulate` returns, whatever the outcome:
+its :attr:`~Simulation.status` says how the run ended (``"finished"``, ``"event"``,
+``"failed"``, ``"interrupted"``) and it keeps everything computed until then. Along the motion
+it evaluates any expression of the motion (:meth:`~Simulation.evaluate`), the energy and its
+drift, the action of a connection (:meth:`~Simulation.connection_action`); it saves to and loads
+from ``.npz`` and ``.csv`` files.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import os
+
+import numpy as np
+import sympy as sp
+
+from .._core.compile import compile_expressions
+from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError, NumericalError
+from .._core.symbolic import atoms_shared, xreplace_shared
+from ..vectors import t as _t
+
+__all__ = ["Simulation", "Event", "load_simulation"]
+
+#: ``OdeResult.status`` -> :attr:`Simulation.status`
+_STATUS = {0: "finished", 1: "event", -1: "failed", 2: "interrupted"}
+
+
+def _name(q):
+    return q.func.__name__ if isinstance(q, sp.core.function.AppliedUndef) else q.name
+
+
+class Event:
+    """An event of a simulation written as an expression of the motion (ch. 27): the times
+    where ``expr`` (of t, the coordinates q(t), their rates q'(t), the constants and the inputs)
+    crosses zero are located; ``terminal`` stops the run there.
+
+    Parameters
+    ----------
+    expr : sympy expression
+    terminal : bool or int
+        Stop at the first zero (or at the ``terminal``-th one).
+    direction : float
+        ``> 0`` only crossings from negative to positive, ``< 0`` the other way, 0 both.
+
+    Examples
+    --------
+    >>> import sympy as sp, rigidmech as rm
+    >>> x = rm.coordinates("x")
+    >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+    ...                            forcing=sp.ImmutableMatrix([[-9.81]]))
+    >>> ground = Event(x, terminal=True, direction=-1)
+    >>> sim = eqs.simulate(t=(0, 10), q0=[20.0], events=[ground])
+    >>> sim.status, round(float(sim.t_events[0][0]), 8)          # sqrt(2 h / g)
+    ('event', 2.01927511)
+    """
+
+    __slots__ = ("expr", "terminal", "direction")
+
+    def __init__(self, expr, *, terminal=False, direction=0.0):
+        try:
+            expr = sp.sympify(expr)
+        except (sp.SympifyError, TypeError):
+            raise ArgumentTypeError(
+                f"`expr` must be a sympy expression of the motion; got {expr!r}.") from None
+        object.__setattr__(self, "expr", expr)
+        object.__setattr__(self, "terminal", terminal)
+        object.__setattr__(self, "direction", float(direction))
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"Event is immutable; cannot set {name!r}.")
+
+    def __repr__(self):
+        return f"Event({self.expr}, terminal={self.terminal!r}, direction={self.direction:g})"
+
+
+class Simulation:
+    """A numerically integrated motion: times, states, how the run ended, and what can be
+    computed along it (ch. 27).
+
+    Attributes
+    ----------
+    t : ndarray, shape (n_points,)
+        The sample times (see :meth:`EquationsOfMotion.simulate` for where they come from).
+    q, u : ndarray, shape (n, n_points)
+        Coordinates and rates at ``t``.
+    status : {"finished", "event", "failed", "interrupted"}
+        How the run ended: the end of the time span reached; a terminal event; a numerical
+        failure (:attr:`message` says what and at which t); stopped on request (Ctrl-C, or a
+        ``progress`` callback returning False). In every case the samples computed so far
+        are kept.
+    message : str
+        Why the run ended, in words.
+    result : rigidmech.ode.OdeResult or None
+        The solver's result (None for a simulation loaded from a file).
+    elapsed : float
+        Wall time of the integration, seconds.
+    notes : tuple of str
+        What the run noted without failing (values given for constants that dropped out of
+        the equations, which were ignored).
+
+    Examples
+    --------
+    >>> import sympy as sp, numpy as np
+    >>> import rigidmech as rm
+    >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+    >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+    ...     forcing=sp.ImmutableMatrix([[-k * x]]),
+    ...     energy=(x.diff(rm.t)**2 + k * x**2) / 2)
+    >>> sim = eqs.simulate(t=(0, 3), q0=[1.0], rtol=1e-10, atol=1e-12, k=4.0)
+    >>> sim.status, bool(abs(sim.q[0, -1] - np.cos(6.0)) < 1e-8), sim.energy_drift() < 1e-9
+    ('finished', True, True)
+    >>> bool(np.allclose(sim.evaluate(x.diff(rm.t, 2)), -4.0 * sim.q[0]))
+    True
+    """
+
+    __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
+                 "message", "_names", "_t_events", "_method", "_t_stop")
+
+    def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
+                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None):
+        self._eqs = eqs
+        self.result = result
+        self._names = tuple(names) if names is not None else tuple(eqs.names)
+        n = len(self._names)
+        t = result.t if t is None else np.asarray(t, dtype=float)
+        y = result.y if y is None else np.asarray(y, dtype=float).reshape(2 * n, len(t))
+        self.t, self.q, self.u = t, y[:n], y[n:]
+        self._params = dict(params)
+        self.elapsed = float(elapsed)
+        self.notes = tuple(notes)
+        self.status = status if status is not None else _STATUS.get(result.status, "failed")
+        self.message = message if message is not None else result.message
+        self._t_events = (list(t_events) if t_events is not None else
+                          [np.asarray(x) for x in result.t_events] if result is not None
+                          else [])
+        self._method = method if method is not None else (result.method if result else None)
+        self._t_stop = float(t_stop) if t_stop is not None else (
+            float(self.t[-1]) if self.t.size else math.nan)
+
+    # -- what the run was ---------------------------------------------------------------
+    @property
+    def equations(self):
+        """The equations that were integrated (None for a simulation loaded from a file)."""
+        return self._eqs
+
+    @property
+    def names(self) -> tuple:
+        """The names of the coordinates, in the order of the rows of :attr:`q`."""
+        return self._names
+
+    @property
+    def parameters(self) -> dict:
+        """The values of the constants (and of the inputs) the run was given (a copy)."""
+        return dict(self._params)
+
+    @property
+    def method(self):
+        """The integration method's name."""
+        return self._method
+
+    @property
+    def success(self) -> bool:
+        """True if the run reached the end of its span or a terminal event."""
+        return self.status in ("finished", "event")
+
+    @property
+    def t_stop(self) -> float:
+        """The time the integration reached: the end of the span, the terminal event, or the
+        last step accepted before a failure or an interruption (the last sample,
+        ``t[-1]``, may be earlier: samples are taken at the times asked for).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> sim = eqs.simulate(t=(0, 10), q0=[1.0], n_output=3, max_steps=5)
+        >>> sim.status, sim.t.tolist(), 0 < sim.t_stop < 10
+        ('failed', [0.0], True)
+        """
+        return self._t_stop
+
+    @property
+    def t_events(self) -> list:
+        """For each event given to ``simulate``, the times where it occurred."""
+        return list(self._t_events)
+
+    def check(self):
+        """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status
+        ``"failed"``), with this simulation, holding the motion up to the failure, attached
+        as the error's ``simulation`` attribute; return the simulation otherwise (an
+        interruption is not a failure: it was asked for).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[2 * x**3]]))  # x = 1/(1 - t)
+        >>> sim = eqs.simulate(t=(0, 2), q0=[1.0], u0=[1.0])
+        >>> sim.status, bool(0.99 < sim.t_stop < 1.01)
+        ('failed', True)
+        >>> try:
+        ...     sim.check()
+        ... except NumericalError as exc:
+        ...     exc.simulation is sim
+        True
+        """
+        if self.status == "failed":
+            exc = NumericalError(f"integration failed: {self.message}")
+            exc.simulation = self
+            raise exc
+        return self
+
+    # -- along the motion ---------------------------------------------------------------
+    def _need_equations(self, what):
+        if self._eqs is None:
+            raise ArgumentError(
+                f"{what} needs the equations of motion, which a simulation loaded from a "
+                "file does not have; simulate again to get them.")
+        return self._eqs
+
+    def _input_values(self):
+        out = []
+        for w in self._eqs.inputs:
+            v = self._params[_name(w)]
+            if callable(v):
+                try:
+                    v = np.asarray(v(self.t), dtype=float)
+                except (TypeError, ValueError):  # a callable of one float only
+                    v = np.array([float(v(x)) for x in self.t])
+            out.append(np.broadcast_to(np.asarray(v, dtype=float), self.t.shape))
+        return out
+
+    def evaluate(self, expr, frame=None):
+        """Evaluate a symbolic expression along the motion; returns an array over the sample
+        times (for a Matrix, its shape followed by the times; for a
+        :class:`~rigidmech.vectors.Vector`, its three components in the basis of ``frame``,
+        shape (3, n_points)). Compiled once per call.
+
+        The expression may hold t, the coordinates q(t) and their first and second
+        derivatives (q'' is the solution of the equations of motion), the inputs and
+        constants given to :meth:`EquationsOfMotion.simulate` (including those that dropped
+        out of the equations).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[2]]),
+        ...                            forcing=sp.ImmutableMatrix([[-8 * x]]))
+        >>> sim = eqs.simulate(t=(0, 1), q0=[1.0], n_output=3)
+        >>> sim.evaluate(x.diff(rm.t, 2) + 4 * x).round(12).tolist()
+        [0.0, 0.0, 0.0]
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, 0, 0)
+        >>> sim.evaluate(P.velocity(R0), frame=R0).shape     # (vx, vy, vz) at the 3 samples
+        (3, 3)
+        """
+        from ..vectors import Frame, Vector
+
+        if isinstance(expr, Vector):
+            if not isinstance(frame, Frame):
+                raise ArgumentTypeError(
+                    f"`frame` must be a Frame to evaluate a Vector's components in; got "
+                    f"{type(frame).__name__}.")
+            return self.evaluate(expr.components(frame))[:, 0]
+        eqs = self._need_equations("evaluate()")
+        q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
+        if isinstance(expr, sp.MatrixBase):
+            shape = expr.shape
+            flat = xreplace_shared(list(expr), rule)
+            e = sp.ImmutableMatrix(*shape, flat)
+        else:
+            try:
+                flat = xreplace_shared([sp.sympify(expr)], rule)
+            except (sp.SympifyError, TypeError) as exc:
+                raise ArgumentTypeError(
+                    f"`expr` must be a sympy expression or Matrix; got {type(expr).__name__}."
+                ) from exc
+            e = flat[0]
+        symbols, functions, derivatives = atoms_shared(flat)
+        if functions or derivatives:
+            raise CompilationError(
+                f"`expr` contains {', '.join(sorted(map(str, functions | derivatives)))}, "
+                "which is neither a coordinate of the equations, one of its first two "
+                "derivatives nor an input.")
+        known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t}
+        constants = sorted(symbols - known, key=lambda s: s.name)
+        missing = [c.name for c in constants if c.name not in self._params]
+        if missing:
+            raise ArgumentError(
+                f"`expr` depends on {missing}, which the simulation has no value for; give "
+                "them to simulate().")
+        values = [float(self._params[c.name]) for c in constants]
+        f = compile_expressions(e, [_t, list(q_s), list(u_s), list(a_s), *constants,
+                                    *w_s])
+        inputs = self._input_values()
+        if any(e.has(a) for a in a_s):
+            params = [float(self._params[p.name]) for p in eqs.parameters]
+            acc = eqs._solver()(self.t, self.q, self.u, *params, *inputs)
+        else:
+            acc = np.zeros_like(self.q)
+        out = f(self.t, self.q, self.u, acc, *values, *inputs)
+        if isinstance(e, sp.MatrixBase):
+            return np.broadcast_to(out, tuple(e.shape) + self.t.shape).copy()
+        return np.broadcast_to(out, self.t.shape).copy()
+
+    def connection_action(self, parent, child, *, basis=None, system=None) -> dict:
+        """The action of ``parent`` on ``child`` through their connection (ch. 18.2) along the
+        motion: its six components as time series, in one call (compiled once).
+
+        Parameters
+        ----------
+        parent, child : Body or Frame
+            The two solids of the connection, as given to ``System.connect``.
+        basis : Frame, optional
+            Components of the resultant (X, Y, Z) and of the moment at the joint's point
+            (L, M, N) along the axes of this frame; default: the joint's own basis (u, v, w),
+            as :meth:`System.connection_components`.
+        system : System, optional
+            The system the equations were derived from; by default the one they remember
+            (equations derived by ``System.equations_of_motion``). It must not have changed
+            since (an action or a connection added): its equations would differ.
+
+        Returns
+        -------
+        dict
+            ``{"X": array, "Y": ..., "Z": ..., "L": ..., "M": ..., "N": ...}`` over :attr:`t`.
+
+        Examples
+        --------
+        >>> import numpy as np, rigidmech as rm
+        >>> q = rm.coordinates("q"); m, L, g = rm.constants("m L g", positive=True)
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> bob = rm.Body("bob", frame=R1, mass=m, centre=R0.origin.moved("G", L * R1.i))
+        >>> s = rm.System(galilean=R0)
+        >>> s.connect(R0, bob, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.act(rm.gravity(g * R0.i))
+        >>> sim = s.equations_of_motion().simulate(t=(0, 1), q0=[0.0], m=2.0, L=1.0, g=9.81)
+        >>> N = sim.connection_action(R0, bob, basis=R0)
+        >>> bool(np.allclose(N["X"], -2.0 * 9.81))       # at rest below the pivot: -m g
+        True
+        """
+        eqs = self._need_equations("connection_action()")
+        system = system if system is not None else getattr(eqs, "system", None)
+        if system is None:
+            raise ArgumentError(
+                "`system` is needed: these equations were not derived by "
+                "System.equations_of_motion(); pass system=... .")
+        if system.equations_of_motion() is not eqs:
+            raise ArgumentError(
+                "`system` has changed since these equations were derived (or is another "
+                "system): its connection actions would not match this motion.")
+        if basis is None:
+            comps = system.connection_components(parent, child)
+            keys = list(comps)
+            exprs = [comps[k] for k in keys]
+        else:
+            from ..vectors import Frame
+
+            if not isinstance(basis, Frame):
+                raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
+                                        f"{type(basis).__name__}.")
+            torsor = system.connection_action(parent, child)
+            point = system.joint(child)[1].at
+            moment = torsor.moment_at(point)
+            keys = ["X", "Y", "Z", "L", "M", "N"]
+            exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
+        values = self.evaluate(sp.ImmutableMatrix(len(exprs), 1, exprs))
+        return {k: values[i, 0] for i, k in enumerate(keys)}
+
+    def energy(self):
+        """Total mechanical energy T + V along the motion."""
+        e = self._need_equations("energy()").energy
+        if e is None:
+            raise ArgumentError("the system's actions have no potential energy: no energy "
+                                "to follow.")
+        return self.evaluate(e)
+
+    def energy_scale(self) -> float:
+        """The scale of :meth:`energy_drift`: ``T(0) + |V(0)|``, the kinetic energy plus the
+        magnitude of the potential energy at the start (``V = E - T``). If that is 0 (a
+        motion starting at rest where V = 0) it is ``max_t (T + |V|)`` over the samples; when
+        the equations do not know their kinetic energy (written by hand), ``|E(0)|`` then
+        ``max_t |E|``.
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...     forcing=sp.ImmutableMatrix([[-4 * x]]), energy=(x.diff(rm.t)**2 + 4 * x**2) / 2)
+        >>> eqs.simulate(t=(0, 1), q0=[1.0], n_output=3).energy_scale()   # |E(0)| = 2
+        2.0
+        """
+        eqs = self._need_equations("energy_scale()")
+        e = self.energy()
+        kinetic = getattr(eqs, "kinetic_energy", None)
+        if kinetic is not None:
+            T = self.evaluate(kinetic)
+            s = np.abs(T) + np.abs(e - T)
+        else:
+            s = np.abs(e)
+        scale = float(s[0])
+        if scale == 0.0:
+            scale = float(np.max(s))
+        return scale
+
+    def energy_drift(self, scale=None) -> float:
+        """Largest change of the total energy along the motion, relative to ``scale``:
+        ``max_t |E(t) - E(0)| / scale``.
+
+        ``scale`` defaults to :meth:`energy_scale` (``T(0) + |V(0)|``): the drift then reads
+        as a relative error of the energy that does not depend on where V = 0 was put nor
+        saturate on a blow-up. If the scale is 0 (nothing moves, V = 0), the drift is 0 if E
+        stays 0, infinite otherwise. The energy is evaluated at the samples :attr:`t` (see
+        :meth:`EquationsOfMotion.simulate` for their accuracy).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...     forcing=sp.ImmutableMatrix([[-x]]), energy=(x.diff(rm.t)**2 + x**2) / 2)
+        >>> sim = eqs.simulate(t=(0, 1), q0=[0.0], u0=[0.0])        # at rest, E = 0
+        >>> sim.energy_drift()
+        0.0
+        """
+        e = self.energy()
+        delta = float(np.max(np.abs(e - e[0])))
+        if scale is None:
+            scale = self.energy_scale()
+        else:
+            scale = float(scale)
+            if not (math.isfinite(scale) and scale > 0):
+                raise ArgumentError(f"`scale` must be a finite number > 0; got {scale}.")
+        if scale == 0.0:
+            return 0.0 if delta == 0.0 else math.inf
+        return delta / scale
+
+    # -- files --------------------------------------------------------------------------
+    def _columns(self):
+        names = list(self._names)
+        return ["t", *names, *(f"{n}_dot" for n in names)]
+
+    def save(self, path) -> str:
+        """Write the samples to ``path``: ``.npz`` (arrays, names, parameters, status) or
+        ``.csv`` (a header line of comments with the status and the parameters, then the
+        columns ``t [s]``, each coordinate, each rate ``<name>_dot``; a parameter given as a
+        callable is written as its repr). Returns the path.
+
+        Examples
+        --------
+        >>> import os, tempfile, sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x"); k = sp.Symbol("k")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-k * x]]))
+        >>> sim = eqs.simulate(t=(0, 1), q0=[1.0], n_output=5, k=4.0)
+        >>> path = sim.save(os.path.join(tempfile.mkdtemp(), "run.csv"))
+        >>> back = Simulation.load(path)
+        >>> bool((back.q == sim.q).all()), back.names, back.parameters, back.status
+        (True, ('x',), {'k': 4.0}, 'finished')
+        """
+        text = os.fspath(path)
+        ext = os.path.splitext(text)[1].lower()
+        if ext not in (".npz", ".csv"):
+            raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
+        params = {k: (float(v) if not callable(v) else repr(v)) for k, v in self._params.items()}
+        meta = {"names": list(self._names), "parameters": params, "status": self.status,
+                "message": self.message, "method": self._method, "elapsed": self.elapsed,
+                "t_stop": self._t_stop,
+                "notes": list(self.notes)}
+        if ext == ".npz":
+            np.savez(text, t=self.t, q=self.q, u=self.u, meta=np.array(json.dumps(meta)),
+                     **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(self._t_events)})
+        else:
+            header = self._columns()
+            header[0] = "t [s]"
+            with open(text, "w", newline="") as fh:
+                fh.write("# rigidmech simulation " + json.dumps(meta) + "\n")
+                w = csv.writer(fh)
+                w.writerow(header)
+                data = np.vstack([self.t, self.q, self.u]).T
+                for row in data:
+                    w.writerow([repr(float(x)) for x in row])
+        return text
+
+    @classmethod
+    def load(cls, path) -> Simulation:
+        """Read a simulation written by :meth:`save`: the arrays, the names of the
+        coordinates, the parameters, the status and its message, the method and the
+        notes (and, from ``.npz``, the event times). What a file cannot hold is not restored:
+        the equations of motion (so :meth:`evaluate`, :meth:`energy` and
+        :meth:`connection_action` need a new simulation) and the solver's result
+        (:attr:`result` is None).
+
+        Examples
+        --------
+        >>> import os, tempfile, sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> path = eqs.simulate(t=(0, 1), q0=[1.0], n_output=4).save(
+        ...     os.path.join(tempfile.mkdtemp(), "run.npz"))
+        >>> back = Simulation.load(path)
+        >>> back.t.tolist() == [0.0, 1 / 3, 2 / 3, 1.0], back.equations, back.method
+        (True, None, 'dop853')
+        """
+        text = os.fspath(path)
+        ext = os.path.splitext(text)[1].lower()
+        if ext == ".npz":
+            with np.load(text) as data:
+                meta = json.loads(str(data["meta"]))
+                t, y = data["t"], np.vstack([data["q"], data["u"]])
+                events = [data[k] for k in sorted(
+                    (k for k in data.files if k.startswith("t_events_")),
+                    key=lambda k: int(k.rsplit("_", 1)[1]))]
+        elif ext == ".csv":
+            with open(text, newline="") as fh:
+                first = fh.readline()
+                prefix = "# rigidmech simulation "
+                if not first.startswith(prefix):
+                    raise ArgumentError(f"`path` {text!r} is not a CSV file written by "
+                                        "Simulation.save (no rigidmech header line).")
+                meta = json.loads(first[len(prefix):])
+                rows = list(csv.reader(fh))[1:]
+            data = np.array(rows, dtype=float).reshape(len(rows), -1)
+            t, y = data[:, 0], data[:, 1:].T
+            events = []
+        else:
+            raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
+        return cls(None, None, meta["parameters"], meta.get("elapsed", 0.0), meta["notes"],
+                   status=meta["status"], message=meta["message"], names=meta["names"], t=t,
+                   y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"))
+
+    # -- display ------------------------------------------------------------------------
+    def plot(self, path=None, *, ax=None):
+        """Plot the parameters of situation against time; save to ``path`` if given.
+
+        With ``path`` and no ``ax`` the figure is drawn off-screen (no pyplot state, works
+        headless); with neither, pyplot makes a figure to show. Returns the Axes.
+        """
+        if ax is None:
+            if path is not None:
+                from matplotlib.figure import Figure  # imported on use (slow import)
+
+                ax = Figure(figsize=(7, 4)).subplots()
+            else:
+                import matplotlib.pyplot as plt  # imported on use (slow import)
+
+                ax = plt.subplots(figsize=(7, 4))[1]
+        for i, name in enumerate(self._names):
+            ax.plot(self.t, self.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
+        ax.set_xlabel("t")
+        ax.set_ylabel("parameters of situation")
+        ax.legend()
+        ax.grid(True, alpha=0.3)
+        if path is not None:
+            ax.figure.tight_layout()
+            ax.figure.savefig(path, dpi=100)
+        return ax
+
+    def __repr__(self):
+        span = f"[{self.t[0]}, {self.t[-1]}]" if self.t.size else "[]"
+        nfev = f", nfev={self.result.nfev}" if self.result is not None else ""
+        return (f"Simulation(status={self.status!r}, t={span}, points={self.t.size}{nfev}, "
+                f"method={self._method!r})")
+
+
+def load_simulation(path) -> Simulation:
+    """Read a simulation saved by :meth:`Simulation.save` (same as :meth:`Simulation.load`).
+
+    Examples
+    --------
+    >>> load_simulation("missing.txt")
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `path` must end in .npz or .csv; got 'missing.txt'.
+    """
+    return Simulation.load(path)
