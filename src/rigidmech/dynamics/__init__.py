@@ -5,3 +5,8 @@ from .equations import EquationsOfMotion, Simulation
 from .system import System
 
 __all__ = ["EquationsOfMotion", "Simulation", "System"]
+
+from .assembly import assemble  # noqa: E402
+from .constraints import Constraints  # noqa: E402
+
+__all__ += ["Constraints", "assemble"]

@@ -26,16 +26,20 @@ from __future__ import annotations
 import re
 from functools import partial
 
+import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, FrameError
 from .._core.symbolic import free_symbols_shared
-from ..actions import Action, Gravity, Joint
+from ..actions import Action, Joint
 from ..kinematics import Solid
 from ..kinetics import Body
+from ..systems import Mechanism, closure_conditions
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import declared_order, is_coordinate
+from .assembly import assemble
+from .constraints import Constraints
 from .equations import EquationsOfMotion
 
 __all__ = ["System"]
@@ -156,20 +160,19 @@ class System:
     Matrix([[0]])
     """
 
-    def __init__(self, galilean: Frame, coordinates=None):
+    def __init__(self, galilean: Frame, coordinates=None, *, stabilization=(5.0, 5.0)):
         if not isinstance(galilean, Frame):
             raise ArgumentTypeError(
                 f"`galilean` must be a Frame; got {type(galilean).__name__}.")
         _check_fixed_reference(galilean)
         self._galilean = galilean
-        self._ground = Solid(galilean.name, frame=galilean)
-        # validation state: frame names, coordinate owners (coordinate -> (body, owner))
-        self._frames: dict = {}
+        # the graph of bodies, connections and actions (validated there)
+        self._graph = Mechanism(galilean)
+        # coordinate owners (coordinate -> (body, owner)): a dynamics-specific check
         self._owners: dict = {}
-        self._register_frames(galilean, galilean.name)
-        self._bodies: list[Body] = []
-        self._joints: dict = {}  # child body -> (parent solid, joint)
-        self._actions: list[Action] = []
+        self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
+        self._closures: list = []  # (link, rows): connections that link parameters
+        self._stabilization = tuple(float(x) for x in stabilization)
         self._given_coordinates = None
         if coordinates is not None:
             coords = tuple(coordinates)
@@ -182,13 +185,38 @@ class System:
         self._cache: dict = {}
 
     # -- building -----------------------------------------------------------------------
+    @property
+    def _ground(self):
+        return self._graph.ground
+
+    @property
+    def _bodies(self):
+        return self._graph.bodies
+
+    @property
+    def _actions(self):
+        return self._graph.actions
+
+    @property
+    def mechanism(self) -> Mechanism:
+        """The graph of bodies, connections and actions (a snapshot: an immutable
+        :class:`~rigidmech.systems.Mechanism`), for its loops, mobility and hyperstaticity.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> s.connect(R0, rm.Body("b", frame=R0.rotated("R1", about=R0.k,
+        ...                                             angle=rm.coordinates("q"))),
+        ...           rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.mechanism.mobility(plane=R0.k).mobility
+        1
+        """
+        return self._graph
+
     def _solid(self, s, argument):
         if isinstance(s, Frame):
-            if s != self._galilean:
-                raise ConnectionError_(
-                    f"`{argument}` is the frame {s.name}; only the Galilean reference "
-                    f"{self._galilean.name} may stand for a solid. Pass a Body.")
-            return self._ground
+            return self._graph.solid(s, argument)
         if not isinstance(s, Body):
             raise ArgumentTypeError(
                 f"`{argument}` must be a Body or the Galilean frame; got {type(s).__name__}.")
@@ -216,45 +244,12 @@ class System:
         body = self._solid(body, "body")
         if body is self._ground:
             raise ConnectionError_("the Galilean reference is not a body to add.")
-        self._check_new_body(body)
+        self._graph.check_body(body)
         self._claim(body, _body_coordinates(body), f"the free body {body.name}")
-        self._append(body)
-
-    def _append(self, body):
-        self._register_frames(body.frame, body.name)
-        self._bodies.append(body)
+        self._graph = self._graph.with_body(body)
         self._cache.clear()
 
     # -- validation (issue: never silently wrong) ---------------------------------------
-    def _check_new_body(self, body):
-        if body in self._bodies:
-            raise ConnectionError_(f"body {body.name} is already in the system.")
-        if body.frame.root != self._galilean.root:
-            raise ConnectionError_(
-                f"body {body.name} is attached to frame {body.frame.name} of another tree "
-                f"than {self._galilean.name}.")
-        if any(b.name == body.name for b in self._bodies):
-            raise ConnectionError_(
-                f"two bodies named {body.name!r} in one system: give each body its own name "
-                "(results and connection actions are reported by name).")
-        self._check_frames(body.frame, body.name)
-
-    def _check_frames(self, frame, owner):
-        f = frame
-        while f is not None:
-            known = self._frames.get(f.name)
-            if known is not None and known[0] != f:
-                raise ConnectionError_(
-                    f"two different frames named {f.name!r} (of bodies {known[1]} and "
-                    f"{owner}) in one system: give each frame its own name.")
-            f = f.parent
-
-    def _register_frames(self, frame, owner):
-        f = frame
-        while f is not None:
-            self._frames.setdefault(f.name, (f, owner))
-            f = f.parent
-
     def _claim(self, body, coordinates, owner):
         """Record that ``owner`` (a connection or a free body) moves ``coordinates``; a
         coordinate moved by two connections would be counted twice in the equations."""
@@ -268,55 +263,125 @@ class System:
         for q in coordinates:
             self._owners[q] = (body, owner)
 
-    def connect(self, parent, child, joint: Joint) -> None:
+    def connect(self, parent, child, joint, *, meets=None, label: str | None = None
+                ) -> None:
         """Connect ``child`` to ``parent`` (a Body or the Galilean frame) by ``joint``.
 
-        The joint is checked against the frames: the relative motion of the child must be
-        one the joint allows (ch. 13.2.2).
+        * A joint of the catalogue that gives ``child`` its first connection is a tree
+          joint: it is checked against the frames (the relative motion of the child must be
+          one the joint allows, ch. 13.2.2) and the coordinates of the child that are not its
+          parent's become this connection's.
+        * A joint between two solids already connected **closes a loop** (a four-bar, a
+          shaft in two bearings): its conditions are written between the existing
+          parameters (:func:`rigidmech.systems.closure_conditions`): the point ``joint.at``
+          of ``parent`` and the point ``meets`` of ``child`` (default: the same point) must
+          coincide along the directions the joint blocks. The equations of motion then carry
+          Lagrange multipliers (:mod:`rigidmech.dynamics.constraints`).
+        * A :class:`~rigidmech.actions.RollingContact` or :class:`~rigidmech.actions.GearMesh`
+          adds its velocity constraints (holonomic or not) the same way; if ``child`` is new
+          its coordinates become this connection's.
 
         Each parameter of situation belongs to one connection: the coordinates of the
         child's frame and mass centre that are not its parent's are those of this connection,
         and must not be moved by another one (the same q in two bodies hanging from the
         ground would be counted twice).
 
+        Parameters
+        ----------
+        parent, child : Body or the Galilean Frame (parent only)
+        joint : a joint of ``rm.joints``, a RollingContact or a GearMesh
+        meets : Point, optional
+            For a joint closing a loop: the point of ``child`` that meets ``joint.at``.
+        label : str, optional
+            Name of the connection in the graph (suffix of its unknowns); default its rank.
+
         Raises
         ------
         ConnectionError\\_
-            For a child that already has a parent, a parent not yet in the system, a second
-            body or a different frame with a name already used, or a coordinate already moved
-            by another connection.
+            For a parent not yet in the system, a second body or a different frame with a
+            name already used, a coordinate already moved by another connection, a loop
+            closed between points that cannot coincide, or a rolling contact or gear mesh
+            between other solids than ``parent`` and ``child``.
+
+        Examples
+        --------
+        A four-bar linkage: crank, coupler and rocker, the loop closed at C.
+
+        >>> import rigidmech as rm
+        >>> q1, q2, q3 = rm.coordinates("q1 q2 q3")
+        >>> R0 = rm.Frame("R0"); k = R0.k
+        >>> R1 = R0.rotated("R1", about=k, angle=q1)
+        >>> R2 = R1.rotated("R2", about=k, angle=q2, origin=R0.origin.moved("B", R1.i))
+        >>> R3 = R0.rotated("R3", about=k, angle=q3, origin=R0.point("D", 2, 0, 0))
+        >>> crank, coupler, rocker = (rm.Body(n, frame=f, mass=1) for n, f in
+        ...                           [("crank", R1), ("coupler", R2), ("rocker", R3)])
+        >>> s = System(galilean=R0)
+        >>> s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
+        >>> s.connect(crank, coupler, rm.joints.Pivot(at=R2.origin, axis=k))
+        >>> s.connect(R0, rocker, rm.joints.Pivot(at=R3.origin, axis=k))
+        >>> s.connect(coupler, rocker, rm.joints.Pivot(at=R2.origin.moved("C", 2 * R2.i),
+        ...           axis=k), meets=R3.origin.moved("C3", 1.5 * R3.i))
+        >>> [c[0] for c in s.closure_conditions()]
+        ['4.u', '4.v']
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
-        if not isinstance(joint, Joint):
+        linking = callable(getattr(joint, "velocity_constraints", None))
+        if not (isinstance(joint, Joint) or linking):
             raise ArgumentTypeError(
-                f"`joint` must be a connection from rm.joints; got {type(joint).__name__}.")
+                f"`joint` must be a connection from rm.joints, a RollingContact or a "
+                f"GearMesh; got {type(joint).__name__}.")
         if child is self._ground:
             raise ConnectionError_(
                 "`child` cannot be the Galilean reference: connect bodies to it as parent.")
-        if child in self._joints:
-            raise ConnectionError_(
-                f"body {child.name} already has a parent connection; the connections of a "
-                "System form a tree (closed loops are not supported yet).")
         if parent is not self._ground and parent not in self._bodies:
             raise ConnectionError_(
                 f"connect the parent {parent.name} before its children.")
+        if meets is not None and not (isinstance(joint, Joint) and child in self._joints):
+            raise ArgumentError(
+                "`meets` is the point of `child` that closes a loop: give it only for a joint "
+                f"between two solids already connected; got it for {child.name}, which has no "
+                "connection yet.")
+        if linking:
+            self._check_linking_solids(parent, child, joint)
         new_body = child not in self._bodies
         if new_body:
-            self._check_new_body(child)
-        R = self._galilean
-        at = joint.at
-        motion = child.kinematic_torsor(relative_to=R, at=at) + (
-            -parent.kinematic_torsor(relative_to=R, at=at))
-        joint.check(motion)
-        parent_coordinates = set() if parent is self._ground else set(
-            _body_coordinates(parent))
-        self._claim(child, [q for q in _body_coordinates(child) if q not in parent_coordinates],
-                    f"the connection {parent.name} -> {child.name}")
-        if new_body:
-            self._append(child)
-        self._joints[child] = (parent, joint)
+            self._graph.check_body(child)
+        closing = not new_body and (child in self._joints or linking)
+        graph = self._graph.with_connection(parent, child, joint, label=label)
+        link = graph.links[-1]
+        if closing or linking:
+            rows = closure_conditions(link, meets=meets)
+        if not closing:
+            if not linking:
+                R = self._galilean
+                at = joint.at
+                motion = child.kinematic_torsor(relative_to=R, at=at) + (
+                    -parent.kinematic_torsor(relative_to=R, at=at))
+                joint.check(motion)
+            parent_coordinates = set() if parent is self._ground else set(
+                _body_coordinates(parent))
+            self._claim(child, [q for q in _body_coordinates(child)
+                                if q not in parent_coordinates],
+                        f"the connection {parent.name} -> {child.name}")
+            if not linking:
+                self._joints[child] = (parent, joint)
+        if closing or linking:
+            self._closures.append((link, tuple(rows)))
+        self._graph = graph
         self._cache.clear()
+
+    def _check_linking_solids(self, parent, child, conn):
+        ends = tuple(s.frame for s in conn.solids)
+        # RollingContact: (moving S2, other S1); GearMesh: (first S1, second S2)
+        expected = (child.frame, parent.frame) if hasattr(conn, "contact") else (
+            parent.frame, child.frame)
+        if ends != expected:
+            raise ConnectionError_(
+                f"{type(conn).__name__} joins the frames {ends[0].name} and {ends[1].name}, "
+                f"but connects {parent.name} (frame {parent.frame.name}) and {child.name} "
+                f"(frame {child.frame.name}) here: build it on the frames of the two bodies "
+                "(the rolling solid as `child`, the driven gear as `child`).")
 
     def act(self, action: Action) -> None:
         """Add an external or internal action (gravity, force, couple, spring, ...).
@@ -327,29 +392,8 @@ class System:
             If the action is already in the system, if it is a second gravity, or if it acts
             on a body that is not in the system (connect the body first).
         """
-        if not isinstance(action, Action):
-            raise ArgumentTypeError(
-                f"`action` must be an Action (rm.gravity, rm.actions.Force, ...); got "
-                f"{type(action).__name__}.")
-        self._check_action(action)
-        self._actions.append(action)
+        self._graph = self._graph.with_action(action)
         self._cache.clear()
-
-    def _check_action(self, action):
-        if any(a is action for a in self._actions):
-            raise ConnectionError_(
-                f"this action is already in the system: {action!r}; it would count twice.")
-        present = [a for a in self._actions if isinstance(a, Gravity)]
-        if isinstance(action, Gravity) and present:
-            raise ConnectionError_(
-                f"gravity is already acting on the system ({present[0]!r}); a second gravity "
-                "would double the weights. Give one field (the sum, if several are meant).")
-        solids = [self._ground, *self._bodies]
-        for solid, _ in action.contributions(solids):
-            if solid is not self._ground and not any(solid is b for b in self._bodies):
-                raise ConnectionError_(
-                    f"`action` acts on body {solid.name}, which is not in the system: "
-                    "connect (or add) the body before acting on it.")
 
     # -- read-only views ----------------------------------------------------------------
     @property
@@ -515,7 +559,8 @@ class System:
             coordinates=self.coordinates, mass_matrix=sp.ImmutableMatrix(M),
             forcing=sp.ImmutableMatrix(n, 1, f),
             energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
-            model_parameters=partial(_constants, bodies, tuple(self._contributions())))
+            model_parameters=partial(_constants, bodies, tuple(self._contributions())),
+            constraints=self.constraints())
         self._cache["eom"] = eqs
         return eqs
 
@@ -569,6 +614,101 @@ class System:
         wants expressions in plain symbols: ``expr.xreplace(rule)``. rigidmech's own results
         keep q(t)."""
         return self._symbols()
+
+    # -- linked parameters: loops, rolling, gears -----------------------------------------
+    def closure_conditions(self) -> tuple:
+        """The conditions ``(label, velocity, position)`` of the connections that link the
+        parameters (loop-closing joints, rolling contacts, gear meshes), in the order they
+        were connected; ``position`` is None for a condition kept at the velocity level
+        (see :func:`rigidmech.systems.closure_conditions`)."""
+        return tuple(row for _, rows in self._closures for row in rows)
+
+    def constraints(self):
+        """The constraints between the coordinates as a
+        :class:`~rigidmech.dynamics.Constraints` (Jacobian A, bias b with A q'' = b), or None
+        for a tree without linking connections.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> s.constraints() is None
+        True
+        """
+        rows = self.closure_conditions()
+        if not rows:
+            return None
+        if "constraints" not in self._cache:
+            self._cache["constraints"] = Constraints(self.coordinates, rows,
+                                                     stabilization=self._stabilization)
+        return self._cache["constraints"]
+
+    def loops(self) -> tuple:
+        """The independent loops of the graph of connections (see
+        :meth:`rigidmech.systems.Mechanism.loops`)."""
+        return self._graph.loops()
+
+    def mobility(self, plane=None, values=None):
+        """Degrees of mobility and hyperstaticity of the connections (ch. 13.2, 14.2), see
+        :func:`rigidmech.systems.analyse`.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> shaft = rm.Body("shaft", frame=R0.rotated("R1", about=R0.k,
+        ...                                         angle=rm.coordinates("theta")))
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.point("B", 0, 0, 1), axis=R0.k))
+        >>> print(s.mobility())
+        mobility m = 1 (N_c = 2 kinematic unknowns, rank 1 of the closure equations of 1 loop(s))
+        hyperstaticity h = 5 = N_s - 6 N_b + m = 10 - 6*1 + 1
+        undetermined by statics: X_1, Y_1, Z_1, L_1, M_1, X_2, Y_2, Z_2, L_2, M_2
+        """
+        return self._graph.mobility(plane=plane, values=values)
+
+    def assemble(self, values, *, independent=None, rates=None, **params):
+        """A configuration and velocities that satisfy the constraints: the dependent
+        parameters solved from the closure conditions by Newton's method, the independent
+        ones kept (see :func:`rigidmech.dynamics.assembly.assemble`).
+
+        Parameters
+        ----------
+        values : dict
+            Values of the coordinates (by q(t) or by name): exact for the independent ones,
+            a first guess for the others.
+        independent : sequence of q(t) or names, optional
+            The independent parameters; default chosen by pivoting on the Jacobian of the
+            constraints (the best conditioned set).
+        rates : dict, optional
+            The rates of the independent parameters (default zero).
+        **params
+            Values of the constants the constraints depend on.
+
+        Returns
+        -------
+        (dict, dict)
+            q0 and u0 by name, ready for :meth:`EquationsOfMotion.simulate`.
+        """
+        c = self.constraints()
+        if c is None:
+            raise ConnectionError_(
+                "the system has no linking connection: every set of values is consistent.")
+        return assemble(c, values, independent=independent, rates=rates, params=params)
+
+    def multipliers(self, q, u, t=0.0, **params):
+        """The Lagrange multipliers lambda (one per closure condition, in the order of
+        :meth:`closure_conditions`) at the state (q, u), from the augmented system: the
+        generalised constraint forces are A^T lambda. For a joint closing a loop, the
+        multiplier of the condition along e is the component along e of the action of
+        ``parent`` on ``child`` at the point of the joint."""
+        eqs = self.equations_of_motion()
+        if eqs.constraints is None:
+            raise ConnectionError_("the system has no linking connection: no multiplier.")
+        values, inputs, _ = eqs._values(params)
+        full = eqs._solver().full
+        out = full(t, np.asarray(q, float), np.asarray(u, float), *values, *inputs)
+        return -np.asarray(out)[len(eqs.coordinates):]
 
     # -- connection actions -------------------------------------------------------------
     def _subtree(self, body):

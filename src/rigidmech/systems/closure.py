@@ -1,0 +1,117 @@
+"""Closure conditions of the connections that link parameters (book, ch. 13.2, 25.3).
+
+In a tree of bodies each connection is *built into* the frames: the child's frame is made
+from its parent's by the motion the joint allows, with its own parameters of situation. A
+connection that closes a loop, or a rolling contact, or a gear mesh, cannot be: it imposes
+relations between parameters that already exist. :func:`closure_conditions` writes them, one
+row per condition, as ``(label, velocity, position)``:
+
+* a **joint** of the catalogue closing a loop: its point P1 = ``joint.at`` (taken on the
+  first solid) and the point P2 of the second solid that must coincide with it (``meets``,
+  default the same point). For each translation the joint blocks, along e of its local basis
+  (u, v, w), the geometric condition is Φ = P1P2 . e = 0 and the kinematic one its time
+  derivative. A rotation the joint blocks must already be blocked by the frames (the
+  relative rotation component vanishes identically, as in a planar mechanism or two coaxial
+  bearings); otherwise the orientation closure is refused (not supported yet). A condition
+  that vanishes identically is dropped; one that is a non-zero constant means the two points
+  cannot coincide and is refused;
+* a **rolling contact** or a **gear mesh**: its velocity constraints
+  (:class:`~rigidmech.kinematics.constraints.VelocityConstraint`), with their position form
+  when they are holonomic (a wheel on a line, gears) and without one when they are not (a
+  disc on a plane); the position form is only reported (its constant depends on the initial
+  configuration), the constraint is enforced at the velocity level.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .._core.errors import ConnectionError_
+from ..vectors import t
+from ..vectors.points import check_point
+
+__all__ = ["closure_conditions"]
+
+_AXES = ("u", "v", "w")
+
+
+def _zero(e):
+    return e == 0 or sp.simplify(e) == 0
+
+
+def closure_conditions(link, meets=None) -> list:
+    """The conditions ``(label, velocity, position)`` a linking connection imposes on the
+    parameters of situation (see the module notes); ``position`` is None for a velocity-only
+    (nonholonomic, or holonomic without a chosen constant) condition.
+
+    Parameters
+    ----------
+    link : Link
+    meets : Point, optional
+        For a joint closing a loop, the point of ``link.second`` that coincides with the
+        joint's point (a point of ``link.first``); default the joint's point itself.
+
+    Raises
+    ------
+    ConnectionError\\_
+        If the two points cannot coincide (a constant distance along a blocked direction),
+        or the joint blocks a rotation the frames do not already block.
+
+    Examples
+    --------
+    The pivot that closes a four-bar linkage: two conditions (the third, along the pivot's
+    axis, vanishes identically).
+
+    >>> import rigidmech as rm
+    >>> from rigidmech.systems import Link
+    >>> q1, q2, q3 = rm.coordinates("q1 q2 q3")
+    >>> R0 = rm.Frame("R0"); k = R0.k
+    >>> R1 = R0.rotated("R1", about=k, angle=q1)
+    >>> R2 = R1.rotated("R2", about=k, angle=q2, origin=R0.origin.moved("B", R1.i))
+    >>> R3 = R0.rotated("R3", about=k, angle=q3, origin=R0.point("D", 2, 0, 0))
+    >>> C2, C3 = R2.origin.moved("C", R2.i), R3.origin.moved("C3", R3.i)
+    >>> link = Link(rm.Body("coupler", frame=R2), rm.Body("rocker", frame=R3),
+    ...             rm.joints.Pivot(at=C2, axis=k), "C")
+    >>> [label for label, _, _ in closure_conditions(link, meets=C3)]
+    ['C.u', 'C.v']
+    """
+    conn = link.connection
+    if callable(getattr(conn, "velocity_constraints", None)):
+        return [(f"{link.label}.{i + 1}", c.expression, None)
+                for i, c in enumerate(conn.velocity_constraints())]
+    P1 = conn.at
+    P2 = P1 if meets is None else meets
+    check_point(P2, "meets")
+    if getattr(conn, "linked_motion", 0):
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {P1.name} closes a loop between {link.first.name} and "
+            f"{link.second.name}: a loop closed by a joint with linked motions (helical) is not "
+            "supported yet; close the loop with another joint.")
+    first, second = link.first, link.second
+    rows = []
+    rotation = None
+    for i in conn.blocked_motion:
+        e = conn.basis[i % 3]
+        if i < 3:
+            if rotation is None:
+                rotation = second.frame.rotation_vector(first.frame)
+            w = sp.expand(rotation.dot(e))
+            if not _zero(w):
+                raise ConnectionError_(
+                    f"{type(conn).__name__} at {P1.name} closes a loop between {first.name} "
+                    f"and {second.name} and blocks the relative rotation about {e}, which the "
+                    f"frames do not block (omega . {_AXES[i]} = {w}): orientation closure of "
+                    "a loop is not supported yet. Close the loop with a joint that allows this "
+                    "rotation (a spherical joint), or build the frames so that it vanishes.")
+            continue
+        phi = sp.expand((P2 - P1).dot(e))
+        if _zero(phi):
+            continue
+        if not phi.has(t):
+            raise ConnectionError_(
+                f"{type(conn).__name__} at {P1.name} between {first.name} and {second.name}: "
+                f"the points {P1.name} and {P2.name} do not coincide (their distance along "
+                f"{_AXES[i - 3]} is the constant {sp.simplify(phi)}, whatever the parameters). "
+                "Check the points of the connection.")
+        rows.append((f"{link.label}.{_AXES[i - 3]}", phi.diff(t), phi))
+    return rows
