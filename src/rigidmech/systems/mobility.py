@@ -153,14 +153,14 @@ class _Numbers:
         if expr.is_Number:
             return float(expr)
         for d in expr.atoms(sp.Derivative):
-            self._rule.setdefault(d, float(self._rng.uniform(-1, 1)))
+            self._rule.setdefault(d, sp.Float(self._rng.uniform(-1, 1)))
         for a in expr.atoms(sp.core.function.AppliedUndef):
             if a not in self._rule:
-                self._rule[a] = self._given.get(a, float(self._rng.uniform(0.3, 1.3)))
+                self._rule[a] = sp.Float(self._given.get(a, self._rng.uniform(0.3, 1.3)))
         for s in expr.free_symbols:
             if s not in self._rule:
-                self._rule[s] = self._given.get(s, self._given.get(
-                    getattr(s, "name", None), float(self._rng.uniform(0.6, 1.6))))
+                self._rule[s] = sp.Float(self._given.get(s, self._given.get(
+                    getattr(s, "name", None), self._rng.uniform(0.6, 1.6))))
         value = expr.xreplace(self._rule)
         if value.free_symbols or value.atoms(sp.core.function.AppliedUndef):
             value = value.subs(self._rule)
