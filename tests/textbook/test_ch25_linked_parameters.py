@@ -216,3 +216,59 @@ def test_symbolic_accelerations_of_the_augmented_system():
     f = eqs.rhs(g=9.81, R=2.0)
     np.testing.assert_allclose(f(0.0, np.array([0.0, -2.0, 3.0, 0.0]))[2:], [0.0, 4.5],
                                atol=1e-12)
+
+
+def state_rule(system, q, u, acc, lam):
+    rule = {}
+    for c, qq, uu, aa in zip(system.coordinates, q, u, acc, strict=True):
+        rule[c.diff(rm.t, 2)] = aa
+        rule[c.diff(rm.t)] = uu
+    for c, qq in zip(system.coordinates, q, strict=True):
+        rule[c] = qq
+    rule.update(dict(zip(system.multiplier_symbols(), lam, strict=True)))
+    return rule
+
+
+def test_connection_actions_with_multipliers_are_consistent():
+    # four-bar at a state of its motion: the pivot at D transmits no moment about its axis
+    # (N = 0) once q'' and the multipliers solve the equations; the pivot C's action is the
+    # multipliers' force, equal and opposite on coupler and rocker
+    s, coords, (R0, *_), _ = four_bar()
+    eqs = s.equations_of_motion()
+    q0, u0 = s.assemble({"q1": 1.0, "q2": -0.6, "q3": 1.4}, independent=["q1"],
+                        rates={"q1": 2.0})
+    q = np.array(list(q0.values()))
+    u = np.array(list(u0.values()))
+    acc = eqs.rhs(m=1.0, g=9.81)(0.0, np.concatenate([q, u]))[3:]
+    lam = s.multipliers(q, u, m=1.0, g=9.81)
+    rule = state_rule(s, q, u, acc, lam)
+    rule.update({sp.Symbol("m", positive=True): 1.0, sp.Symbol("g", positive=True): 9.81})
+    crank, coupler, rocker = s.bodies
+    for parent, child in [(R0, rocker), (R0, crank), (crank, coupler)]:
+        N = s.connection_components(parent, child)["N"]
+        assert abs(float(N.xreplace(rule))) < 1e-10
+    C = s.connection_action(coupler, rocker)
+    assert C.resultant.dot(R0.i).xreplace(rule) == pytest.approx(lam[0], abs=1e-12)
+
+
+def test_ladder_planar_support_carries_nothing_in_the_plane():
+    s, q0, u0 = ladder(0.4)
+    eqs = s.equations_of_motion()
+    q, u = np.array(list(q0.values())), np.array(list(u0.values()))
+    acc = eqs.rhs(m=1.0, g=9.81)(0.0, np.concatenate([q, u]))[3:]
+    lam = s.multipliers(q, u, m=1.0, g=9.81)
+    rule = state_rule(s, q, u, acc, lam)
+    rule.update({sp.Symbol("m", positive=True): 1.0, sp.Symbol("g", positive=True): 9.81})
+    R0 = s.galilean
+    T = s.connection_action(R0, s.bodies[0], label="1")
+    for comp in (T.resultant.dot(R0.i), T.resultant.dot(R0.j), T.moment.dot(R0.k)):
+        assert abs(float(sp.sympify(comp).xreplace(rule))) < 1e-10
+    wall = s.connection_action(R0, s.bodies[0], label="wall")
+    assert float(wall.resultant.dot(R0.i).xreplace(rule)) > 0      # the wall pushes
+
+
+def test_ambiguous_connection_needs_a_label():
+    s, _, _ = ladder(0.4)
+    with pytest.raises(ConnectionError_, match=r"3 connections join R0 to ladder .* give "
+                                               r"`label`"):
+        s.connection_action(s.galilean, s.bodies[0])

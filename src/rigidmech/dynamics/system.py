@@ -34,7 +34,7 @@ from .._core.symbolic import free_symbols_shared
 from ..actions import Action, Joint
 from ..kinematics import Solid
 from ..kinetics import Body
-from ..systems import Mechanism, closure_conditions
+from ..systems import Mechanism, closure_conditions, closure_forces
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import declared_order, is_coordinate
@@ -172,6 +172,7 @@ class System:
         self._owners: dict = {}
         self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
         self._closures: list = []  # (link, rows): connections that link parameters
+        self._meets: dict = {}  # id(link) -> the point of the child that closes a loop
         self._stabilization = tuple(float(x) for x in stabilization)
         self._given_coordinates = None
         if coordinates is not None:
@@ -368,6 +369,8 @@ class System:
                 self._joints[child] = (parent, joint)
         if closing or linking:
             self._closures.append((link, tuple(rows)))
+            if meets is not None:
+                self._meets[id(link)] = meets
         self._graph = graph
         self._cache.clear()
 
@@ -718,7 +721,47 @@ class System:
                 out.extend(self._subtree(child))
         return out
 
-    def connection_action(self, parent, child) -> Torsor:
+    def multiplier_symbols(self) -> tuple:
+        """The symbols lambda_<condition> of the Lagrange multipliers, one per closure
+        condition (:meth:`closure_conditions`), in which the connection actions of a system
+        with linking connections are written; their values at a state come from
+        :meth:`multipliers`.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); System(galilean=R0).multiplier_symbols()
+        ()
+        """
+        return tuple(sp.Symbol(f"lambda_{row[0]}", real=True)
+                     for row in self.closure_conditions())
+
+    def _link(self, parent, child, label):
+        links = [k for k in self._graph.links if k.first is parent and k.second is child
+                 and (label is None or k.label == str(label))]
+        if not links:
+            raise ConnectionError_(
+                f"there is no connection from {parent.name} to {child.name}"
+                + ("." if label is None else f" labelled {label!r}."))
+        if len(links) > 1:
+            raise ConnectionError_(
+                f"{len(links)} connections join {parent.name} to {child.name} (labels "
+                f"{[k.label for k in links]}): give `label` to choose one.")
+        return links[0]
+
+    def _closure_actions(self):
+        """[(link, [(lambda symbol, [(solid, unit torsor), ...] or None), ...]), ...]"""
+        if "closure_actions" not in self._cache:
+            lams = iter(self.multiplier_symbols())
+            out = []
+            for link, rows in self._closures:
+                forces = closure_forces(link, meets=self._meets.get(id(link)))
+                out.append((link, [(next(lams), f) for _, f in zip(rows, forces,
+                                                                    strict=True)]))
+            self._cache["closure_actions"] = out
+        return self._cache["closure_actions"]
+
+    def connection_action(self, parent, child, *, label=None) -> Torsor:
         """The action exerted by ``parent`` on ``child`` through their connection (ch. 18.2),
         reduced at the joint's point.
 
@@ -727,6 +770,19 @@ class System:
         torsors minus the other actions exerted on them. Like every torsor of rigidmech it is
         written with the parameters of situation q(t) and their derivatives; for its
         components in the joint's basis, use :meth:`connection_components`.
+
+        In a system with linking connections (loops, rolling, gears) the actions of those
+        connections are written with their Lagrange multipliers (:meth:`multiplier_symbols`,
+        values from :meth:`multipliers`): the action of a loop-closing joint is
+        sum lambda_i e_i at its point (only the components its conditions carry: those the
+        frames already enforce are carried by the tree joints), and the actions of the other
+        connections include the multipliers' actions on the bodies they carry.
+
+        Parameters
+        ----------
+        parent, child : Body or the Galilean Frame
+        label : str, optional
+            The connection's label, when several connections join the same two solids.
 
         Examples
         --------
@@ -743,14 +799,32 @@ class System:
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
-        if self._joints.get(child, (None,))[0] is not parent:
+        link = self._link(parent, child, label)
+        key = ("action", id(link))
+        if key in self._cache:
+            return self._cache[key]
+        actions = self._closure_actions()
+        own = next((rows for k, rows in actions if k is link), None)
+        tree = any(k is link for k in self._graph.tree_links())
+        if own is not None and any(f is None for _, f in own) or (
+                actions and any(f is None for k, rows in actions if k is not link
+                                for _, f in rows)):
             raise ConnectionError_(
-                f"there is no connection from {parent.name} to {child.name}.")
-        key = ("action", child)
-        if key not in self._cache:
-            joint = self._joints[child][1]
-            P = joint.at
-            carried = self._subtree(child)
+                "connection actions in a system with a gear mesh are not derived yet (the "
+                "mesh's multiplier is not turned into its action torsor).")
+        if not tree:
+            P = self._meets.get(id(link)) or link.connection.at
+            total = Torsor.zero(P)
+            for lam, forces in own:
+                for solid, T in forces:
+                    if solid is child:
+                        total = total + lam * T
+            result = total.at(P)
+        else:
+            conn = link.connection
+            P = conn.contact.point if hasattr(conn, "contact") else conn.at
+            carried = (self._subtree(child) if not self._closures
+                       else list(self._graph.carried_by(link)))
             total = Torsor.zero(P)
             for b in carried:
                 if b.mass:
@@ -758,7 +832,16 @@ class System:
             for solid, torsor, _ in self._contributions():
                 if solid in carried:
                     total = total - torsor
-            self._cache[key] = Torsor(total.resultant.compact(), total.moment.compact(), P)
+            for k, rows in actions:
+                if k is link:
+                    continue
+                for lam, forces in rows:
+                    for solid, T in forces:
+                        if solid in carried:
+                            total = total - lam * T
+            result = Torsor(total.resultant.compact(), total.moment.compact(), P)
+        self._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
+                                  result.point)
         return self._cache[key]
 
     def connection_components(self, parent, child) -> dict:
@@ -769,7 +852,12 @@ class System:
         satisfies the equations of motion.
         """
         T = self.connection_action(parent, child)
-        joint = self._joints[self._solid(child, "child")][1]
+        child = self._solid(child, "child")
+        joint = self._link(self._solid(parent, "parent"), child, None).connection
+        if not callable(getattr(joint, "components", None)):
+            raise ConnectionError_(
+                f"the connection from {parent} to {child.name} has no local components; use "
+                "connection_action.")
         return dict(joint.components(T))
 
     def joint(self, child):

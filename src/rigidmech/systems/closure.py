@@ -27,10 +27,11 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ConnectionError_
-from ..vectors import t
+from ..torsors import Torsor
+from ..vectors import Vector, t
 from ..vectors.points import check_point
 
-__all__ = ["closure_conditions"]
+__all__ = ["closure_conditions", "closure_forces"]
 
 _AXES = ("u", "v", "w")
 
@@ -75,9 +76,57 @@ def closure_conditions(link, meets=None) -> list:
     >>> [label for label, _, _ in closure_conditions(link, meets=C3)]
     ['C.u', 'C.v']
     """
+    return [row[:3] for row in _rows(link, meets)]
+
+
+def closure_forces(link, meets=None) -> list:
+    """For each condition of :func:`closure_conditions`, the actions a unit Lagrange
+    multiplier stands for: ``[(solid, Torsor), ...]`` on the two solids, whose power is the
+    velocity condition (so that the generalised forces are A^T lambda); None for a gear mesh
+    (its action torsor is not derived from the multipliers yet).
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> from rigidmech.systems import Link
+    >>> q1, q3 = rm.coordinates("q1 q3")
+    >>> R0 = rm.Frame("R0"); k = R0.k
+    >>> R1 = R0.rotated("R1", about=k, angle=q1)
+    >>> R3 = R0.rotated("R3", about=k, angle=q3, origin=R0.point("D", 1, 0, 0))
+    >>> link = Link(rm.Body("a", frame=R1), rm.Body("b", frame=R3),
+    ...             rm.joints.Pivot(at=R1.origin.moved("C", R1.i), axis=k), "C")
+    >>> [[(s.name, T.resultant) for s, T in row] for row in closure_forces(
+    ...     link, meets=R3.origin.moved("C3", R3.j))]
+    [[('b', R0.i), ('a', -R0.i)], [('b', R0.j), ('a', -R0.j)]]
+    """
+    return [row[3] for row in _rows(link, meets)]
+
+
+def _rows(link, meets):
+    """(label, velocity, position, forces) for each condition."""
     conn = link.connection
+    first, second = link.first, link.second
+    contact = getattr(conn, "contact", None)
+    if contact is not None and callable(getattr(conn, "velocity_constraints", None)):
+        I = contact.point
+        v = contact.sliding_velocity
+        rows = []
+        for name, tv in zip(("t1", "t2"), contact.tangents(), strict=True):
+            e = sp.expand(v.dot(tv))
+            if not _zero(e):
+                rows.append((f"{link.label}.{name}", e, None,
+                             [(second, Torsor(tv, Vector.zero(), I)),
+                              (first, Torsor(-tv, Vector.zero(), I))]))
+        if not conn.pivoting:
+            n = contact.normal
+            e = sp.expand(contact.rotation.dot(n))
+            if not _zero(e):
+                rows.append((f"{link.label}.n", e, None,
+                             [(second, Torsor(Vector.zero(), n, I)),
+                              (first, Torsor(Vector.zero(), -n, I))]))
+        return rows
     if callable(getattr(conn, "velocity_constraints", None)):
-        return [(f"{link.label}.{i + 1}", c.expression, None)
+        return [(f"{link.label}.{i + 1}", c.expression, None, None)
                 for i, c in enumerate(conn.velocity_constraints())]
     P1 = conn.at
     P2 = P1 if meets is None else meets
@@ -87,7 +136,6 @@ def closure_conditions(link, meets=None) -> list:
             f"{type(conn).__name__} at {P1.name} closes a loop between {link.first.name} and "
             f"{link.second.name}: a loop closed by a joint with linked motions (helical) is not "
             "supported yet; close the loop with another joint.")
-    first, second = link.first, link.second
     rows = []
     rotation = None
     for i in conn.blocked_motion:
@@ -113,5 +161,7 @@ def closure_conditions(link, meets=None) -> list:
                 f"the points {P1.name} and {P2.name} do not coincide (their distance along "
                 f"{_AXES[i - 3]} is the constant {sp.simplify(phi)}, whatever the parameters). "
                 "Check the points of the connection.")
-        rows.append((f"{link.label}.{_AXES[i - 3]}", phi.diff(t), phi))
+        rows.append((f"{link.label}.{_AXES[i - 3]}", phi.diff(t), phi,
+                     [(second, Torsor(e, Vector.zero(), P2)),
+                      (first, Torsor(-e, Vector.zero(), P1))]))
     return rows

@@ -303,6 +303,39 @@ class Mechanism:
         tree = self._structure()[0]
         return tuple(k for k in self._links if not any(k is x for x in tree))
 
+    def carried_by(self, link) -> tuple:
+        """The bodies a tree link carries: those cut off from the ground when the link is
+        removed from the spanning tree (its subtree), in the order of :attr:`bodies`.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); q1, q2 = rm.coordinates("q1 q2")
+        >>> R1 = R0.rotated("R1", about=R0.k, angle=q1)
+        >>> R2 = R1.rotated("R2", about=R0.k, angle=q2, origin=R0.origin.moved("A", R1.i))
+        >>> a, b = rm.Body("a", frame=R1), rm.Body("b", frame=R2)
+        >>> g = (Mechanism(R0).with_connection(R0, a, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        ...      .with_connection(a, b, rm.joints.Pivot(at=R2.origin, axis=R0.k)))
+        >>> [x.name for x in g.carried_by(g.links[0])], [x.name for x in g.carried_by(g.links[1])]
+        (['a', 'b'], ['b'])
+        """
+        tree = [k for k in self.tree_links() if k is not link]
+        if len(tree) == len(self.tree_links()):
+            raise ConnectionError_(
+                f"`link` {link!r} is not in the spanning tree: it closes a loop and carries "
+                "no subtree.")
+        reached = {id(self._ground)}
+        queue = deque([self._ground])
+        while queue:
+            s = queue.popleft()
+            for k in tree:
+                if k.first is s or k.second is s:
+                    o = k.other(s)
+                    if id(o) not in reached:
+                        reached.add(id(o))
+                        queue.append(o)
+        return tuple(b for b in self._bodies if id(b) not in reached)
+
     def loops(self) -> tuple:
         """A basis of independent loops (cycles), one per closing link: each loop is a tuple
         of (link, sign) in the order they are met going round from the closing link's
