@@ -115,3 +115,26 @@ def test_mobility_matches_the_rank_of_the_closure_jacobian():
 def test_bad_plane_is_refused():
     with pytest.raises(rm.errors.ArgumentTypeError, match=r"`plane` must be the unit normal"):
         four_bar()[0].mobility(plane="k")
+
+
+def test_shaft_in_two_bearings_statics_from_the_same_graph():
+    # isostatic mounting: a load P at mid-span (z = d/2) along -j is shared equally by the
+    # bearings, Y_A = Y_B = P/2, the axial force taken by the spherical joint alone
+    from rigidmech.statics import Statics
+    P = sp.Symbol("P", positive=True)
+    g = shaft(lambda A, R0: rm.joints.Spherical(at=A),
+              lambda B, R0: rm.joints.LinearAnnular(at=B, axis=R0.k))
+    R0, body = g.reference, g.bodies[0]
+    d = sp.Symbol("d", positive=True)
+    g = g.with_action(rm.actions.Force(on=body, vector=-P * R0.j,
+                                       at=R0.point("M", 0, 0, d / 2)))
+    eq = Statics.from_mechanism(g).solve()
+    values = {str(k): v for k, v in eq.values.items()}
+    assert sp.simplify(values["Y_A"] - P / 2) == 0 and sp.simplify(values["Y_B"] - P / 2) == 0
+    assert values["Z_A"] == 0 and eq.hyperstaticity == g.mobility().hyperstaticity == 0
+    # two pivots: statics finds the same degree of hyperstaticity as the graph
+    g2 = shaft(lambda A, R0: rm.joints.Pivot(at=A, axis=R0.k),
+               lambda B, R0: rm.joints.Pivot(at=B, axis=R0.k))
+    g2 = g2.with_action(rm.actions.Force(on=g2.bodies[0], vector=-P * g2.reference.j,
+                                         at=g2.reference.point("M", 0, 0, d / 2)))
+    assert Statics.from_mechanism(g2).solve().hyperstaticity == g2.mobility().hyperstaticity == 5
