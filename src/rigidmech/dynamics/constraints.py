@@ -80,19 +80,32 @@ class Constraints:
         self._labels = tuple(str(r[0]) for r in rows)
         self._velocity = tuple(sp.sympify(r[1]) for r in rows)
         self._position = tuple(None if r[2] is None else sp.sympify(r[2]) for r in rows)
-        speeds = [q.diff(t) for q in self._coordinates]
-        accs = [q.diff(t, 2) for q in self._coordinates]
+        # with plain symbols for q and q' the derivatives are cheap:
+        # A = dc/dq', b = -(dc/dq . q' + dc/dt) (c is linear in q')
+        qs = [sp.Dummy(f"q{i}", real=True) for i in range(len(self._coordinates))]
+        us = [sp.Dummy(f"u{i}", real=True) for i in range(len(self._coordinates))]
+        rule, back = {}, {}
+        for q, qd, ud in zip(self._coordinates, qs, us, strict=True):
+            rule[q.diff(t)] = ud
+            rule[q] = qd
+            back[ud] = q.diff(t)
+            back[qd] = q
         A, b = [], []
         for label, c in zip(self._labels, self._velocity, strict=True):
-            row = [sp.expand(c).coeff(v) for v in speeds]
-            if any(a.has(*speeds) for a in row):
+            if any(d.variable_count != ((t, 1),) for d in c.atoms(sp.Derivative)):
+                raise ArgumentError(
+                    f"constraint {label}: the velocity form must hold first derivatives "
+                    f"of the coordinates only; got {c}.")
+            cs = c.xreplace(rule)
+            row = [cs.diff(u) for u in us]
+            if any(a.has(*us) for a in row):
                 raise ArgumentError(
                     f"constraint {label}: the velocity form must be linear in the rates; got "
                     f"{c}.")
-            dc = c.diff(t)
-            zero_acc = {a: 0 for a in accs}
-            A.append(row)
-            b.append(-dc.xreplace(zero_acc))
+            bias = -(sp.Add(*[cs.diff(qd) * ud for qd, ud in zip(qs, us, strict=True)])
+                     + cs.diff(t))
+            A.append([a.xreplace(back) for a in row])
+            b.append(bias.xreplace(back))
         m, n = len(rows), len(self._coordinates)
         self._A = sp.ImmutableMatrix(m, n, [x for r in A for x in r])
         self._b = sp.ImmutableMatrix(m, 1, b)

@@ -36,8 +36,36 @@ __all__ = ["closure_conditions", "closure_forces"]
 _AXES = ("u", "v", "w")
 
 
+def _time_derivative(e):
+    """de/dt for e(q(t), t), differentiated with plain symbols in place of q(t) (cheaper
+    than sympy's chain rule through the functions)."""
+    qs = sorted(e.atoms(sp.core.function.AppliedUndef), key=str)
+    qs = [q for q in qs if q.args == (t,)]
+    dummies = [sp.Dummy(str(q.func), real=True) for q in qs]
+    es = e.xreplace(dict(zip(qs, dummies, strict=True)))
+    back = dict(zip(dummies, qs, strict=True))
+    out = es.diff(t).xreplace(back) if es.has(t) else sp.S.Zero
+    return out + sp.Add(*[es.diff(d).xreplace(back) * q.diff(t)
+                          for q, d in zip(qs, dummies, strict=True)])
+
+
 def _zero(e):
-    return e == 0 or sp.simplify(e) == 0
+    """Whether ``e`` vanishes identically: a non-zero value at a random point settles it
+    cheaply (no simplify for the conditions that remain, the usual case); otherwise
+    ``simplify`` decides."""
+    if e == 0:
+        return True
+    atoms = [*e.atoms(sp.Derivative), *e.atoms(sp.core.function.AppliedUndef),
+             *(x for x in e.free_symbols if x != t)]
+    for seed in (0.3711, 0.6173):
+        rule = {a: sp.Float(seed + 0.1 * i) for i, a in enumerate(atoms)}
+        try:
+            value = complex(e.xreplace(rule).subs(rule).evalf())
+        except (TypeError, ValueError):
+            break
+        if abs(value) > 1e-9:
+            return False
+    return sp.simplify(e) == 0
 
 
 def closure_conditions(link, meets=None) -> list:
@@ -161,7 +189,7 @@ def _rows(link, meets):
                 f"the points {P1.name} and {P2.name} do not coincide (their distance along "
                 f"{_AXES[i - 3]} is the constant {sp.simplify(phi)}, whatever the parameters). "
                 "Check the points of the connection.")
-        rows.append((f"{link.label}.{_AXES[i - 3]}", phi.diff(t), phi,
+        rows.append((f"{link.label}.{_AXES[i - 3]}", _time_derivative(phi), phi,
                      [(second, Torsor(e, Vector.zero(), P2)),
                       (first, Torsor(-e, Vector.zero(), P1))]))
     return rows
