@@ -67,7 +67,7 @@ def our_route(system, coords, q_by_hand, params):
     u = np.array([u0[n] for n in names])
     c = system.constraints()
     rule = {}
-    for qq, uu, vv in zip(coords, u, q, strict=True):
+    for qq, uu in zip(coords, u, strict=True):
         rule[qq.diff(rm.t)] = uu
     rule.update(dict(zip(coords, q, strict=True)))
     A = np.array(c.jacobian.subs(rule), dtype=float)
@@ -220,7 +220,7 @@ def test_symbolic_accelerations_of_the_augmented_system():
 
 def state_rule(system, q, u, acc, lam):
     rule = {}
-    for c, qq, uu, aa in zip(system.coordinates, q, u, acc, strict=True):
+    for c, uu, aa in zip(system.coordinates, u, acc, strict=True):
         rule[c.diff(rm.t, 2)] = aa
         rule[c.diff(rm.t)] = uu
     for c, qq in zip(system.coordinates, q, strict=True):

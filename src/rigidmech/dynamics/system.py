@@ -32,7 +32,6 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, FrameError
 from .._core.symbolic import free_symbols_shared
 from ..actions import Action, Joint
-from ..kinematics import Solid
 from ..kinetics import Body
 from ..systems import Mechanism, closure_conditions, closure_forces
 from ..torsors import Torsor
