@@ -122,3 +122,9 @@ def test_contact_action_of_the_rolling_wheel():
     sub = {x.diff(rm.t, 2): acc[0], th.diff(rm.t, 2): acc[1]}
     assert sp.simplify(T.resultant.dot(Ri.i).subs(sub) + m * g * sp.sin(alpha) / 3) == 0
     assert sp.simplify(T.resultant.dot(Ri.j).subs(sub) - m * g * sp.cos(alpha)) == 0
+
+
+def test_rolling_contact_has_no_joint_components():
+    s, _, _ = wheel_on_incline(sp.pi / 6)
+    with pytest.raises(ConnectionError_, match=r"no local components .* use connection_action"):
+        s.connection_components(s.galilean, s.bodies[0])

@@ -272,3 +272,15 @@ def test_ambiguous_connection_needs_a_label():
     with pytest.raises(ConnectionError_, match=r"3 connections join R0 to ladder .* give "
                                                r"`label`"):
         s.connection_action(s.galilean, s.bodies[0])
+
+
+def test_lagrange_equations_carry_the_same_constraints():
+    # Lagrange's equations (ch. 25) of the four-bar give the same accelerations as the
+    # fundamental principle, with the same multipliers' constraint block
+    from rigidmech.lagrange import lagrange_equations
+    s = four_bar()[0]
+    eqs, lag = s.equations_of_motion(), lagrange_equations(s)
+    assert lag.constraints is not None
+    y = np.array([1.0, -0.6, 1.4, 0.7, -0.3, 0.2])
+    np.testing.assert_allclose(lag.rhs(m=1.3, g=9.81)(0.0, y), eqs.rhs(m=1.3, g=9.81)(0.0, y),
+                               rtol=1e-12, atol=1e-12)

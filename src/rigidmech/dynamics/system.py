@@ -347,7 +347,7 @@ class System:
         new_body = child not in self._bodies
         if new_body:
             self._graph.check_body(child)
-        closing = not new_body and (child in self._joints or linking)
+        closing = not new_body and (bool(self._graph.links_of(child)) or linking)
         graph = self._graph.with_connection(parent, child, joint, label=label)
         link = graph.links[-1]
         if closing or linking:
@@ -843,20 +843,20 @@ class System:
                                   result.point)
         return self._cache[key]
 
-    def connection_components(self, parent, child) -> dict:
+    def connection_components(self, parent, child, *, label=None) -> dict:
         """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
         joint's local basis (u, v, w), moment at the joint's point, written with q(t), q'(t)
         and q''(t) (evaluate them along a motion with :meth:`Simulation.evaluate`). For a
         perfect joint the components it cannot transmit (N for a pivot) vanish once q''
         satisfies the equations of motion.
         """
-        T = self.connection_action(parent, child)
+        T = self.connection_action(parent, child, label=label)
         child = self._solid(child, "child")
-        joint = self._link(self._solid(parent, "parent"), child, None).connection
+        joint = self._link(self._solid(parent, "parent"), child, label).connection
         if not callable(getattr(joint, "components", None)):
             raise ConnectionError_(
-                f"the connection from {parent} to {child.name} has no local components; use "
-                "connection_action.")
+                f"the connection to {child.name} has no local components (a rolling contact "
+                "or a gear mesh): use connection_action.")
         return dict(joint.components(T))
 
     def joint(self, child):

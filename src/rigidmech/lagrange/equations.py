@@ -71,4 +71,5 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     # the plain symbols served the differentiations only: results are written with q(t)
     return EquationsOfMotion(coordinates=qs, q=q_sym, u=u_sym, mass_matrix=M, forcing=f,
                              energy=system.mechanical_energy(),
-                             model_parameters=system.parameters)
+                             model_parameters=system.parameters,
+                             constraints=system.constraints())
