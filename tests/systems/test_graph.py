@@ -99,3 +99,21 @@ def test_bad_connections_are_refused():
         g.with_connection(b.frame, b, rm.joints.Pivot(at=R0.origin, axis=R0.k))
     with pytest.raises(ArgumentTypeError, match=r"`reference` must be a Frame"):
         Mechanism("R0")
+
+
+def test_the_tree_is_the_order_of_construction():
+    # a -> b hangs from the ground through a; the link ground-b given last closes the loop,
+    # even though it is the shortest way from the ground to b
+    R0 = rm.Frame("R0")
+    q1, q2 = rm.coordinates("q1 q2")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    R2 = R1.rotated("R2", about=R0.k, angle=q2, origin=R0.origin.moved("A", R1.i))
+    a, b = rm.Body("a", frame=R1), rm.Body("b", frame=R2)
+    g = (Mechanism(R0)
+         .with_connection(R0, a, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+         .with_connection(a, b, rm.joints.Pivot(at=R2.origin, axis=R0.k))
+         .with_connection(R0, b, rm.joints.PointContact(at=R0.origin, normal=R0.j)))
+    assert [k.label for k in g.closing_links()] == ["3"]
+    assert [x.name for x in g.carried_by(g.links[1])] == ["b"]
+    with pytest.raises(ConnectionError_, match=r"not in the spanning tree"):
+        g.carried_by(g.links[2])

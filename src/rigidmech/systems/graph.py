@@ -11,10 +11,11 @@ holds it as a value:
 * it **validates** what enters it, with the same messages in every layer: one body per name,
   one frame per name, every body in the reference's frame tree, actions on bodies of the graph,
   gravity once;
-* it knows its **structure**: a spanning tree of connections from the ground (breadth first,
-  in the order the connections were given) and, for each connection not in the tree, the loop
-  it closes (a cycle basis: the number of independent loops is
-  :math:`\\gamma = N_c - N_b`, connections minus moving bodies, for a connected graph).
+* it knows its **structure**: a spanning tree of connections (a connection is in the tree
+  when it joined two separate groups of solids at the time it was given; a connection between
+  solids already joined closes a loop) and, for each connection not in the tree, the loop it
+  closes (a cycle basis: the number of independent loops is :math:`\\gamma = N_c - N_b`,
+  connections minus moving bodies, for a graph connected to the ground).
 
 A connection is anything with the connection protocol: ``action_torsor(label)`` returning
 (Torsor, unknowns) and ``allowed_motion(label)`` returning (kinematic Torsor, free
@@ -295,7 +296,7 @@ class Mechanism:
 
     def tree_links(self) -> tuple:
         """The links of a spanning tree (a forest if some bodies are not connected to the
-        ground), found breadth first from the ground, in the order the links were given."""
+        ground): each joined two separate groups of solids when it was given."""
         return self._structure()[0]
 
     def closing_links(self) -> tuple:
@@ -389,25 +390,38 @@ class Mechanism:
             s = link.other(s)
 
     def _structure(self):
-        parent = {id(self._ground): None}
+        # the tree: the links that joined two separate groups of solids when they were given
+        # (Kruskal's rule in the order of the links); the others close loops
+        group = {id(x): id(x) for x in (self._ground, *self._bodies)}
+
+        def find(x):
+            while group[x] != x:
+                group[x] = group[group[x]]
+                x = group[x]
+            return x
+
         tree = []
-        roots = [self._ground, *self._bodies]
-        for root in roots:
-            if id(root) in parent and root is not self._ground:
+        for link in self._links:
+            a, b = find(id(link.first)), find(id(link.second))
+            if a != b:
+                group[a] = b
+                tree.append(link)
+        # parent links from the ground (or from the first body of a floating group)
+        parent = {}
+        for root in (self._ground, *self._bodies):
+            if id(root) in parent:
                 continue
-            parent.setdefault(id(root), None)
+            parent[id(root)] = None
             queue = deque([root])
             while queue:
                 s = queue.popleft()
-                for link in self._links:
+                for link in tree:
                     if link.first is s or link.second is s:
                         o = link.other(s)
                         if id(o) not in parent:
                             parent[id(o)] = link
-                            tree.append(link)
                             queue.append(o)
-        order = {id(k): i for i, k in enumerate(self._links)}
-        return tuple(sorted(tree, key=lambda k: order[id(k)])), parent
+        return tuple(tree), parent
 
     def mobility(self, plane=None, values=None, *, seed: int = 0):
         """The degree of mobility and of hyperstaticity of the mechanism (ch. 13.2, 14.2):
