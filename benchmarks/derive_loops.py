@@ -28,6 +28,11 @@ L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5
 
 
 def four_bar_rigidmech():
+    return four_bar_system().equations_of_motion()
+
+
+def four_bar_system(stabilization=(5.0, 5.0)):
+    """The four-bar as a rigidmech System (the loop closed by the pivot at C)."""
     q1, q2, q3 = rm.coordinates("q1 q2 q3")
     m, g = rm.constants("m g", positive=True)
     R0 = rm.Frame("R0")
@@ -45,14 +50,14 @@ def four_bar_rigidmech():
 
     crank, coupler, rocker = bar("crank", R1, L1, R0.origin), bar("coupler", R2, L2, B), bar(
         "rocker", R3, L3, D)
-    s = System(galilean=R0)
+    s = System(galilean=R0, stabilization=stabilization)
     s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
     s.connect(crank, coupler, rm.joints.Pivot(at=B, axis=k))
     s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))
     s.connect(coupler, rocker, rm.joints.Pivot(at=B.moved("C", L2 * R2.i), axis=k),
               meets=D.moved("C3", L3 * R3.i))
     s.act(rm.gravity(-g * R0.j))
-    return s.equations_of_motion()
+    return s
 
 
 def four_bar_kane():
