@@ -128,3 +128,36 @@ def test_rolling_contact_has_no_joint_components():
     s, _, _ = wheel_on_incline(sp.pi / 6)
     with pytest.raises(ConnectionError_, match=r"no local components .* use connection_action"):
         s.connection_components(s.galilean, s.bodies[0])
+
+
+def test_gear_mesh_action_from_its_multiplier():
+    # gear pair driven by a torque C on gear 1 at a state of its motion: the pivots transmit
+    # no moment about their axes (N = 0) once the mesh force F (from the multiplier) acts at
+    # the pitch point; its moment about O2 accelerates gear 2: F r2 = J2 q2''
+    q1, q2 = rm.coordinates("q1 q2")
+    R0 = rm.Frame("R0")
+    G1 = R0.rotated("G1", about=R0.k, angle=q1)
+    G2 = R0.rotated("G2", about=R0.k, angle=q2, origin=R0.point("O2", 60, 0, 0))
+    b1 = rm.Body("g1", frame=G1, mass=1, inertia=rm.inertia.disk(1, 20, axis=G1.k,
+                                                                    centre=G1.origin))
+    b2 = rm.Body("g2", frame=G2, mass=1, inertia=rm.inertia.disk(1, 40, axis=G2.k,
+                                                                    centre=G2.origin))
+    s = System(galilean=R0)
+    s.connect(R0, b1, rm.joints.Pivot(at=G1.origin, axis=R0.k))
+    s.connect(R0, b2, rm.joints.Pivot(at=G2.origin, axis=R0.k))
+    s.connect(b1, b2, rm.actions.GearMesh(GearPair(Gear(20, 2), Gear(40, 2)), b1, b2,
+                                          carrier=R0, axis=R0.k))
+    s.act(rm.actions.Couple(on=b1, moment=5 * R0.k))
+    eqs = s.equations_of_motion()
+    q, u = np.array([0.3, -0.15]), np.array([1.0, -0.5])
+    acc = eqs.rhs()(0.0, np.concatenate([q, u]))[2:]
+    lam = s.multipliers(q, u)
+    rule = {q1.diff(rm.t, 2): acc[0], q2.diff(rm.t, 2): acc[1], q1.diff(rm.t): u[0],
+            q2.diff(rm.t): u[1], q1: q[0], q2: q[1],
+            **dict(zip(s.multiplier_symbols(), lam, strict=True))}
+    for b in (b1, b2):
+        N = s.connection_components(R0, b)["N"]
+        assert abs(float(sp.sympify(N).xreplace(rule))) < 1e-9
+    F = s.connection_action(b1, b2)
+    moment = (F.moment_at(G2.origin)).dot(R0.k).xreplace(rule)
+    assert float(moment) == pytest.approx(800 * acc[1], rel=1e-12)   # J2 = m r^2 / 2 = 800

@@ -775,7 +775,11 @@ class System:
         values from :meth:`multipliers`): the action of a loop-closing joint is
         sum lambda_i e_i at its point (only the components its conditions carry: those the
         frames already enforce are carried by the tree joints), and the actions of the other
-        connections include the multipliers' actions on the bodies they carry.
+        connections include the multipliers' actions on the bodies they carry. In a
+        hyperstatic mounting (a shaft on two pivots) the split of the action between the
+        redundant connections is not determined by the equations (see :meth:`mobility`): the
+        one given is the solution in which the closing connection transmits only its
+        conditions' multipliers (nothing, for a second coaxial pivot).
 
         Parameters
         ----------
@@ -809,10 +813,14 @@ class System:
                 actions and any(f is None for k, rows in actions if k is not link
                                 for _, f in rows)):
             raise ConnectionError_(
-                "connection actions in a system with a gear mesh are not derived yet (the "
-                "mesh's multiplier is not turned into its action torsor).")
+                "a linking connection of this system has no action torsor for its multiplier "
+                "(a gear mesh whose power is not proportional to its ratio condition): its "
+                "connection actions are not derived.")
         if not tree:
-            P = self._meets.get(id(link)) or link.connection.at
+            P = self._meets.get(id(link))
+            if P is None:
+                P = next((T.point for _, forces in own for solid, T in forces
+                          if solid is child), None) or link.connection.at
             total = Torsor.zero(P)
             for lam, forces in own:
                 for solid, T in forces:

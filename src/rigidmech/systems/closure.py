@@ -49,6 +49,31 @@ def _time_derivative(e):
                           for q, d in zip(qs, dummies, strict=True)])
 
 
+def _gear_rows(link):
+    """The ratio condition of a gear mesh and the mesh force its multiplier stands for: the
+    force F d at the pitch point I (d of the mesh's action torsor), whose power
+    F d . (v(I in 2) - v(I in 1)) is kappa F c for the ratio condition c; a unit multiplier is
+    the force d / kappa on the second gear and its opposite on the first."""
+    conn = link.connection
+    (c,) = conn.velocity_constraints()
+    c = c.expression
+    I = conn.pitch_point
+    T, (F,) = conn.action_torsor("mesh")
+    d = T.resultant.xreplace({F: 1})
+    root = link.first.frame.root
+    v2 = link.second.kinematic_torsor(relative_to=root, at=I).velocity
+    v1 = link.first.kinematic_torsor(relative_to=root, at=I).velocity
+    power = sp.expand(d.dot(v2 - v1))
+    rates = sorted(c.atoms(sp.Derivative), key=str)
+    rate = next(r for r in rates if sp.expand(c).coeff(r) != 0)
+    kappa = sp.simplify(power.coeff(rate) / sp.expand(c).coeff(rate))
+    if _zero(sp.expand(power - kappa * c)) is False:
+        return [(f"{link.label}.1", c, None, None)]
+    unit = (d / kappa).compact() if hasattr(d / kappa, "compact") else d / kappa
+    return [(f"{link.label}.1", c, None, [(link.second, Torsor(unit, Vector.zero(), I)),
+                                          (link.first, Torsor(-unit, Vector.zero(), I))])]
+
+
 def _zero(e):
     """Whether ``e`` vanishes identically: a non-zero value at a random point settles it
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
@@ -110,8 +135,9 @@ def closure_conditions(link, meets=None) -> list:
 def closure_forces(link, meets=None) -> list:
     """For each condition of :func:`closure_conditions`, the actions a unit Lagrange
     multiplier stands for: ``[(solid, Torsor), ...]`` on the two solids, whose power is the
-    velocity condition (so that the generalised forces are A^T lambda); None for a gear mesh
-    (its action torsor is not derived from the multipliers yet).
+    velocity condition (so that the generalised forces are A^T lambda): for a gear mesh, the
+    mesh force at the pitch point along the line of action; None when the condition has no
+    such action (a mesh whose power is not proportional to its ratio condition).
 
     Examples
     --------
@@ -153,6 +179,8 @@ def _rows(link, meets):
                              [(second, Torsor(Vector.zero(), n, I)),
                               (first, Torsor(Vector.zero(), -n, I))]))
         return rows
+    if hasattr(conn, "pitch_point"):
+        return _gear_rows(link)
     if callable(getattr(conn, "velocity_constraints", None)):
         return [(f"{link.label}.{i + 1}", c.expression, None, None)
                 for i, c in enumerate(conn.velocity_constraints())]
