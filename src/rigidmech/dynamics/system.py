@@ -622,7 +622,43 @@ class System:
         """The conditions ``(label, velocity, position)`` of the connections that link the
         parameters (loop-closing joints, rolling contacts, gear meshes), in the order they
         were connected; ``position`` is None for a condition kept at the velocity level
-        (see :func:`rigidmech.systems.closure_conditions`)."""
+        (see :func:`rigidmech.systems.closure_conditions`).
+
+        Examples
+        --------
+        A slider-crank: crank q1, rod q2 (relative to the crank), slider x; the pivot at B
+        between the rod and the slider closes the loop.
+
+        >>> import rigidmech as rm
+        >>> q1, q2, x = rm.coordinates("q1 q2 x")
+        >>> R0 = rm.Frame("R0"); k = R0.k
+        >>> R1 = R0.rotated("R1", about=k, angle=q1)
+        >>> A = R0.origin.moved("A", R1.i)
+        >>> R2 = R1.rotated("R2", about=k, angle=q2, origin=A)
+        >>> P = R0.point("P", x, 0, 0)
+        >>> s = System(galilean=R0)
+        >>> crank, rod = rm.Body("crank", frame=R1, mass=1), rm.Body("rod", frame=R2, mass=1)
+        >>> s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
+        >>> s.connect(crank, rod, rm.joints.Pivot(at=A, axis=k))
+        >>> s.connect(R0, rm.Body("slider", frame=R0.translated("R3", P), mass=1),
+        ...           rm.joints.Prismatic(at=P, axis=R0.i))
+        >>> s.connect(s.bodies[1], s.bodies[2], rm.joints.Pivot(at=A.moved("B", 3 * R2.i),
+        ...           axis=k), meets=P)
+        >>> for label, _, phi in s.closure_conditions():
+        ...     print(label, phi)
+        4.u x(t) - 3*cos(q1(t) + q2(t)) - cos(q1(t))
+        4.v -3*sin(q1(t) + q2(t)) - sin(q1(t))
+        >>> q0, u0 = s.assemble({"q1": 0.0, "q2": 0.1, "x": 3.5}, independent=["q1"],
+        ...                     rates={"q1": 1.0})
+        >>> round(q0["x"], 12), round(q0["q2"], 12), round(u0["x"], 12)
+        (4.0, 0.0, 0.0)
+
+        At this dead centre x = cos q1 + sqrt(9 - sin(q1)^2) has x'' = -4/3 q1'^2 and q1''
+        = 0: the rod pulls the slider with -4/3 along i.
+
+        >>> (s.multipliers(list(q0.values()), list(u0.values())).round(12) + 0.0).tolist()
+        [-1.333333333333, 0.0]
+        """
         return tuple(row for _, rows in self._closures for row in rows)
 
     def constraints(self):
@@ -647,7 +683,15 @@ class System:
 
     def loops(self) -> tuple:
         """The independent loops of the graph of connections (see
-        :meth:`rigidmech.systems.Mechanism.loops`)."""
+        :meth:`rigidmech.systems.Mechanism.loops`).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> s.loops()
+        ()
+        """
         return self._graph.loops()
 
     def mobility(self, plane=None, values=None):
@@ -703,7 +747,9 @@ class System:
         :meth:`closure_conditions`) at the state (q, u), from the augmented system: the
         generalised constraint forces are A^T lambda. For a joint closing a loop, the
         multiplier of the condition along e is the component along e of the action of
-        ``parent`` on ``child`` at the point of the joint."""
+        ``parent`` on ``child`` at the point of the joint. Give a state on the constraints
+        (:meth:`assemble`): elsewhere the values include Baumgarte's correction.
+        Examples: see :meth:`closure_conditions`."""
         eqs = self.equations_of_motion()
         if eqs.constraints is None:
             raise ConnectionError_("the system has no linking connection: no multiplier.")

@@ -246,6 +246,16 @@ class Mechanism:
         ------
         ConnectionError\\_
             If ``first`` is ``second``, or a label is used twice, or a new body cannot join.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0")
+        >>> b = rm.Body("b", frame=R0.rotated("R1", about=R0.k, angle=rm.coordinates("q")))
+        >>> g = Mechanism(R0).with_connection(R0, b, rm.joints.Pivot(at=R0.origin, axis=R0.k),
+        ...                                   label="O")
+        >>> g.links
+        (Link(R0 -> b, Pivot, label='O'),)
         """
         first = self.solid(first, "first")
         second = self.solid(second, "second")
@@ -285,7 +295,15 @@ class Mechanism:
 
     def with_action(self, action) -> Mechanism:
         """A new graph with ``action`` exerted on its bodies (checked by
-        :meth:`check_action`)."""
+        :meth:`check_action`).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0")
+        >>> len(Mechanism(R0).with_action(rm.gravity(-R0.j)).actions)
+        1
+        """
         self.check_action(action)
         return self._copy(_actions=(*self._actions, action))
 
@@ -300,7 +318,8 @@ class Mechanism:
         return self._structure()[0]
 
     def closing_links(self) -> tuple:
-        """The links that are not in the spanning tree: each one closes a loop."""
+        """The links that are not in the spanning tree: each one closes a loop (examples: see
+        :class:`Mechanism`)."""
         tree = self._structure()[0]
         return tuple(k for k in self._links if not any(k is x for x in tree))
 
