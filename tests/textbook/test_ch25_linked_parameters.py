@@ -284,3 +284,11 @@ def test_lagrange_equations_carry_the_same_constraints():
     y = np.array([1.0, -0.6, 1.4, 0.7, -0.3, 0.2])
     np.testing.assert_allclose(lag.rhs(m=1.3, g=9.81)(0.0, y), eqs.rhs(m=1.3, g=9.81)(0.0, y),
                                rtol=1e-12, atol=1e-12)
+
+
+def test_a_condition_on_a_stray_coordinate_is_refused():
+    from rigidmech.dynamics import Constraints
+    x, z = rm.coordinates("x z")
+    with pytest.raises(ArgumentError, match=r"constraint c depends on z\(t\), which is not a "
+                                            r"coordinate"):
+        Constraints((x,), [("c", x.diff(rm.t) + z, None)])

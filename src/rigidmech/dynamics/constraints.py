@@ -97,6 +97,13 @@ class Constraints:
                     f"constraint {label}: the velocity form must hold first derivatives "
                     f"of the coordinates only; got {c}.")
             cs = c.xreplace(rule)
+            stray = [f for f in cs.atoms(sp.core.function.AppliedUndef) if f.args == (t,)
+                     and f not in rule]
+            if stray:
+                raise ArgumentError(
+                    f"constraint {label} depends on {stray[0]}, which is not a coordinate of "
+                    f"the system {tuple(self._coordinates)}: build the points of the "
+                    "connection on the bodies' frames.")
             row = [cs.diff(u) for u in us]
             if any(a.has(*us) for a in row):
                 raise ArgumentError(
