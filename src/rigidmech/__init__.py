@@ -71,3 +71,8 @@ __all__ = [
 ]
 __all__ += ["velocity_composition", "acceleration_composition"]
 __all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]
+
+from . import systems  # noqa: E402
+from .systems import Mechanism  # noqa: E402
+
+__all__ += ["systems", "Mechanism"]

@@ -7,3 +7,8 @@ from .system import System
 
 __all__ = ["EquationsOfMotion", "Simulation", "System"]
 __all__ += ["Event", "load_simulation"]
+
+from .assembly import assemble  # noqa: E402
+from .constraints import Constraints  # noqa: E402
+
+__all__ += ["Constraints", "assemble"]

@@ -67,4 +67,5 @@ def complete(eqs: EquationsOfMotion, groups) -> EquationsOfMotion:
         coordinates=eqs.coordinates, q=eqs.q, u=eqs.u, mass_matrix=sp.ImmutableMatrix(M),
         forcing=sp.ImmutableMatrix(f), energy=lambda: eqs.energy, parameters=eqs.parameters,
         model_parameters=eqs._model, singular_sets=lambda: eqs.singular_sets,
-        kinetic_energy=lambda: eqs.kinetic_energy, system=eqs.system)
+        kinetic_energy=lambda: eqs.kinetic_energy, system=eqs.system,
+        constraints=eqs.constraints)

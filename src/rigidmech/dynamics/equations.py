@@ -77,6 +77,11 @@ class EquationsOfMotion:
     system : System, optional
         The system the equations were derived from (for the connection actions along a
         simulated motion, :meth:`Simulation.connection_action`).
+    constraints : rigidmech.dynamics.Constraints, optional
+        Constraints A q'' = b between the coordinates (closed loops, rolling, gears): the
+        equations are then M q'' = f + A^T lambda (see :mod:`rigidmech.dynamics.constraints`)
+        and the compiled right-hand side solves the augmented system, with Baumgarte's
+        stabilisation of the drift.
 
     Notes
     -----
@@ -100,12 +105,14 @@ class EquationsOfMotion:
     """
 
     __slots__ = ("_coordinates", "_q", "_u", "_a", "_M", "_f", "_energy", "_params",
-                 "_inputs", "_model", "_cache", "_singular", "_kinetic", "_system")
+                 "_inputs", "_model", "_cache", "_singular", "_kinetic", "_system",
+                 "_constraints")
 
     def __init__(self, *, coordinates, mass_matrix, forcing, energy=None, parameters=None,
                  q=None, u=None, model_parameters=None, singular_sets=None,
-                 kinetic_energy=None, system=None):
+                 kinetic_energy=None, system=None, constraints=None):
         self._coordinates = tuple(coordinates)
+        self._constraints = constraints
         n = len(self._coordinates)
         for c in self._coordinates:
             if not (_is_function_of_time(c) or isinstance(c, sp.Symbol)):
@@ -144,7 +151,9 @@ class EquationsOfMotion:
             if isinstance(energy, sp.Basic):
                 energy = xreplace_shared([energy], back, memo)[0]
         self._energy = energy
-        symbols, functions, derivatives = atoms_shared(list(self._M) + list(self._f))
+        extra = [] if constraints is None else (
+            list(constraints.jacobian) + list(constraints.stabilized_bias()))
+        symbols, functions, derivatives = atoms_shared(list(self._M) + list(self._f) + extra)
         own = {x for x in self._q + self._u if isinstance(x, sp.Symbol)}
         if parameters is None:
             free = symbols - own - {_t}
@@ -286,7 +295,16 @@ class EquationsOfMotion:
         return self._system
 
     def accelerations(self, simplify: bool = False) -> sp.ImmutableMatrix:
-        """q'' = M^-1 f symbolically (small systems: the expressions grow fast)."""
+        """q'' = M^-1 f symbolically (small systems: the expressions grow fast); with
+        constraints, the first n unknowns of the augmented system."""
+        if self._constraints is not None:
+            c = self._constraints
+            n, m = len(self._q), len(c)
+            K = sp.BlockMatrix([[self._M, c.jacobian.T],
+                                [c.jacobian, sp.zeros(m, m)]]).as_explicit()
+            sol = K.LUsolve(sp.Matrix(list(self._f) + list(c.bias)))
+            acc = sol[:n, :]
+            return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
         acc = self._M.LUsolve(self._f)
         return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
 
@@ -392,7 +410,42 @@ class EquationsOfMotion:
                 _log.info(note)
         return values, inputs, notes
 
+    @property
+    def constraints(self):
+        """The constraints between the coordinates (:class:`Constraints`), or None."""
+        return self._constraints
+
+    def _augmented(self):
+        """The augmented matrix [[M, A^T], [A, 0]] and right-hand side [f; b_stabilized],
+        with the stand-in symbols."""
+        q_s, u_s, w_s, rule, M, f = self._symbolic()
+        c = self._constraints
+        memo = {}
+        m, n = len(c), len(q_s)
+        A = sp.ImmutableMatrix(m, n, xreplace_shared(list(c.jacobian), rule, memo))
+        b = xreplace_shared(list(c.stabilized_bias()), rule, memo)
+        K = sp.BlockMatrix([[M, A.T], [A, sp.zeros(m, m)]]).as_explicit()
+        F = sp.ImmutableMatrix(n + m, 1, list(f) + b)
+        return sp.ImmutableMatrix(K), F
+
+    def _constrained_solver(self):
+        q_s, u_s, w_s, _, _, _ = self._symbolic()
+        K, F = self._augmented()
+        full = compile_linear_solve(
+            K, F, [_t, list(q_s), list(u_s), *self._params, *w_s], symmetric=False,
+            name="accelerations_and_multipliers")
+        n = len(q_s)
+
+        def solve(*args):
+            return full(*args)[:n]
+
+        solve.full = full
+        return solve
+
     def _solver(self):
+        if "solver" not in self._cache and self._constraints is not None:
+            self._check_compilable()
+            self._cache["solver"] = self._constrained_solver()
         if "solver" not in self._cache:
             self._check_compilable()
             q_s, u_s, w_s, _, M, f = self._symbolic()

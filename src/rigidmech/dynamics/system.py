@@ -30,15 +30,16 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, FrameError
 from .._core.symbolic import free_symbols_shared
-from ..actions import Action, Gravity, Joint
-from ..kinematics import Solid
+from ..actions import Action, Joint
 from ..kinetics import Body
+from ..systems import Mechanism, closure_conditions
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, partial_rotation_vector, t
 from ..vectors.symbols import declared_order, declared_ranks, is_coordinate
 from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
+from .linked import LinkedParameters
 
 __all__ = ["System"]
 
@@ -125,7 +126,7 @@ def _check_fixed_reference(galilean):
             "in the root (non-Galilean references are not supported).")
 
 
-class System:
+class System(LinkedParameters):
     """A set of rigid bodies in a Galilean reference, their connections and actions.
 
     Parameters
@@ -163,20 +164,20 @@ class System:
     Matrix([[0]])
     """
 
-    def __init__(self, galilean: Frame, coordinates=None):
+    def __init__(self, galilean: Frame, coordinates=None, *, stabilization=(5.0, 5.0)):
         if not isinstance(galilean, Frame):
             raise ArgumentTypeError(
                 f"`galilean` must be a Frame; got {type(galilean).__name__}.")
         _check_fixed_reference(galilean)
         self._galilean = galilean
-        self._ground = Solid(galilean.name, frame=galilean)
-        # validation state: frame names, coordinate owners (coordinate -> (body, owner))
-        self._frames: dict = {}
+        # the graph of bodies, connections and actions (validated there)
+        self._graph = Mechanism(galilean)
+        # coordinate owners (coordinate -> (body, owner)): a dynamics-specific check
         self._owners: dict = {}
-        self._register_frames(galilean, galilean.name)
-        self._bodies: list[Body] = []
-        self._joints: dict = {}  # child body -> (parent solid, joint)
-        self._actions: list[Action] = []
+        self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
+        self._closures: list = []  # (link, rows): connections that link parameters
+        self._meets: dict = {}  # id(link) -> the point of the child that closes a loop
+        self._stabilization = tuple(float(x) for x in stabilization)
         self._given_coordinates = None
         if coordinates is not None:
             coords = tuple(coordinates)
@@ -192,13 +193,38 @@ class System:
         self._ranks: dict = {}
 
     # -- building -----------------------------------------------------------------------
+    @property
+    def _ground(self):
+        return self._graph.ground
+
+    @property
+    def _bodies(self):
+        return self._graph.bodies
+
+    @property
+    def _actions(self):
+        return self._graph.actions
+
+    @property
+    def mechanism(self) -> Mechanism:
+        """The graph of bodies, connections and actions (a snapshot: an immutable
+        :class:`~rigidmech.systems.Mechanism`), for its loops, mobility and hyperstaticity.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = System(galilean=R0)
+        >>> s.connect(R0, rm.Body("b", frame=R0.rotated("R1", about=R0.k,
+        ...                                             angle=rm.coordinates("q"))),
+        ...           rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.mechanism.mobility(plane=R0.k).mobility
+        1
+        """
+        return self._graph
+
     def _solid(self, s, argument):
         if isinstance(s, Frame):
-            if s != self._galilean:
-                raise ConnectionError_(
-                    f"`{argument}` is the frame {s.name}; only the Galilean reference "
-                    f"{self._galilean.name} may stand for a solid. Pass a Body.")
-            return self._ground
+            return self._graph.solid(s, argument)
         if not isinstance(s, Body):
             raise ArgumentTypeError(
                 f"`{argument}` must be a Body or the Galilean frame; got {type(s).__name__}.")
@@ -226,47 +252,14 @@ class System:
         body = self._solid(body, "body")
         if body is self._ground:
             raise ConnectionError_("the Galilean reference is not a body to add.")
-        self._check_new_body(body)
+        self._graph.check_body(body)
         self._claim(body, _body_coordinates(body), f"the free body {body.name}")
-        self._append(body)
-
-    def _append(self, body):
-        self._register_frames(body.frame, body.name)
-        self._bodies.append(body)
+        self._graph = self._graph.with_body(body)
         for q, rank in declared_ranks(_body_coordinates(body)).items():
             self._ranks.setdefault(q, rank)
         self._cache.clear()
 
     # -- validation (issue: never silently wrong) ---------------------------------------
-    def _check_new_body(self, body):
-        if body in self._bodies:
-            raise ConnectionError_(f"body {body.name} is already in the system.")
-        if body.frame.root != self._galilean.root:
-            raise ConnectionError_(
-                f"body {body.name} is attached to frame {body.frame.name} of another tree "
-                f"than {self._galilean.name}.")
-        if any(b.name == body.name for b in self._bodies):
-            raise ConnectionError_(
-                f"two bodies named {body.name!r} in one system: give each body its own name "
-                "(results and connection actions are reported by name).")
-        self._check_frames(body.frame, body.name)
-
-    def _check_frames(self, frame, owner):
-        f = frame
-        while f is not None:
-            known = self._frames.get(f.name)
-            if known is not None and known[0] != f:
-                raise ConnectionError_(
-                    f"two different frames named {f.name!r} (of bodies {known[1]} and "
-                    f"{owner}) in one system: give each frame its own name.")
-            f = f.parent
-
-    def _register_frames(self, frame, owner):
-        f = frame
-        while f is not None:
-            self._frames.setdefault(f.name, (f, owner))
-            f = f.parent
-
     def _claim(self, body, coordinates, owner):
         """Record that ``owner`` (a connection or a free body) moves ``coordinates``; a
         coordinate moved by two connections would be counted twice in the equations."""
@@ -280,55 +273,130 @@ class System:
         for q in coordinates:
             self._owners[q] = (body, owner)
 
-    def connect(self, parent, child, joint: Joint) -> None:
+    def connect(self, parent, child, joint, *, meets=None, label: str | None = None
+                ) -> None:
         """Connect ``child`` to ``parent`` (a Body or the Galilean frame) by ``joint``.
 
-        The joint is checked against the frames: the relative motion of the child must be
-        one the joint allows (ch. 13.2.2).
+        * A joint of the catalogue that gives ``child`` its first connection is a tree
+          joint: it is checked against the frames (the relative motion of the child must be
+          one the joint allows, ch. 13.2.2) and the coordinates of the child that are not its
+          parent's become this connection's.
+        * A joint between two solids already connected **closes a loop** (a four-bar, a
+          shaft in two bearings): its conditions are written between the existing
+          parameters (:func:`rigidmech.systems.closure_conditions`): the point ``joint.at``
+          of ``parent`` and the point ``meets`` of ``child`` (default: the same point) must
+          coincide along the directions the joint blocks. The equations of motion then carry
+          Lagrange multipliers (:mod:`rigidmech.dynamics.constraints`).
+        * A :class:`~rigidmech.actions.RollingContact` or :class:`~rigidmech.actions.GearMesh`
+          adds its velocity constraints (holonomic or not) the same way; if ``child`` is new
+          its coordinates become this connection's.
 
         Each parameter of situation belongs to one connection: the coordinates of the
         child's frame and mass centre that are not its parent's are those of this connection,
         and must not be moved by another one (the same q in two bodies hanging from the
         ground would be counted twice).
 
+        Parameters
+        ----------
+        parent, child : Body or the Galilean Frame (parent only)
+        joint : a joint of ``rm.joints``, a RollingContact or a GearMesh
+        meets : Point, optional
+            For a joint closing a loop: the point of ``child`` that meets ``joint.at``.
+        label : str, optional
+            Name of the connection in the graph (suffix of its unknowns); default its rank.
+
         Raises
         ------
         ConnectionError\\_
-            For a child that already has a parent, a parent not yet in the system, a second
-            body or a different frame with a name already used, or a coordinate already moved
-            by another connection.
+            For a parent not yet in the system, a second body or a different frame with a
+            name already used, a coordinate already moved by another connection, a loop
+            closed between points that cannot coincide, or a rolling contact or gear mesh
+            between other solids than ``parent`` and ``child``.
+
+        Examples
+        --------
+        A four-bar linkage: crank, coupler and rocker, the loop closed at C.
+
+        >>> import rigidmech as rm
+        >>> q1, q2, q3 = rm.coordinates("q1 q2 q3")
+        >>> R0 = rm.Frame("R0"); k = R0.k
+        >>> R1 = R0.rotated("R1", about=k, angle=q1)
+        >>> R2 = R1.rotated("R2", about=k, angle=q2, origin=R0.origin.moved("B", R1.i))
+        >>> R3 = R0.rotated("R3", about=k, angle=q3, origin=R0.point("D", 2, 0, 0))
+        >>> crank, coupler, rocker = (rm.Body(n, frame=f, mass=1) for n, f in
+        ...                           [("crank", R1), ("coupler", R2), ("rocker", R3)])
+        >>> s = System(galilean=R0)
+        >>> s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
+        >>> s.connect(crank, coupler, rm.joints.Pivot(at=R2.origin, axis=k))
+        >>> s.connect(R0, rocker, rm.joints.Pivot(at=R3.origin, axis=k))
+        >>> s.connect(coupler, rocker, rm.joints.Pivot(at=R2.origin.moved("C", 2 * R2.i),
+        ...           axis=k), meets=R3.origin.moved("C3", 1.5 * R3.i))
+        >>> [c[0] for c in s.closure_conditions()]
+        ['4.u', '4.v']
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
-        if not isinstance(joint, Joint):
+        linking = callable(getattr(joint, "velocity_constraints", None))
+        if not (isinstance(joint, Joint) or linking):
             raise ArgumentTypeError(
-                f"`joint` must be a connection from rm.joints; got {type(joint).__name__}.")
+                f"`joint` must be a connection from rm.joints, a RollingContact or a "
+                f"GearMesh; got {type(joint).__name__}.")
         if child is self._ground:
             raise ConnectionError_(
                 "`child` cannot be the Galilean reference: connect bodies to it as parent.")
-        if child in self._joints:
-            raise ConnectionError_(
-                f"body {child.name} already has a parent connection; the connections of a "
-                "System form a tree (closed loops are not supported yet).")
         if parent is not self._ground and parent not in self._bodies:
             raise ConnectionError_(
                 f"connect the parent {parent.name} before its children.")
+        if meets is not None and not (isinstance(joint, Joint) and child in self._joints):
+            raise ArgumentError(
+                "`meets` is the point of `child` that closes a loop: give it only for a joint "
+                f"between two solids already connected; got it for {child.name}, which has no "
+                "connection yet.")
+        if linking:
+            self._check_linking_solids(parent, child, joint)
         new_body = child not in self._bodies
         if new_body:
-            self._check_new_body(child)
-        R = self._galilean
-        at = joint.at
-        motion = child.kinematic_torsor(relative_to=R, at=at) + (
-            -parent.kinematic_torsor(relative_to=R, at=at))
-        joint.check(motion)
-        parent_coordinates = set() if parent is self._ground else set(
-            _body_coordinates(parent))
-        self._claim(child, [q for q in _body_coordinates(child) if q not in parent_coordinates],
-                    f"the connection {parent.name} -> {child.name}")
+            self._graph.check_body(child)
+        closing = not new_body and (bool(self._graph.links_of(child)) or linking)
+        graph = self._graph.with_connection(parent, child, joint, label=label)
+        link = graph.links[-1]
+        if closing or linking:
+            rows = closure_conditions(link, meets=meets)
+        if not closing:
+            if not linking:
+                R = self._galilean
+                at = joint.at
+                motion = child.kinematic_torsor(relative_to=R, at=at) + (
+                    -parent.kinematic_torsor(relative_to=R, at=at))
+                joint.check(motion)
+            parent_coordinates = set() if parent is self._ground else set(
+                _body_coordinates(parent))
+            self._claim(child, [q for q in _body_coordinates(child)
+                                if q not in parent_coordinates],
+                        f"the connection {parent.name} -> {child.name}")
+            if not linking:
+                self._joints[child] = (parent, joint)
+        if closing or linking:
+            self._closures.append((link, tuple(rows)))
+            if meets is not None:
+                self._meets[id(link)] = meets
+        self._graph = graph
         if new_body:
-            self._append(child)
-        self._joints[child] = (parent, joint)
+            for q, rank in declared_ranks(_body_coordinates(child)).items():
+                self._ranks.setdefault(q, rank)
         self._cache.clear()
+
+    def _check_linking_solids(self, parent, child, conn):
+        ends = tuple(s.frame for s in conn.solids)
+        # RollingContact: (moving S2, other S1); GearMesh: (first S1, second S2)
+        expected = (child.frame, parent.frame) if hasattr(conn, "contact") else (
+            parent.frame, child.frame)
+        if ends != expected:
+            raise ConnectionError_(
+                f"{type(conn).__name__} joins the frames {ends[0].name} and {ends[1].name}, "
+                f"but connects {parent.name} (frame {parent.frame.name}) and {child.name} "
+                f"(frame {child.frame.name}) here: build it on the frames of the two bodies "
+                "(the rolling solid as `child`, the driven gear as `child`).")
 
     def act(self, action: Action) -> None:
         """Add an external or internal action (gravity, force, couple, spring, ...).
@@ -339,29 +407,8 @@ class System:
             If the action is already in the system, if it is a second gravity, or if it acts
             on a body that is not in the system (connect the body first).
         """
-        if not isinstance(action, Action):
-            raise ArgumentTypeError(
-                f"`action` must be an Action (rm.gravity, rm.actions.Force, ...); got "
-                f"{type(action).__name__}.")
-        self._check_action(action)
-        self._actions.append(action)
+        self._graph = self._graph.with_action(action)
         self._cache.clear()
-
-    def _check_action(self, action):
-        if any(a is action for a in self._actions):
-            raise ConnectionError_(
-                f"this action is already in the system: {action!r}; it would count twice.")
-        present = [a for a in self._actions if isinstance(a, Gravity)]
-        if isinstance(action, Gravity) and present:
-            raise ConnectionError_(
-                f"gravity is already acting on the system ({present[0]!r}); a second gravity "
-                "would double the weights. Give one field (the sum, if several are meant).")
-        solids = [self._ground, *self._bodies]
-        for solid, _ in action.contributions(solids):
-            if solid is not self._ground and not any(solid is b for b in self._bodies):
-                raise ConnectionError_(
-                    f"`action` acts on body {solid.name}, which is not in the system: "
-                    "connect (or add) the body before acting on it.")
 
     # -- read-only views ----------------------------------------------------------------
     @property
@@ -530,7 +577,8 @@ class System:
             energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
             model_parameters=partial(_constants, bodies, tuple(self._contributions())),
             singular_sets=partial(orientation_singularities, tuple(bodies), R),
-            kinetic_energy=partial(_kinetic_energy, R, bodies), system=self)
+            kinetic_energy=partial(_kinetic_energy, R, bodies), system=self,
+            constraints=self.constraints())
         # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
         eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
             bodies, self.coordinates))
@@ -614,7 +662,7 @@ class System:
                 out.extend(self._subtree(child))
         return out
 
-    def connection_action(self, parent, child) -> Torsor:
+    def connection_action(self, parent, child, *, label=None) -> Torsor:
         """The action exerted by ``parent`` on ``child`` through their connection (ch. 18.2),
         reduced at the joint's point.
 
@@ -623,6 +671,23 @@ class System:
         torsors minus the other actions exerted on them. Like every torsor of rigidmech it is
         written with the parameters of situation q(t) and their derivatives; for its
         components in the joint's basis, use :meth:`connection_components`.
+
+        In a system with linking connections (loops, rolling, gears) the actions of those
+        connections are written with their Lagrange multipliers (:meth:`multiplier_symbols`,
+        values from :meth:`multipliers`): the action of a loop-closing joint is
+        sum lambda_i e_i at its point (only the components its conditions carry: those the
+        frames already enforce are carried by the tree joints), and the actions of the other
+        connections include the multipliers' actions on the bodies they carry. In a
+        hyperstatic mounting (a shaft on two pivots) the split of the action between the
+        redundant connections is not determined by the equations (see :meth:`mobility`): the
+        one given is the solution in which the closing connection transmits only its
+        conditions' multipliers (nothing, for a second coaxial pivot).
+
+        Parameters
+        ----------
+        parent, child : Body or the Galilean Frame
+        label : str, optional
+            The connection's label, when several connections join the same two solids.
 
         Examples
         --------
@@ -639,14 +704,36 @@ class System:
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
-        if self._joints.get(child, (None,))[0] is not parent:
+        link = self._link(parent, child, label)
+        key = ("action", id(link))
+        if key in self._cache:
+            return self._cache[key]
+        actions = self._closure_actions()
+        own = next((rows for k, rows in actions if k is link), None)
+        tree = any(k is link for k in self._graph.tree_links())
+        if own is not None and any(f is None for _, f in own) or (
+                actions and any(f is None for k, rows in actions if k is not link
+                                for _, f in rows)):
             raise ConnectionError_(
-                f"there is no connection from {parent.name} to {child.name}.")
-        key = ("action", child)
-        if key not in self._cache:
-            joint = self._joints[child][1]
-            P = joint.at
-            carried = self._subtree(child)
+                "a linking connection of this system has no action torsor for its multiplier "
+                "(a gear mesh whose power is not proportional to its ratio condition): its "
+                "connection actions are not derived.")
+        if not tree:
+            P = self._meets.get(id(link))
+            if P is None:
+                P = next((T.point for _, forces in own for solid, T in forces
+                          if solid is child), None) or link.connection.at
+            total = Torsor.zero(P)
+            for lam, forces in own:
+                for solid, T in forces:
+                    if solid is child:
+                        total = total + lam * T
+            result = total.at(P)
+        else:
+            conn = link.connection
+            P = conn.contact.point if hasattr(conn, "contact") else conn.at
+            carried = (self._subtree(child) if not self._closures
+                       else list(self._graph.carried_by(link)))
             total = Torsor.zero(P)
             for b in carried:
                 if b.mass:
@@ -654,18 +741,32 @@ class System:
             for solid, torsor, _ in self._contributions():
                 if solid in carried:
                     total = total - torsor
-            self._cache[key] = Torsor(total.resultant.compact(), total.moment.compact(), P)
+            for k, rows in actions:
+                if k is link:
+                    continue
+                for lam, forces in rows:
+                    for solid, T in forces:
+                        if solid in carried:
+                            total = total - lam * T
+            result = Torsor(total.resultant.compact(), total.moment.compact(), P)
+        self._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
+                                  result.point)
         return self._cache[key]
 
-    def connection_components(self, parent, child) -> dict:
+    def connection_components(self, parent, child, *, label=None) -> dict:
         """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
         joint's local basis (u, v, w), moment at the joint's point, written with q(t), q'(t)
         and q''(t) (evaluate them along a motion with :meth:`Simulation.evaluate`). For a
         perfect joint the components it cannot transmit (N for a pivot) vanish once q''
         satisfies the equations of motion.
         """
-        T = self.connection_action(parent, child)
-        joint = self._joints[self._solid(child, "child")][1]
+        T = self.connection_action(parent, child, label=label)
+        child = self._solid(child, "child")
+        joint = self._link(self._solid(parent, "parent"), child, label).connection
+        if not callable(getattr(joint, "components", None)):
+            raise ConnectionError_(
+                f"the connection to {child.name} has no local components (a rolling contact "
+                "or a gear mesh): use connection_action.")
         return dict(joint.components(T))
 
     def joint(self, child):

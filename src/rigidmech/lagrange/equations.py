@@ -72,4 +72,5 @@ def lagrange_equations(system: System) -> EquationsOfMotion:
     return EquationsOfMotion(coordinates=qs, q=q_sym, u=u_sym, mass_matrix=M, forcing=f,
                              energy=system.mechanical_energy(),
                              model_parameters=system.parameters,
-                             singular_sets=system.orientation_singularities())
+                             singular_sets=system.orientation_singularities(),
+                             constraints=system.constraints())

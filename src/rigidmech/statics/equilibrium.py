@@ -92,6 +92,39 @@ class Statics:
 
     reference = property(lambda self: self._reference, doc="The reference (ground).")
 
+    @classmethod
+    def from_mechanism(cls, mechanism) -> Statics:
+        """The statics of the graph ``mechanism`` (:class:`rigidmech.systems.Mechanism`, or
+        ``System.mechanism``): its bodies, its connections with their labels, its actions;
+        the ground is the reference.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.systems import Mechanism
+        >>> R0 = rm.Frame("R0"); beam = rm.Body("beam", frame=R0)
+        >>> g = (Mechanism(R0)
+        ...      .with_connection(R0, beam, rm.joints.Pivot(at=R0.origin, axis=R0.k), label="A")
+        ...      .with_connection(R0, beam, rm.actions.Contact(at=R0.point("B", 2, 0, 0),
+        ...                                                    normal=R0.j), label="B")
+        ...      .with_action(rm.actions.Force(on=beam, vector=-R0.j, at=R0.point("C", 1, 0, 0))))
+        >>> Statics.from_mechanism(g).solve().values[sp.Symbol("N_B", real=True)]
+        0.5
+        """
+        st = cls(mechanism.reference)
+        ground = mechanism.ground
+
+        def end(s):
+            return mechanism.reference if s is ground else s
+
+        for body in mechanism.bodies:
+            st.add(body)
+        for link in mechanism.links:
+            st.connect(end(link.first), end(link.second), link.connection, label=link.label)
+        for action in mechanism.actions:
+            st.act(action)
+        return st
+
     def _add_body(self, s):
         if isinstance(s, Solid) and s not in self._bodies:
             self._bodies.append(s)

@@ -1,0 +1,140 @@
+"""Assembly of a mechanism with linked parameters: a configuration on the constraints (book,
+ch. 13.2, 25.3).
+
+Given values of the independent parameters, the dependent ones solve the holonomic closure
+conditions Φ(q) = 0 (Newton's method on the dependent parameters, with the Jacobian Φ_q of
+:class:`~rigidmech.dynamics.Constraints`), and the dependent rates solve the velocity
+conditions A q' + a = 0 (linear). The independent parameters are the user's, or chosen by
+QR factorisation with column pivoting of the Jacobian: its first pivot columns, the best
+conditioned, become the dependent ones.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg
+import sympy as sp
+
+from .._core.compile import compile_expressions
+from .._core.errors import ArgumentError, ConnectionError_
+from ..vectors import t as _t
+
+__all__ = ["assemble"]
+
+
+def _name(q):
+    return q.func.__name__
+
+
+def _by_name(values, coordinates, argument):
+    names = [_name(q) for q in coordinates]
+    out = {}
+    for key, v in (values or {}).items():
+        name = key if isinstance(key, str) else (
+            _name(key) if hasattr(key, "func") else str(key))
+        if name not in names:
+            raise ArgumentError(
+                f"`{argument}`: {key} is not a coordinate of the system; expected some of "
+                f"{names}.")
+        out[name] = float(v)
+    return out
+
+
+def assemble(constraints, values, *, independent=None, rates=None, params=None,
+             tol: float = 1e-12, max_iterations: int = 50):
+    """(q0, u0) by name satisfying ``constraints`` (see the module notes).
+
+    Raises
+    ------
+    ConnectionError\\_
+        If Newton's method does not reach the constraints (a loop with no solution near the
+        given values: the message names the conditions left unsatisfied).
+    ArgumentError
+        For an unknown coordinate or a missing constant.
+
+    Examples
+    --------
+    A particle on the unit circle: given x, y follows.
+
+    >>> import rigidmech as rm
+    >>> from rigidmech.dynamics import Constraints
+    >>> x, y = rm.coordinates("x y")
+    >>> phi = x**2 + y**2 - 1
+    >>> c = Constraints((x, y), [("circle", phi.diff(rm.t), phi)])
+    >>> q0, u0 = assemble(c, {"x": 0.6, "y": 1.0}, independent=["x"], rates={"x": 1.0})
+    >>> round(q0["y"], 12), round(u0["y"], 12)
+    (0.8, -0.75)
+    """
+    coords = constraints.coordinates
+    names = [_name(q) for q in coords]
+    n = len(coords)
+    q = np.zeros(n)
+    for name, v in _by_name(values, coords, "values").items():
+        q[names.index(name)] = v
+    q_s = [sp.Dummy(nm, real=True) for nm in names]
+    u_s = [sp.Dummy(nm + "_dot", real=True) for nm in names]
+    rule = {}
+    for qq, qs, us in zip(coords, q_s, u_s, strict=True):
+        rule[qq.diff(_t)] = us
+        rule[qq] = qs
+    holo = [i for i, p in enumerate(constraints.position) if p is not None]
+    phi = [constraints.position[i].xreplace(rule) for i in holo]
+    A = constraints.jacobian.xreplace(rule)
+    a = [c.xreplace(rule).xreplace(dict.fromkeys(u_s, 0)) for c in constraints.velocity]
+    exprs = [*phi, *list(A), *a]
+    consts = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs))
+                    - set(q_s) - set(u_s) - {_t}, key=lambda s: s.name)
+    params = params or {}
+    missing = [c.name for c in consts if c.name not in params]
+    if missing:
+        raise ArgumentError(f"give the values of the constants {missing} (keyword arguments).")
+    f = compile_expressions((sp.Matrix(len(phi), 1, phi), sp.Matrix(A), sp.Matrix(a)),
+                            [_t, q_s, *consts], name="closure")
+    cvals = [float(params[c.name]) for c in consts]
+    m = len(constraints.labels)
+
+    def evaluate(qv):
+        r, J, a0 = f(0.0, qv, *cvals)
+        return (np.asarray(r, float).reshape(-1), np.asarray(J, float).reshape(m, n),
+                np.asarray(a0, float).reshape(-1))
+
+    _, J, _ = evaluate(q)
+    rank = np.linalg.matrix_rank(J) if m else 0
+    if independent is None:
+        _, _, piv = scipy.linalg.qr(J, pivoting=True)
+        dependent = sorted(piv[:rank].tolist())
+    else:
+        chosen = {(_name(x) if hasattr(x, "func") else str(x)) for x in independent}
+        unknown = chosen - set(names)
+        if unknown:
+            raise ArgumentError(
+                f"`independent`: {sorted(unknown)} are not coordinates; expected some of "
+                f"{names}.")
+        dependent = [i for i, nm in enumerate(names) if nm not in chosen]
+    # Newton on the holonomic rows for the dependent parameters
+    for _ in range(max_iterations):
+        r, J, _ = evaluate(q)
+        if not len(r) or np.max(np.abs(r)) < tol:
+            break
+        step, *_ = np.linalg.lstsq(J[holo][:, dependent], -r, rcond=None)
+        q[dependent] += step
+    r, J, a0 = evaluate(q)
+    if len(r) and not (np.all(np.isfinite(r)) and np.max(np.abs(r)) < 1e-9):
+        bad = [constraints.labels[i] for i, x in zip(holo, r, strict=True) if abs(x) > 1e-9]
+        raise ConnectionError_(
+            f"the loop cannot be closed near the given values: the closure conditions "
+            f"{bad} keep residuals {np.abs(r).max():.3g} after {max_iterations} Newton steps "
+            f"on the dependent parameters {[names[i] for i in dependent]}. Check the lengths "
+            "(the loop may have no solution) or give values closer to an assembled position.")
+    u = np.zeros(n)
+    for name, v in _by_name(rates, coords, "rates").items():
+        u[names.index(name)] = v
+    free = [i for i in range(n) if i not in dependent]
+    rhs = -(a0 + J[:, free] @ u[free])
+    sol, *_ = np.linalg.lstsq(J[:, dependent], rhs, rcond=None)
+    u[dependent] = sol
+    if m and np.max(np.abs(J @ u + a0)) > 1e-9:
+        raise ConnectionError_(
+            "the velocity conditions cannot all be satisfied with the given independent rates: "
+            f"choose other independent parameters than {[names[i] for i in free]}.")
+    return dict(zip(names, q.tolist(), strict=True)), dict(zip(names, u.tolist(), strict=True))

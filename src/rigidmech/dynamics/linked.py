@@ -1,0 +1,215 @@
+"""Linked parameters in a :class:`~rigidmech.dynamics.System`: the conditions of the
+connections that close loops, roll or mesh, their constraints, the loops, mobility and
+hyperstaticity of the graph, assembly and Lagrange multipliers (book, ch. 13.2, 25.3).
+
+:class:`LinkedParameters` holds these methods of :class:`~rigidmech.dynamics.System`; it
+relies on the system's graph (``_graph``), its closures (``_closures``: the linking
+connections and their condition rows) and its cache.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+
+from .._core.errors import ConnectionError_
+from ..systems import closure_forces
+from .assembly import assemble
+from .constraints import Constraints
+
+__all__ = ["LinkedParameters"]
+
+
+class LinkedParameters:
+    """The linked-parameter methods of :class:`~rigidmech.dynamics.System` (a mixin: see
+    the system for examples).
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> issubclass(rm.System, LinkedParameters)
+    True
+    """
+
+    __slots__ = ()
+
+    def closure_conditions(self) -> tuple:
+        """The conditions ``(label, velocity, position)`` of the connections that link the
+        parameters (loop-closing joints, rolling contacts, gear meshes), in the order they
+        were connected; ``position`` is None for a condition kept at the velocity level
+        (see :func:`rigidmech.systems.closure_conditions`).
+
+        Examples
+        --------
+        A slider-crank: crank q1, rod q2 (relative to the crank), slider x; the pivot at B
+        between the rod and the slider closes the loop.
+
+        >>> import rigidmech as rm
+        >>> q1, q2, x = rm.coordinates("q1 q2 x")
+        >>> R0 = rm.Frame("R0"); k = R0.k
+        >>> R1 = R0.rotated("R1", about=k, angle=q1)
+        >>> A = R0.origin.moved("A", R1.i)
+        >>> R2 = R1.rotated("R2", about=k, angle=q2, origin=A)
+        >>> P = R0.point("P", x, 0, 0)
+        >>> s = rm.System(galilean=R0)
+        >>> crank, rod = rm.Body("crank", frame=R1, mass=1), rm.Body("rod", frame=R2, mass=1)
+        >>> s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
+        >>> s.connect(crank, rod, rm.joints.Pivot(at=A, axis=k))
+        >>> s.connect(R0, rm.Body("slider", frame=R0.translated("R3", P), mass=1),
+        ...           rm.joints.Prismatic(at=P, axis=R0.i))
+        >>> s.connect(s.bodies[1], s.bodies[2], rm.joints.Pivot(at=A.moved("B", 3 * R2.i),
+        ...           axis=k), meets=P)
+        >>> for label, _, phi in s.closure_conditions():
+        ...     print(label, phi)
+        4.u x(t) - 3*cos(q1(t) + q2(t)) - cos(q1(t))
+        4.v -3*sin(q1(t) + q2(t)) - sin(q1(t))
+        >>> q0, u0 = s.assemble({"q1": 0.0, "q2": 0.1, "x": 3.5}, independent=["q1"],
+        ...                     rates={"q1": 1.0})
+        >>> round(q0["x"], 12), round(q0["q2"], 12), round(u0["x"], 12)
+        (4.0, 0.0, 0.0)
+
+        At this dead centre x = cos q1 + sqrt(9 - sin(q1)^2) has x'' = -4/3 q1'^2 and q1''
+        = 0: the rod pulls the slider with -4/3 along i.
+
+        >>> (s.multipliers(list(q0.values()), list(u0.values())).round(12) + 0.0).tolist()
+        [-1.333333333333, 0.0]
+        """
+        return tuple(row for _, rows in self._closures for row in rows)
+
+    def constraints(self):
+        """The constraints between the coordinates as a
+        :class:`~rigidmech.dynamics.Constraints` (Jacobian A, bias b with A q'' = b), or None
+        for a tree without linking connections.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = rm.System(galilean=R0)
+        >>> s.constraints() is None
+        True
+        """
+        rows = self.closure_conditions()
+        if not rows:
+            return None
+        if "constraints" not in self._cache:
+            self._cache["constraints"] = Constraints(self.coordinates, rows,
+                                                     stabilization=self._stabilization)
+        return self._cache["constraints"]
+
+    def loops(self) -> tuple:
+        """The independent loops of the graph of connections (see
+        :meth:`rigidmech.systems.Mechanism.loops`).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = rm.System(galilean=R0)
+        >>> s.loops()
+        ()
+        """
+        return self._graph.loops()
+
+    def mobility(self, plane=None, values=None):
+        """Degrees of mobility and hyperstaticity of the connections (ch. 13.2, 14.2), see
+        :func:`rigidmech.systems.analyse`.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); s = rm.System(galilean=R0)
+        >>> shaft = rm.Body("shaft", frame=R0.rotated("R1", about=R0.k,
+        ...                                         angle=rm.coordinates("theta")))
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.point("B", 0, 0, 1), axis=R0.k))
+        >>> print(s.mobility())
+        mobility m = 1 (N_c = 2 kinematic unknowns, rank 1 of the closure equations of 1 loop(s))
+        hyperstaticity h = 5 = N_s - 6 N_b + m = 10 - 6*1 + 1
+        undetermined by statics: X_1, Y_1, Z_1, L_1, M_1, X_2, Y_2, Z_2, L_2, M_2
+        """
+        return self._graph.mobility(plane=plane, values=values)
+
+    def assemble(self, values, *, independent=None, rates=None, **params):
+        """A configuration and velocities that satisfy the constraints: the dependent
+        parameters solved from the closure conditions by Newton's method, the independent
+        ones kept (see :func:`rigidmech.dynamics.assembly.assemble`).
+
+        Parameters
+        ----------
+        values : dict
+            Values of the coordinates (by q(t) or by name): exact for the independent ones,
+            a first guess for the others.
+        independent : sequence of q(t) or names, optional
+            The independent parameters; default chosen by pivoting on the Jacobian of the
+            constraints (the best conditioned set).
+        rates : dict, optional
+            The rates of the independent parameters (default zero).
+        **params
+            Values of the constants the constraints depend on.
+
+        Returns
+        -------
+        (dict, dict)
+            q0 and u0 by name, ready for :meth:`EquationsOfMotion.simulate`.
+        """
+        c = self.constraints()
+        if c is None:
+            raise ConnectionError_(
+                "the system has no linking connection: every set of values is consistent.")
+        return assemble(c, values, independent=independent, rates=rates, params=params)
+
+    def multipliers(self, q, u, t=0.0, **params):
+        """The Lagrange multipliers lambda (one per closure condition, in the order of
+        :meth:`closure_conditions`) at the state (q, u), from the augmented system: the
+        generalised constraint forces are A^T lambda. For a joint closing a loop, the
+        multiplier of the condition along e is the component along e of the action of
+        ``parent`` on ``child`` at the point of the joint. Give a state on the constraints
+        (:meth:`assemble`): elsewhere the values include Baumgarte's correction.
+        Examples: see :meth:`closure_conditions`."""
+        eqs = self.equations_of_motion()
+        if eqs.constraints is None:
+            raise ConnectionError_("the system has no linking connection: no multiplier.")
+        values, inputs, _ = eqs._values(params)
+        full = eqs._solver().full
+        out = full(t, np.asarray(q, float), np.asarray(u, float), *values, *inputs)
+        return -np.asarray(out)[len(eqs.coordinates):]
+
+    def multiplier_symbols(self) -> tuple:
+        """The symbols lambda_<condition> of the Lagrange multipliers, one per closure
+        condition (:meth:`closure_conditions`), in which the connection actions of a system
+        with linking connections are written; their values at a state come from
+        :meth:`multipliers`.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); rm.System(galilean=R0).multiplier_symbols()
+        ()
+        """
+        return tuple(sp.Symbol(f"lambda_{row[0]}", real=True)
+                     for row in self.closure_conditions())
+
+    def _link(self, parent, child, label):
+        links = [k for k in self._graph.links if k.first is parent and k.second is child
+                 and (label is None or k.label == str(label))]
+        if not links:
+            raise ConnectionError_(
+                f"there is no connection from {parent.name} to {child.name}"
+                + ("." if label is None else f" labelled {label!r}."))
+        if len(links) > 1:
+            raise ConnectionError_(
+                f"{len(links)} connections join {parent.name} to {child.name} (labels "
+                f"{[k.label for k in links]}): give `label` to choose one.")
+        return links[0]
+
+    def _closure_actions(self):
+        """[(link, [(lambda symbol, [(solid, unit torsor), ...] or None), ...]), ...]"""
+        if "closure_actions" not in self._cache:
+            lams = iter(self.multiplier_symbols())
+            out = []
+            for link, rows in self._closures:
+                forces = closure_forces(link, meets=self._meets.get(id(link)))
+                out.append((link, [(next(lams), f) for _, f in zip(rows, forces,
+                                                                    strict=True)]))
+            self._cache["closure_actions"] = out
+        return self._cache["closure_actions"]
+
