@@ -52,3 +52,12 @@ def test_overflowing_moments_are_an_error():
     with pytest.raises(ArgumentError, match=r"`matrix` gives moments .* that overflow"):
         rm.InertiaOperator.from_matrix([[sp.Float(1e300) ** 2, 0, 0], [0, 1, 0], [0, 0, 1]],
                                        frame=R0)
+
+
+@pytest.mark.parametrize("entries", [[0, 0, 0, None], [[1, 0, 0], [0, 1, object()], [0, 0, 1]]])
+def test_from_matrix_refuses_entries_that_are_not_numbers(entries):
+    # found by the fuzz test in CI: None in a list reached sympy.Matrix, which warns
+    # (deprecated non-Expr entries) instead of a clear error
+    with pytest.raises(ArgumentTypeError, match=r"`matrix` must be a number or a sympy "
+                       r"expression in every entry; got (NoneType None|object)"):
+        rm.InertiaOperator.from_matrix(entries, frame=rm.Frame("R0"))

@@ -86,13 +86,20 @@ def _elementary_step(J, axis, angle):
                               else new[max(r, k)][min(r, k)])
 
 
-def _has_string(value):
-    """Whether a nested list/tuple contains a string (sympy would read it as a symbol)."""
-    if isinstance(value, str | bytes):
-        return True
+def _bad_entry(value):
+    """The first entry of a nested list/tuple that is neither a number nor a sympy
+    expression (a string, which sympy would read as a symbol; None; any other object, which
+    sympy would keep in a Matrix with a deprecation warning), or None if there is none."""
     if isinstance(value, list | tuple):
-        return any(_has_string(v) for v in value)
-    return False
+        for v in value:
+            bad = _bad_entry(v)
+            if bad is not None:
+                return bad
+        return None
+    if isinstance(value, bool) or not isinstance(value, int | float | complex | np.number
+                                                   | sp.Expr | np.ndarray):
+        return (value,)
+    return None
 
 
 class InertiaOperator:
@@ -232,10 +239,15 @@ class InertiaOperator:
         """
         frame = check_frame(frame, "frame")
         at = cls._check_at(frame, at)
-        if isinstance(matrix, list | tuple) and _has_string(matrix):
+        bad = _bad_entry(matrix) if isinstance(matrix, list | tuple) else None
+        if bad is not None and isinstance(bad[0], str | bytes):
             raise ArgumentTypeError(
                 "`matrix` must be a number or a sympy expression in every entry; got a string "
                 "(a string is not read as a symbol).")
+        if bad is not None:
+            raise ArgumentTypeError(
+                "`matrix` must be a number or a sympy expression in every entry; got "
+                f"{type(bad[0]).__name__} {bad[0]!r}.")
         try:
             m = sp.Matrix(matrix)
         except (sp.SympifyError, TypeError, ValueError) as exc:
