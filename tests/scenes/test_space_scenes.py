@@ -10,6 +10,7 @@ from scipy.integrate import solve_ivp
 
 import rigidmech as rm
 from rigidmech import scenes
+from rigidmech._core import errors as scenes_errors
 from rigidmech.dynamics.simulation import Event
 from rigidmech.kinematics.orbits import Orbit
 from rigidmech.scenes import cli
@@ -59,19 +60,22 @@ def test_satellite_run_from_the_catalogue():
 
 
 # -- Moon probe: Jacobi's integral, and the motion vs the rotating-frame equations ----------
-def _jacobi(t, x, y, vx, vy, mu):
-    """C = ξ² + η² + 2(1-mu)/r_E + 2 mu/r_M - |v relative to R1|², in R1 turning at rate 1."""
-    c, s = np.cos(t), np.sin(t)
+def _jacobi(t, x, y, vx, vy, mE, mM):
+    """C = W^2 (ξ² + η²) + 2 mE/r_E + 2 mM/r_M - |v relative to R1|², R1 turning at W about k,
+    W^2 = mE + mM (G = 1, D = 1), E at (-mu, 0), M at (1 - mu, 0) in R1."""
+    W, mu = math.sqrt(mE + mM), mM / (mE + mM)
+    c, s = np.cos(W * t), np.sin(W * t)
     xi, eta = c * x + s * y, -s * x + c * y
-    wx, wy = vx + y, vy - x                      # v - k ^ OP, the velocity relative to R1
+    wx, wy = vx + W * y, vy - W * x              # v - W k ^ OP, the velocity relative to R1
     vxi, veta = c * wx + s * wy, -s * wx + c * wy
     rE = np.hypot(xi + mu, eta)
     rM = np.hypot(xi - 1 + mu, eta)
-    return xi**2 + eta**2 + 2 * (1 - mu) / rE + 2 * mu / rM - (vxi**2 + veta**2)
+    return W**2 * (xi**2 + eta**2) + 2 * mE / rE + 2 * mM / rM - (vxi**2 + veta**2)
 
 
 def _rotating_frame_motion(state0, t_end, mu):
-    """The textbook's equations of the restricted three-body problem in R1 (scipy)."""
+    """The textbook's equations of the restricted three-body problem in R1, in the units
+    where the Moon's angular rate is 1 (scipy)."""
     def f(_, s):
         xi, eta, u, v = s
         rE3 = np.hypot(xi + mu, eta) ** 3
@@ -82,14 +86,19 @@ def _rotating_frame_motion(state0, t_end, mu):
     return solve_ivp(f, (0.0, t_end), state0, method="DOP853", rtol=1e-13, atol=1e-14).y[:, -1]
 
 
-def test_moon_probe_jacobi_constant_is_conserved():
+@pytest.mark.parametrize(("mE", "mM", "state"), [
+    pytest.param(1 - EARTH_MOON_MU, EARTH_MOON_MU, None, id="earth-moon"),
+    pytest.param(2.0, 0.5, (0.3, 0.0, 0.0, 2.2), id="other-masses"),
+])
+def test_moon_probe_jacobi_constant_is_conserved(mE, mM, state):
     scene = scenes.get("moon-probe")
     eqs = scene.build().system.equations_of_motion()
-    mu = EARTH_MOON_MU
-    sim = eqs.simulate(t=(0.0, scene.t_end), q0=scene.q0, u0=scene.u0,
-                       params={"m": 1.0, "mu": mu}, rtol=1e-12, atol=1e-14, n_output=2001)
+    q0, u0 = (scene.q0, scene.u0) if state is None else (state[:2], state[2:])
+    sim = eqs.simulate(t=(0.0, scene.t_end), q0=q0, u0=u0,
+                       params={"m": 1.0, "mE": mE, "mM": mM}, rtol=1e-12, atol=1e-14,
+                       n_output=2001)
     assert sim.status == "finished"
-    C = _jacobi(sim.t, *sim.q, *sim.u, mu)
+    C = _jacobi(sim.t, *sim.q, *sim.u, mE, mM)
     assert np.max(np.abs(C - C[0])) < 1e-9 * abs(C[0])
     # the probe goes far from the Earth: a real three-body motion, not a Kepler ellipse
     assert np.max(np.hypot(*sim.q)) > 0.5
@@ -100,8 +109,9 @@ def test_moon_probe_agrees_with_the_rotating_frame_equations():
     mu, T = 0.2, 2.0                                   # a heavy "moon" to make it count
     x0, y0, vx0, vy0 = 0.4, 0.1, -0.3, 1.1
     eqs = scene.build().system.equations_of_motion()
-    sim = eqs.simulate(t=(0.0, T), q0=[x0, y0], u0=[vx0, vy0], params={"m": 2.0, "mu": mu},
-                       rtol=1e-13, atol=1e-14, n_output=2)
+    sim = eqs.simulate(t=(0.0, T), q0=[x0, y0], u0=[vx0, vy0],
+                       params={"m": 2.0, "mE": 1 - mu, "mM": mu}, rtol=1e-13, atol=1e-14,
+                       n_output=2)
     # at t = 0, R1 = R0: ξ = x, η = y, ξ' = vx + y, η' = vy - x
     xi, eta, u, v = _rotating_frame_motion([x0, y0, vx0 + y0, vy0 - x0], T, mu)
     c, s = math.cos(T), math.sin(T)
@@ -109,6 +119,11 @@ def test_moon_probe_agrees_with_the_rotating_frame_equations():
     vx, vy = c * (u - eta) - s * (v + xi), s * (u - eta) + c * (v + xi)
     np.testing.assert_allclose([*sim.q[:, -1], *sim.u[:, -1]], [x, y, vx, vy], rtol=0,
                                atol=1e-9)
+
+
+def test_moon_probe_refuses_a_negative_mass():
+    with pytest.raises(scenes_errors.SceneError, match=r"parameter `mM` must be > 0"):
+        scenes.run("moon-probe", params={"mM": -0.1})
 
 
 # -- Foucault pendulum: the swing plane turns at -Omega sin(lat) ----------------------------

@@ -11,14 +11,15 @@ All three are written in a Galilean reference with :class:`~rigidmech.dynamics.S
   :class:`~rigidmech.kinematics.orbits.Orbit`.
 * ``moon-probe`` (ch. 27, the restricted three-body problem): a probe P in the plane of the
   Earth-Moon orbit, in the Galilean frame R0 centred at their barycentre, in the units where
-  the Earth-Moon distance, G (M_E + M_M) and the Moon's angular rate are 1 (time unit 4.34
+  the Earth-Moon distance and G are 1; the masses mE and mM default to the Earth's and the
+  Moon's shares of their total (then the Moon's angular rate is 1 and the time unit 4.34
   days). The Earth E and the Moon M move on their circular orbits, prescribed with time: the
-  frame R1 of the pair turns with the angle t about k, E = -mu R1.i, M = (1 - mu) R1.i, mu the
-  Moon's share of the mass. The probe (coordinates x, y in R0) feels the field of each
-  (:meth:`~rigidmech.actions.Attractor.field`), given as forces. The Galilean energy of the
-  probe is not conserved (the Moon moves); Jacobi's integral
-  C = ξ² + η² + 2(1 - mu)/r_E + 2 mu/r_M - (ξ'² + η'²), with ξ, η the coordinates in R1,
-  is.
+  frame R1 of the pair turns with the angle Omega t about k, Omega = sqrt(mE + mM) (Kepler's
+  third law), E = -mu R1.i, M = (1 - mu) R1.i, mu = mM / (mE + mM). The probe (coordinates
+  x, y in R0) feels the field of each (:meth:`~rigidmech.actions.Attractor.field`), given as
+  forces. The Galilean energy of the probe is not conserved (the Moon moves); Jacobi's
+  integral C = Omega² (ξ² + η²) + 2 mE/r_E + 2 mM/r_M - (ξ'² + η'²), with ξ, η the
+  coordinates in R1, is.
 * ``foucault-pendulum`` (ch. 19, 24): a spherical pendulum (a bob of mass m on a massless rod
   of length L) hung at the point O of the Earth, at the latitude ``lat`` (radians). R0 = (O;
   i east, j north, k up) at t = 0 is taken Galilean; the Earth frame RE turns relative to it
@@ -77,16 +78,17 @@ def _satellite() -> Built:
 
 def _moon_probe() -> Built:
     x, y = coordinates("x y")
-    m, mu = constants("m mu", positive=True)
+    m, mE, mM = constants("m mE mM", positive=True)
     R0 = Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=t)     # the Earth-Moon line, turning at rate 1
-    E = R0.origin.moved("E", -mu * R1.i)
-    M = R0.origin.moved("M", (1 - mu) * R1.i)
+    Omega = sp.sqrt(mE + mM)                       # Kepler's third law with D = 1, G = 1
+    R1 = R0.rotated("R1", about=R0.k, angle=Omega * t)   # the Earth-Moon line
+    E = R0.origin.moved("E", -mM / (mE + mM) * R1.i)
+    M = R0.origin.moved("M", mE / (mE + mM) * R1.i)
     P = R0.point("P", x, y, 0)
     probe = Body("probe", frame=R0.translated("Rp", P), mass=m, centre=P)
     system = System(galilean=R0)
     system.add(probe)
-    for body, centre in ((point_mass(1 - mu, G=1), E), (point_mass(mu, G=1), M)):
+    for body, centre in ((point_mass(mE, G=1), E), (point_mass(mM, G=1), M)):
         system.act(Force(on=probe, vector=m * body.field(P, centre=centre), at=P))
     return Built(system, (probe,))
 
@@ -121,12 +123,14 @@ SPACE_SCENES = (
           "bodies)", "ch. 27",
           coordinates=("x", "y"),
           parameters=(("m", 1.0, "mass of the probe (drops out)"),
-                      ("mu", EARTH_MOON_MU, "the Moon's share of the Earth-Moon mass")),
+                      ("mE", 1.0 - EARTH_MOON_MU, "mass of the Earth (G = 1)"),
+                      ("mM", EARTH_MOON_MU, "mass of the Moon (G = 1)")),
           q0=(0.1 - EARTH_MOON_MU, 0.0), u0=(0.0, 4.2), t_end=6.0, rtol=1e-11, atol=1e-12,
           builder=_moon_probe,
           notes="x, y: position of the probe in the barycentric Galilean frame; units: the "
-                "Earth-Moon distance, the Moon's angular rate (t = 2 pi is 27.3 days). The "
-                "Earth and the Moon move on circular orbits; Jacobi's integral is conserved."),
+                "Earth-Moon distance and G = 1 (with the default masses, t = 2 pi is 27.3 "
+                "days). The Earth and the Moon move on circular orbits; Jacobi's integral "
+                "is conserved."),
     Scene("foucault-pendulum", "Foucault pendulum on the rotating Earth", "ch. 19, 24",
           coordinates=("alpha", "beta"),
           parameters=(("m", 1.0, "mass of the bob"), ("L", 1.0, "length of the pendulum"),
