@@ -179,6 +179,8 @@ def test_run_new_scenes(capsys, name):
     pytest.param("foucault-pendulum", r"rigidmech: error: scene 'foucault-pendulum' has no "
                  r"equilibrium at q = 0 \(q' = 0\): there f\(0, 0\) = \[0\.00125, 0\]",
                  id="foucault"),
+    pytest.param("moon-probe", r"rigidmech: error: scene 'moon-probe' has equations that "
+                 r"depend on the time t explicitly", id="moon-probe"),
 ])
 def test_modes_refuses_a_scene_without_equilibrium_at_zero(capsys, name, match):
     assert cli.main(["modes", name]) == 2
