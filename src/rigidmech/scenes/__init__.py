@@ -7,11 +7,15 @@
   follows its energy and times each stage (:class:`RunReport`);
 * :mod:`~rigidmech.scenes.cli`: ``python -m rigidmech run NAME`` and ``python -m rigidmech
   scenes``.
+* :mod:`~rigidmech.scenes.space_scenes`: a satellite, a probe between the Earth and the Moon,
+  the Foucault pendulum (ch. 19, 24, 27), in the catalogue too;
+* :mod:`~rigidmech.scenes.modes`: the natural modes of a scene about q = 0
+  (``python -m rigidmech modes NAME``).
 
 Examples
 --------
 >>> from rigidmech import scenes
->>> scenes.names()
+>>> scenes.names()[:4]
 ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass')
 >>> rep = scenes.run("double-pendulum", t_end=0.5)
 >>> rep.scene.section, rep.energy_drift < 1e-8
@@ -26,3 +30,6 @@ __all__ = ["Scene", "Parameter", "Built", "catalogue", "get", "names", "RunRepor
 from .pipeline import check_save_path  # noqa: E402
 
 __all__ += ["check_save_path"]
+from .modes import SceneModes, scene_modes  # noqa: E402
+
+__all__ += ["SceneModes", "scene_modes"]

@@ -252,8 +252,9 @@ def names() -> tuple:
 
     Examples
     --------
-    >>> names()
-    ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass')
+    >>> names()                                        # doctest: +NORMALIZE_WHITESPACE
+    ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass', 'satellite',
+     'moon-probe', 'foucault-pendulum')
     """
     return tuple(_BY_NAME)
 
@@ -264,7 +265,7 @@ def catalogue() -> tuple:
     Examples
     --------
     >>> [s.dof for s in catalogue()]
-    [1, 2, 2, 1]
+    [1, 2, 2, 1, 2, 2, 2]
     """
     return _SCENES
 
@@ -293,3 +294,10 @@ def get(name) -> Scene:
             f"unknown scene {name!r}; known scenes: {', '.join(_BY_NAME)} "
             "(list them with `python -m rigidmech scenes`).")
     return _BY_NAME[name]
+
+
+# -- the Earth and space (ch. 8, 19, 24, 27): appended to the catalogue ----------------------
+from .space_scenes import SPACE_SCENES  # noqa: E402  (the module uses Scene and Built above)
+
+_SCENES += SPACE_SCENES
+_BY_NAME.update((s.name, s) for s in SPACE_SCENES)

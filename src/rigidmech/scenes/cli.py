@@ -19,6 +19,11 @@ other moment: ``rigidmech: interrupted``, status 130). Any other failure prints 
 ``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps,
 ``--progress/--no-progress`` shows or hides a progress bar on stderr (default: shown on a
 terminal for runs longer than 2 s).
+
+``python -m rigidmech modes NAME`` (default ``double-pendulum``) linearises a scene about its
+equilibrium q = 0 and prints M, K and the natural frequencies and mode shapes
+(:func:`rigidmech.scenes.modes.scene_modes`); ``--param`` overrides as for ``run``. A scene
+with no equilibrium at q = 0 is refused with one line (status 2).
 """
 
 from __future__ import annotations
@@ -136,6 +141,15 @@ def _parser():
                    help="show the traceback of an unexpected failure")
     sub.add_parser("scenes", help="list the catalogue of ready-made systems",
                    description="List the catalogue of ready-made systems.")
+    md = sub.add_parser("modes", help="natural frequencies and mode shapes about q = 0",
+                        description="Linearise a scene about its equilibrium q = 0 and print "
+                        "M, K and its natural frequencies and mode shapes.")
+    md.add_argument("name", nargs="?", default=DEFAULT_SCENE, metavar="NAME",
+                    help=f"scene name (default {DEFAULT_SCENE})")
+    md.add_argument("--param", type=_param, action="append", default=[], metavar="NAME=VALUE",
+                    help="override a parameter, e.g. --param m=2 (repeatable)")
+    md.add_argument("--debug", action="store_true",
+                    help="show the traceback of an unexpected failure")
     return p
 
 
@@ -207,6 +221,21 @@ def _run_regimes(args, out):
     print(report.summary(), file=out)
 
 
+def _modes(args, out):
+    from .modes import scene_modes  # imported on use: the vibrations layer
+
+    if args.name in regime_scene_names():
+        raise SceneError(f"scene {args.name!r} changes regime along its motion (phases "
+                         "integrated one by one): it has no single set of equations to "
+                         "linearise about q = 0.")
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    print(scene_modes(args.name, params=params).summary(), file=out)
+
+
 def main(argv=None) -> int:
     """Run the command line with ``argv`` (default ``sys.argv[1:]``); return the exit status.
 
@@ -224,6 +253,8 @@ def main(argv=None) -> int:
         args = _parser().parse_args(_join_negative_values(argv))
         if args.command == "scenes":
             _list_scenes(out)
+        elif args.command == "modes":
+            _modes(args, out)
         else:
             _run(args, out)
     except SystemExit as exc:  # --help, --version
