@@ -225,7 +225,7 @@ UNSTABLE_DRIFT = 0.5
 def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
     """A one-step fixed-step run as successive runs of about :data:`CHUNK` steps (a whole
     number of `stride` steps each), keeping every `stride`-th grid point: memory follows the
-    samples, and Ctrl-C keeps the chunks done (the driver's fixed-step runs keep nothing)."""
+    samples, and Ctrl-C keeps the chunks done and the steps of the interrupted one."""
     h = (t1 - t0) / nsteps
     per = stride * max(1, math.ceil(CHUNK / stride))
     ts, ys = [np.array([t0])], [np.asarray(y0, dtype=float)[:, None]]

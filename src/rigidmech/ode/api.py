@@ -87,7 +87,7 @@ def _check_options(entry, options):
     params = inspect.signature(entry.function).parameters
     if any(p.kind is p.VAR_KEYWORD for p in params.values()):
         return
-    known = sorted(set(params) - _COMMON - {"fun", "t_span", "y0"})
+    known = sorted(set(params) - _COMMON - {"fun", "t_span", "y0", "progress"})
     for key in options:
         if key not in params or key in _COMMON:
             raise ArgumentError(
@@ -317,8 +317,9 @@ def solve(
         One of :func:`methods` (default ``"dop853"``); ``methods("fixed")`` need `step`. A
         :class:`~rigidmech.ode.tableaux.ButcherTableau` runs as a fixed-step method.
     step : float, optional
-        Step size of a fixed-step method (required by those, refused by the others). It is
-        reduced slightly, if needed, so that a whole number of equal steps spans `t_span`.
+        Step size of a fixed-step method (required by those, refused by the others), at most
+        ``|t1 - t0|``. It is reduced slightly, if needed, so that a whole number of equal
+        steps spans `t_span`.
     rtol, atol : float, or array of shape (n,) for `atol`
         Tolerances of the adaptive methods: local error kept below ``atol + rtol |y|`` in
         Hairer's RMS norm. Ignored by fixed-step methods.
@@ -339,7 +340,10 @@ def solve(
         Extra arguments passed to `fun`.
     **options
         Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
-        ``"radau"``), passed on to it; an option the method does not take is refused.
+        ``"radau"``), passed on to it; an option the method does not take is refused. Every
+        built-in method takes ``progress``: a callable ``progress(t)`` called after every
+        step (a returned False stops the run with status 2 and the steps made so far, as
+        Ctrl-C does for every built-in method).
 
     Returns
     -------
@@ -479,6 +483,9 @@ def _check_fixed_step(entry, step, t0, t1, max_steps):
     h = _float("step", step)
     if not (math.isfinite(h) and h > 0):
         raise ArgumentError(f"`step` must be a finite number > 0; got {h}.")
+    if t0 != t1 and h > abs(t1 - t0):
+        raise ArgumentError(f"`step` = {h!r} exceeds the time span |t1 - t0| = "
+                            f"{abs(t1 - t0)!r}: no step would be of the size asked for.")
     nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
     if nsteps > max_steps:
         raise ArgumentError(
