@@ -1,8 +1,10 @@
 """Shared checks and output recording of the fixed-step methods of :mod:`rigidmech.ode`.
 
-Used by :mod:`~rigidmech.ode.multistep` and :mod:`~rigidmech.ode.geometric`: validation of
-``t_span``, ``y0`` and ``step``, the uniform grid, thinning of the output (``save_every``) and the
-assembly of the :class:`~rigidmech.ode.OdeResult` with an optional cubic Hermite dense output.
+Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep` and
+:mod:`~rigidmech.ode.geometric`: validation of ``t_span``, ``y0`` and ``step``, the uniform
+grid, the one fixed-step loop (:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of
+the output (``save_every``) and the assembly of the :class:`~rigidmech.ode.OdeResult` with an
+optional cubic Hermite dense output.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from ._driver import fail_message
 from ._result import OdeResult
 
 __all__ = ["check_fixed", "FixedRecorder", "fixed_loop"]
+
 
 def check_fixed(t_span, y0, step, max_steps, save_every, *, even=False):
     """Validate the arguments of a fixed-step method and build its uniform grid.
@@ -102,10 +105,6 @@ class FixedRecorder:
         self.message = "The integration reached the end of `t_span`."
         self.shape = y0.shape if shape is None else shape
 
-    def wants(self, i, nsteps):
-        """Whether step number `i` (1-based) is recorded."""
-        return i % self.save_every == 0 or i == nsteps
-
     def add(self, t, y, f=None):
         """Record the state `y` (a fresh array or list, kept) at `t`, with `f` if dense."""
         self.ts.append(t)
@@ -136,15 +135,18 @@ class FixedRecorder:
 
 
 def _array_finite(y):
-    return math.isfinite(float(np.sum(y)))  # a sum is nan or inf if one term is
+    return math.isfinite(y.sum())  # a sum is nan or inf if one term is
+
+
+def _small_finite(y):
+    return math.isfinite(sum(y.tolist()))  # faster than y.sum() for a few components
 
 
 def _list_finite(y):
     return math.isfinite(sum(y))
 
 
-def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, state=None,
-               finite=None):
+def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=None):
     """The one loop of the fixed-step methods: `nsteps` steps of size `h` from `t0`.
 
     ``advance(t, h) -> (y, f)`` makes the step from ``t = t0 + (i - 1) h`` (the method keeps
@@ -156,9 +158,8 @@ def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, state=Non
     (status 2; both keep everything computed so far, the last step made included). The time
     of step ``i`` is ``t0 + i h``; the last one is `t1` if given.
 
-    `state`, if given, is the initial ``(y, f)`` (the state is recorded again only if the run
-    stops before its first step; it is not). `finite(y)` defaults to a check of the sum of an
-    array. Returns the number of steps made.
+    `finite(y)` defaults to a check of the sum of an array. Returns the number of steps
+    made.
 
     Examples
     --------
@@ -169,38 +170,45 @@ def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, state=Non
     >>> rec.ts, [float(v[0]) for v in rec.ys]
     ([0.0, 0.5, 1.0], [1.0, 1.4142135623730951, 2.0])
     """
-    finite = finite or _array_finite
-    wants, add = rec.wants, rec.add
-    t_prev, last = t0, state  # the last step made, (y, f), recorded or not
+    if finite is None:
+        y0 = rec.ys[0]
+        finite = _small_finite if y0.ndim == 1 and y0.size <= 32 else _array_finite
+    every, dense = rec.save_every, rec.dense
+    ts_append, ys_append = rec.ts.append, rec.ys.append
+    t_prev, y_last, f_last = t0, None, None  # the last step made
     i = 0
     try:
         for i in range(1, nsteps + 1):
             y, f = advance(t0 + (i - 1) * h, h)
             t = t1 if i == nsteps and t1 is not None else t0 + i * h
             if not finite(y):
-                _keep(rec, t_prev, last)
+                _keep(rec, t_prev, y_last, f_last)
                 bad = y if isinstance(y, np.ndarray) else np.array(y, dtype=float)
                 rec.status = -1
                 rec.message = fail_message("The state became non-finite", t, bad, rec.shape)
                 return i - 1
-            if wants(i, nsteps):
-                add(t, y, f)
-            t_prev, last = t, (y, f)
+            if every == 1 or i % every == 0 or i == nsteps:
+                if dense:
+                    rec.add(t, y, f)
+                else:
+                    ts_append(t)
+                    ys_append(y)
+            t_prev, y_last, f_last = t, y, f
             if progress is not None and progress(t) is False:
-                _keep(rec, t, last)
+                _keep(rec, t, y, f)
                 _interrupt(rec, "The integration was stopped by the `progress` callback", t)
                 return i
     except KeyboardInterrupt:  # during step i: steps up to i - 1 are kept
-        _keep(rec, t_prev, last)
+        _keep(rec, t_prev, y_last, f_last)
         _interrupt(rec, "The integration was interrupted (KeyboardInterrupt)", t_prev)
         return i - 1
     return nsteps
 
 
-def _keep(rec, t, last):
+def _keep(rec, t, y, f):
     """Record the last step made, if it was not recorded (thinned output)."""
-    if rec.ts[-1] != t and last is not None:
-        rec.add(t, *last)
+    if rec.ts[-1] != t and y is not None:
+        rec.add(t, y, f)
 
 
 def _interrupt(rec, reason, t):

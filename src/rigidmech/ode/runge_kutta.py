@@ -69,16 +69,19 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None,
             done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress,
                               finite=_list_finite)
             return rec.result(tableau.name, nfev(), done)
-    advance, nfev = _array_steps(tableau, Problem(fun, shape), y0, f0)
+    advance, nfev = _array_steps(tableau, Problem(fun, shape), y0, f0, h)
     done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress)
     return rec.result(tableau.name, nfev(), done)
 
 
-def _array_steps(tableau, prob, y0, f0):
-    """The step ``advance(t, h) -> (y, None)`` of `tableau` on flat arrays, and its counter."""
-    A, b, c = tableau.A, tableau.b, tableau.c
+def _array_steps(tableau, prob, y0, f0, h):
+    """The step ``advance(t, h) -> (y, None)`` of `tableau` (of size `h`) on flat arrays,
+    and its counter of evaluations."""
     s = tableau.stages
-    used = [i for i in range(s) if b[i] != 0]
+    hA = [h * tableau.A[i, :i] for i in range(s)]
+    hc = h * tableau.c
+    used = [i for i in range(s) if tableau.b[i] != 0]
+    hb = h * tableau.b[used]
     K = np.empty((s, y0.size))
     box = [y0.reshape(-1).copy(), f0]
 
@@ -91,8 +94,8 @@ def _array_steps(tableau, prob, y0, f0):
         else:
             prob(t, y, K[0])
         for i in range(1, s):
-            prob(t + h * c[i], y + (h * A[i, :i]) @ K[:i], K[i])
-        y_new = np.dot(h * b[used], K[used])
+            prob(t + hc[i], y + hA[i] @ K[:i], K[i])
+        y_new = np.dot(hb, K[used])
         y_new += y
         box[0] = y_new
         return y_new, None
@@ -107,18 +110,19 @@ def _float_steps(tableau, fun, y0, f0):
     step = cached(("rk-fixed", tableau, n), lambda: make_unrolled_stepper(
         tableau.name, tableau.A, tableau.b, tableau.c, tableau.stages, None, n))
     arr, stages = np.array, tableau.stages
-    box = [y0.tolist(), f0.tolist(), 1]
+    y, k0, nfev = y0.tolist(), f0.tolist(), 1
 
     def advance(t, h):
-        y, k0, nfev = box
+        nonlocal y, k0, nfev
         if k0 is None:
             k0 = fun(t, arr(y)).tolist()
             nfev += 1
         y = step(fun, t, y, k0, h)
-        box[:] = y, None, nfev + stages - 1
+        k0 = None
+        nfev += stages - 1
         return y, None
 
-    return advance, lambda: box[2]
+    return advance, lambda: nfev
 
 
 def fixed_step_method(tableau):
