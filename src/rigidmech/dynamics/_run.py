@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import inspect
 import math
-import re
 import sys
 import time
 from math import isfinite
@@ -231,23 +230,18 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
     ts, ys = [np.array([t0])], [np.asarray(y0, dtype=float)[:, None]]
     y, done, nfev = np.asarray(y0, dtype=float), 0, 0
     status, message = 0, "The integration reached the end of `t_span`."
+    t_stop, y_stop = t1, None
     while done < nsteps:
         k = min(per, nsteps - done)
         ta, tb = t0 + done * h, (t0 + (done + k) * h) if done + k < nsteps else t1
-        try:
-            r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
-                          max_steps=k + 1)
-        except KeyboardInterrupt:
-            status = 2
-            message = (f"The integration was interrupted (KeyboardInterrupt) at t = {ta!r}; "
-                       "the result holds the steps made so far.")
-            break
+        r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
+                      max_steps=k + 1)  # Ctrl-C: status 2, the chunk's steps kept
         nfev += r.nfev
         keep = np.arange(stride, len(r.t), stride)
         ts.append(r.t[keep])
         ys.append(r.y[:, keep])
         if r.status != 0:
-            status, message = r.status, r.message
+            status, message, t_stop, y_stop = r.status, r.message, r.t_stop, r.y_stop
             if len(r.t) and (len(r.t) - 1) % stride:
                 ts.append(r.t[-1:])
                 ys.append(r.y[:, -1:])
@@ -259,7 +253,8 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
         t_all = np.append(t_all, t1)
         ys.append(y[:, None])
     return ode.OdeResult(t=t_all, y=np.concatenate(ys, axis=1), nfev=nfev, nsteps=done,
-                         nrejected=0, status=status, message=message, method=method)
+                         nrejected=0, status=status, message=message, method=method,
+                         t_stop=t_stop, y_stop=y if y_stop is None else y_stop)
 
 
 def _takes(method, option):
@@ -337,14 +332,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         watch.close()
     elapsed = time.perf_counter() - start
     message = res.message
-    t_stop = None
-    if res.status in (2, -1):  # the driver names the last accepted step's time
-        found = re.search(r"at t = (\S+?)[;,]", res.message)
-        t_stop = float(found.group(1)) if found else float(watch.t)
-    elif res.status == 1 and res.t_events:
-        t_stop = max((float(te[-1]) for te in res.t_events if len(te)), default=None)
-    elif res.status == 0:
-        t_stop = t1
+    t_stop = res.t_stop  # the end, the terminal event or the last accepted step
     if res.status == 2:
         t_end = float(res.t[-1]) if len(res.t) else t0
         who = ("the `progress` callback" if watch.stopped else "Ctrl-C (KeyboardInterrupt)")

@@ -130,7 +130,7 @@ class FixedRecorder:
         return OdeResult(
             t=t, y=y, nfev=int(nfev), nsteps=int(nsteps),
             nrejected=0, status=self.status, message=self.message, method=method, sol=sol,
-            stats=dict(stats or {}),
+            stats=dict(stats or {}), t_stop=float(t[-1]), y_stop=Y[-1].copy(),
         )
 
 

@@ -222,7 +222,8 @@ def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
                 status, message = 1, "A terminal event occurred."
                 break
         changes.update(t_events=events.t_events, y_events=events.y_events)
-    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None)
+    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None,
+                   t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
     if t_eval is not None:
         changes["t"], changes["y"] = _restrict(t_eval, t, sol)
     return dataclasses.replace(res, **changes)
@@ -263,6 +264,7 @@ def _zero_length(run):
     return OdeResult(
         t=t, y=ys, nfev=0, nsteps=0, nrejected=0, status=0,
         message="`t_span` has zero length: the result is `y0` at `t0`.", method=run.entry.name,
+        t_stop=run.t0, y_stop=run.y.copy(),
         t_events=ev.t_events if ev is not None else [],
         y_events=ev.y_events if ev is not None else [],
     )
