@@ -121,3 +121,21 @@ def test_a_blow_up_in_few_steps_is_reported_where_it_happens(method, fun, y0):
         k = _first_overflow(1.0, 1.0)
         assert r.nsteps == k - 1 and r.t[-1] == k - 1.0
         assert f"at t = {float(k)!r}" in r.message
+
+
+@pytest.mark.parametrize("method", ode.methods())
+def test_every_method_takes_progress_through_solve(method):
+    second = method in ode.methods("second_order") + ode.methods("adaptive_second_order")
+    fixed = method in ode.methods("fixed") + ode.methods("second_order")
+    kw = {"step": 0.01} if fixed else {"rtol": 1e-6}
+    seen = []
+
+    def progress(t):
+        seen.append(t)
+        return t < 2.0
+
+    r = ode.solve(acc if second else osc, (0.0, 10.0), [1.0, 0.0], method=method,
+                  progress=progress, **kw)
+    assert r.status == 2 and "stopped by the `progress` callback" in r.message
+    assert 2.0 <= r.t_stop < 10.0 and seen[-1] == r.t_stop
+    assert seen == sorted(seen) and len(seen) == r.nsteps
