@@ -154,10 +154,9 @@ def merge_values(params, values):
     return {**{str(k): v for k, v in params.items()}, **values}
 
 
-def compile_events(eqs, events, values, nan_seen):
+def compile_events(eqs, events, values):
     """Callables g(t, y) from `events`: callables kept, sympy expressions (or
-    :class:`Event`) compiled once; the first non-finite value of each is noted in
-    `nan_seen` (index -> (t, value))."""
+    :class:`Event`) compiled once (a non-finite value of one is reported by the solver)."""
     if events is None:
         return None
     items = list(events) if isinstance(events, list | tuple) else [events]
@@ -166,7 +165,7 @@ def compile_events(eqs, events, values, nan_seen):
     n = len(q_s)
     for i, item in enumerate(items):
         if callable(item) and not isinstance(item, sp.Basic):
-            out.append(_EventWatch(item, i, nan_seen))
+            out.append(item)
             continue
         spec = item if isinstance(item, Event) else Event(item)
         expr = xreplace_shared([spec.expr], rule)[0]
@@ -191,26 +190,8 @@ def compile_events(eqs, events, values, nan_seen):
             return float(_f(t, y[:n], y[n:], *_c, *w))
 
         g.terminal, g.direction = spec.terminal, spec.direction
-        out.append(_EventWatch(g, i, nan_seen))
+        out.append(g)
     return out
-
-
-class _EventWatch:
-    """An event function whose nan values are noted (the solver cannot locate a zero of a
-    function that is not a number, and would go on silently)."""
-
-    __slots__ = ("g", "i", "seen", "terminal", "direction")
-
-    def __init__(self, g, i, seen):
-        self.g, self.i, self.seen = g, i, seen
-        self.terminal = getattr(g, "terminal", False)
-        self.direction = getattr(g, "direction", 0.0)
-
-    def __call__(self, t, y):
-        value = self.g(t, y)
-        if not isfinite(value) and self.i not in self.seen:
-            self.seen[self.i] = (float(t), value)
-        return value
 
 
 #: one-step fixed-step methods, which can be run chunk by chunk with the same numbers
@@ -308,10 +289,9 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
     watch = Watch(fun, _labels(eqs.names, second), (t0, t1), progress, second)
-    nan_seen = {}
     chunks = options.pop("chunks", None)
     if chunks is None:
-        options["events"] = compile_events(eqs, events, values, nan_seen)
+        options["events"] = compile_events(eqs, events, values)
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -340,12 +320,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
         message = message + watch.diagnosis()
-    status = None
-    if nan_seen:
-        i, (t_bad, value) = min(nan_seen.items())
-        status = "failed"
-        message = (f"The event function events[{i}] returned {value} at t = {t_bad!r}: its "
-                   f"zeros cannot be located, events may be missing. " + message)
+    status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]

@@ -352,7 +352,8 @@ def solve(
     OdeResult
         ``t``, ``y`` (shape ``(n, len(t))`` or ``(n, len(t), batch)``), counters, ``status``
         (0 end reached, 1 terminal event, -1 numerical failure, with the time and the state in
-        ``message``), ``sol``, ``t_events``, ``y_events``.
+        ``message``, or an event function that returned nan, the motion being kept; 2 stopped
+        early on request), ``t_stop``, ``y_stop``, ``sol``, ``t_events``, ``y_events``.
 
     Raises
     ------
@@ -381,14 +382,16 @@ def solve(
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
     if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
-        return _zero_length(run)
-    _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-    if run.entry.kind in _FIXED:
-        res = _run_fixed(run)
+        res = _zero_length(run)
     else:
-        res = _run_adaptive(run)
+        _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+        res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
     if res.status < 0 and run.y.ndim == 2:
         res = name_failed_member(res, run)
+    failure = run.tracker.failure() if run.tracker is not None else None
+    if failure is not None:  # the motion is kept; the events are not to be trusted
+        res = dataclasses.replace(res, status=min(res.status, -1) if res.status != 2 else 2,
+                                  message=f"{failure} {res.message}")
     return res
 
 

@@ -1,0 +1,38 @@
+"""An event function returning NaN is reported (issue 10): its zeros cannot be located, so the
+run is not called a success, and the message names the event and the time."""
+
+import math
+import re
+
+import numpy as np
+import pytest
+
+from rigidmech import ode
+
+
+def osc(t, y):
+    return np.array([y[1], -y[0]])
+
+
+@pytest.mark.parametrize("method,kw", [("dop853", {}), ("dopri5", {}), ("radau", {}),
+                                       ("adams", {}), ("gbs", {}), ("rk4", {"step": 0.01})])
+def test_an_event_returning_nan_is_a_failure_naming_it(method, kw):
+    def fine(t, y):
+        return y[0]  # zeros at pi/2, 3 pi/2, ...
+
+    def broken(t, y):
+        return math.nan if t > 2.0 else y[0] - 2.0
+
+    r = ode.solve(osc, (0.0, 3.0), [1.0, 0.0], method=method, events=[fine, broken], **kw)
+    assert r.status == -1 and not r.success
+    found = re.search(r"The event function events\[1\] returned nan at t = (\S+?)[:;,]",
+                      r.message)
+    assert found and 2.0 < float(found.group(1)) <= 3.0
+    assert "events may be missing" in r.message
+    assert r.t[-1] == 3.0  # the motion itself is complete
+    np.testing.assert_allclose(r.t_events[0], [math.pi / 2], rtol=1e-5)
+
+
+def test_an_event_returning_nan_at_t0_is_reported_too():
+    r = ode.solve(osc, (0.0, 1.0), [1.0, 0.0], events=lambda t, y: math.nan)
+    assert r.status == -1 and "events[0] returned nan at t = 0.0" in r.message
