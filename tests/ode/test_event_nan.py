@@ -36,3 +36,16 @@ def test_an_event_returning_nan_is_a_failure_naming_it(method, kw):
 def test_an_event_returning_nan_at_t0_is_reported_too():
     r = ode.solve(osc, (0.0, 1.0), [1.0, 0.0], events=lambda t, y: math.nan)
     assert r.status == -1 and "events[0] returned nan at t = 0.0" in r.message
+
+
+@pytest.mark.parametrize("method,kw", [("dop853", {}), ("radau", {}), ("rk4", {"step": 0.1}),
+                                       ("verlet", {"step": 0.1})])
+def test_a_complex_right_hand_side_is_refused_not_truncated(method, kw):
+    from rigidmech._core.errors import ArgumentTypeError
+
+    def fun(t, y):  # sqrt of a negative number: complex, as numpy's emath gives it
+        return np.emath.sqrt(-np.abs(y) - 1.0)  # sqrt(-2) = 1.41421356... j at y0[0] = 1
+
+    with pytest.raises(ArgumentTypeError, match=r"`fun\(t0, y0\)` returned complex values "
+                                                 r"\(component 0: 1\.41421356\d*j\)"):
+        ode.solve(fun, (0.0, 1.0), [1.0, 0.0], method=method, **kw)

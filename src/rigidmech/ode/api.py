@@ -241,6 +241,14 @@ def _check_fun_output(fun, t0, y, kind):
     else:
         arg, want = y.copy(), y.shape
     out = fun(t0, arg)
+    if np.iscomplexobj(out) and np.any(np.imag(out) != 0):  # refused, not truncated
+        flat = np.asarray(out).reshape(-1)
+        k = int(np.argmax(np.imag(flat) != 0))
+        raise ArgumentTypeError(
+            f"`fun(t0, y0)` returned complex values (component {k}: {flat[k]}); the methods "
+            "integrate real equations only (a square root or a logarithm of a negative "
+            "number?)."
+        )
     try:
         got = np.shape(out)
         arr = np.asarray(out, dtype=float)
