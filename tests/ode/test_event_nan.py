@@ -49,3 +49,18 @@ def test_a_complex_right_hand_side_is_refused_not_truncated(method, kw):
     with pytest.raises(ArgumentTypeError, match=r"`fun\(t0, y0\)` returned complex values "
                                                  r"\(component 0: 1\.41421356\d*j\)"):
         ode.solve(fun, (0.0, 1.0), [1.0, 0.0], method=method, **kw)
+
+
+@pytest.mark.parametrize("method", ["dopri5", "dop853", "bs32", "gbs"])
+def test_a_non_finite_right_hand_side_names_its_component(method):
+    # y0' = 1; y1' = 1 while y0 < 1.5, nan beyond: component 1 is the culprit (radau's
+    # Newton iterations spread a nan to every component: not tested here)
+    def f(t, y):
+        return np.array([1.0, 1.0 if y[0] < 1.5 else np.nan])
+
+    r = ode.solve(f, (0.0, 3.0), [0.0, 0.0], method=method, rtol=1e-6)
+    assert r.status == -1
+    found = re.search(r"the derivative f\(t, y\) was nan in component 1 at t = (\S+?)\.( |$)",
+                      r.message)
+    assert found, r.message
+    assert r.t_stop < float(found.group(1)) <= 3.0 and float(found.group(1)) >= 1.5 - 1e-8
