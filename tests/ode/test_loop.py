@@ -91,9 +91,22 @@ def test_progress_must_be_callable():
         ode.solve(osc, (0.0, 1.0), [1.0, 0.0], method="dopri5", progress=3)
 
 
-def test_progress_is_refused_by_methods_not_on_the_loop():
-    with pytest.raises(ArgumentError, match=r"`progress` is not an option of method 'adams'"):
-        ode.solve(osc, (0.0, 1.0), [1.0, 0.0], method="adams", progress=print)
+def test_progress_is_refused_by_methods_that_do_not_take_it():
+    # every built-in method takes it now (adams and the fixed-step ones too): a user's
+    # registered method without the option refuses it
+    from rigidmech.ode import _registry
+
+    def euler(fun, t_span, y0, *, step, max_steps=None):
+        return ode.solve(fun, t_span, y0, method="euler", step=step)
+
+    _registry.register("plain_euler_test", euler, kind="fixed")
+    try:
+        with pytest.raises(ArgumentError, match=r"`progress` is not an option of method "
+                                                r"'plain_euler_test'"):
+            ode.solve(osc, (0.0, 1.0), [1.0, 0.0], method="plain_euler_test", step=0.1,
+                      progress=print)
+    finally:
+        _registry.unregister("plain_euler_test")
 
 
 def test_controller_never_grows_after_a_rejection_and_shrinks_on_nan():

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import inspect
 import math
-import re
 import sys
 import time
 from math import isfinite
@@ -155,10 +154,9 @@ def merge_values(params, values):
     return {**{str(k): v for k, v in params.items()}, **values}
 
 
-def compile_events(eqs, events, values, nan_seen):
+def compile_events(eqs, events, values):
     """Callables g(t, y) from `events`: callables kept, sympy expressions (or
-    :class:`Event`) compiled once; the first non-finite value of each is noted in
-    `nan_seen` (index -> (t, value))."""
+    :class:`Event`) compiled once (a non-finite value of one is reported by the solver)."""
     if events is None:
         return None
     items = list(events) if isinstance(events, list | tuple) else [events]
@@ -167,7 +165,7 @@ def compile_events(eqs, events, values, nan_seen):
     n = len(q_s)
     for i, item in enumerate(items):
         if callable(item) and not isinstance(item, sp.Basic):
-            out.append(_EventWatch(item, i, nan_seen))
+            out.append(item)
             continue
         spec = item if isinstance(item, Event) else Event(item)
         expr = xreplace_shared([spec.expr], rule)[0]
@@ -192,26 +190,8 @@ def compile_events(eqs, events, values, nan_seen):
             return float(_f(t, y[:n], y[n:], *_c, *w))
 
         g.terminal, g.direction = spec.terminal, spec.direction
-        out.append(_EventWatch(g, i, nan_seen))
+        out.append(g)
     return out
-
-
-class _EventWatch:
-    """An event function whose nan values are noted (the solver cannot locate a zero of a
-    function that is not a number, and would go on silently)."""
-
-    __slots__ = ("g", "i", "seen", "terminal", "direction")
-
-    def __init__(self, g, i, seen):
-        self.g, self.i, self.seen = g, i, seen
-        self.terminal = getattr(g, "terminal", False)
-        self.direction = getattr(g, "direction", 0.0)
-
-    def __call__(self, t, y):
-        value = self.g(t, y)
-        if not isfinite(value) and self.i not in self.seen:
-            self.seen[self.i] = (float(t), value)
-        return value
 
 
 #: one-step fixed-step methods, which can be run chunk by chunk with the same numbers
@@ -225,29 +205,24 @@ UNSTABLE_DRIFT = 0.5
 def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
     """A one-step fixed-step run as successive runs of about :data:`CHUNK` steps (a whole
     number of `stride` steps each), keeping every `stride`-th grid point: memory follows the
-    samples, and Ctrl-C keeps the chunks done (the driver's fixed-step runs keep nothing)."""
+    samples, and Ctrl-C keeps the chunks done and the steps of the interrupted one."""
     h = (t1 - t0) / nsteps
     per = stride * max(1, math.ceil(CHUNK / stride))
     ts, ys = [np.array([t0])], [np.asarray(y0, dtype=float)[:, None]]
     y, done, nfev = np.asarray(y0, dtype=float), 0, 0
     status, message = 0, "The integration reached the end of `t_span`."
+    t_stop, y_stop = t1, None
     while done < nsteps:
         k = min(per, nsteps - done)
         ta, tb = t0 + done * h, (t0 + (done + k) * h) if done + k < nsteps else t1
-        try:
-            r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
-                          max_steps=k + 1)
-        except KeyboardInterrupt:
-            status = 2
-            message = (f"The integration was interrupted (KeyboardInterrupt) at t = {ta!r}; "
-                       "the result holds the steps made so far.")
-            break
+        r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
+                      max_steps=k + 1)  # Ctrl-C: status 2, the chunk's steps kept
         nfev += r.nfev
         keep = np.arange(stride, len(r.t), stride)
         ts.append(r.t[keep])
         ys.append(r.y[:, keep])
         if r.status != 0:
-            status, message = r.status, r.message
+            status, message, t_stop, y_stop = r.status, r.message, r.t_stop, r.y_stop
             if len(r.t) and (len(r.t) - 1) % stride:
                 ts.append(r.t[-1:])
                 ys.append(r.y[:, -1:])
@@ -259,7 +234,8 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
         t_all = np.append(t_all, t1)
         ys.append(y[:, None])
     return ode.OdeResult(t=t_all, y=np.concatenate(ys, axis=1), nfev=nfev, nsteps=done,
-                         nrejected=0, status=status, message=message, method=method)
+                         nrejected=0, status=status, message=message, method=method,
+                         t_stop=t_stop, y_stop=y if y_stop is None else y_stop)
 
 
 def _takes(method, option):
@@ -313,10 +289,9 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
     watch = Watch(fun, _labels(eqs.names, second), (t0, t1), progress, second)
-    nan_seen = {}
     chunks = options.pop("chunks", None)
     if chunks is None:
-        options["events"] = compile_events(eqs, events, values, nan_seen)
+        options["events"] = compile_events(eqs, events, values)
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -337,14 +312,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         watch.close()
     elapsed = time.perf_counter() - start
     message = res.message
-    t_stop = None
-    if res.status in (2, -1):  # the driver names the last accepted step's time
-        found = re.search(r"at t = (\S+?)[;,]", res.message)
-        t_stop = float(found.group(1)) if found else float(watch.t)
-    elif res.status == 1 and res.t_events:
-        t_stop = max((float(te[-1]) for te in res.t_events if len(te)), default=None)
-    elif res.status == 0:
-        t_stop = t1
+    t_stop = res.t_stop  # the end, the terminal event or the last accepted step
     if res.status == 2:
         t_end = float(res.t[-1]) if len(res.t) else t0
         who = ("the `progress` callback" if watch.stopped else "Ctrl-C (KeyboardInterrupt)")
@@ -352,12 +320,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
         message = message + watch.diagnosis()
-    status = None
-    if nan_seen:
-        i, (t_bad, value) = min(nan_seen.items())
-        status = "failed"
-        message = (f"The event function events[{i}] returned {value} at t = {t_bad!r}: its "
-                   f"zeros cannot be located, events may be missing. " + message)
+    status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]

@@ -251,8 +251,13 @@ class Recorder:
             message=self.message, method=method, sol=sol,
             t_events=ev.t_events if ev is not None else [],
             y_events=ev.y_events if ev is not None else [],
-            stats=dict(stats or {}),
+            stats=dict(stats or {}), **self.reached(),
         )
+
+    def reached(self):
+        """``t_stop`` and ``y_stop`` of the result: the last accepted step (or event)."""
+        return {"t_stop": float(self.ts[-1]),
+                "y_stop": np.array(self.ys[-1], dtype=float).reshape(self.shape)}
 
 
 class SampleRecorder(Recorder):
@@ -380,4 +385,9 @@ class SampleRecorder(Recorder):
             nrejected=nrejected, status=self.status, message=self.message, method=method,
             t_events=ev.t_events if ev is not None else [],
             y_events=ev.y_events if ev is not None else [], stats=dict(stats or {}),
+            **self.reached(),
         )
+
+    def reached(self):
+        return {"t_stop": float(self._t_prev),
+                "y_stop": np.array(self._y_prev, dtype=float).reshape(self.shape)}

@@ -1,8 +1,10 @@
 """Shared checks and output recording of the fixed-step methods of :mod:`rigidmech.ode`.
 
-Used by :mod:`~rigidmech.ode.multistep` and :mod:`~rigidmech.ode.geometric`: validation of
-``t_span``, ``y0`` and ``step``, the uniform grid, thinning of the output (``save_every``) and the
-assembly of the :class:`~rigidmech.ode.OdeResult` with an optional cubic Hermite dense output.
+Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep` and
+:mod:`~rigidmech.ode.geometric`: validation of ``t_span``, ``y0`` and ``step``, the uniform
+grid, the one fixed-step loop (:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of
+the output (``save_every``) and the assembly of the :class:`~rigidmech.ode.OdeResult` with an
+optional cubic Hermite dense output.
 """
 
 from __future__ import annotations
@@ -14,11 +16,10 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from ._dense import DenseSolution, hermite_coefficients
+from ._driver import fail_message
 from ._result import OdeResult
 
-__all__ = ["check_fixed", "FixedRecorder"]
-
-_CHECK_EVERY = 32  # steps between two finiteness checks of the state
+__all__ = ["check_fixed", "FixedRecorder", "fixed_loop"]
 
 
 def check_fixed(t_span, y0, step, max_steps, save_every, *, even=False):
@@ -88,11 +89,13 @@ class FixedRecorder:
 
     States are kept every `save_every` steps and at the last step; with `dense` the derivative
     is kept too, and the result carries a cubic Hermite ``sol(t)`` through the kept points.
+    The states are kept as given (fresh arrays, or lists of floats), in the flat or the user
+    shape.
     """
 
     __slots__ = ("ts", "ys", "fs", "dense", "save_every", "status", "message", "shape")
 
-    def __init__(self, t0, y0, f0, save_every, dense):
+    def __init__(self, t0, y0, f0, save_every, dense, shape=None):
         self.ts = [t0]
         self.ys = [y0.copy()]
         self.dense = bool(dense)
@@ -100,34 +103,19 @@ class FixedRecorder:
         self.save_every = save_every
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
-        self.shape = y0.shape
-
-    def wants(self, i, nsteps):
-        """Whether step number `i` (1-based) is recorded."""
-        return i % self.save_every == 0 or i == nsteps
+        self.shape = y0.shape if shape is None else shape
 
     def add(self, t, y, f=None):
-        """Record the state `y` (copied) at `t`, with its derivative `f` if dense."""
+        """Record the state `y` (a fresh array or list, kept) at `t`, with `f` if dense."""
         self.ts.append(t)
-        self.ys.append(np.array(y, dtype=float))
+        self.ys.append(y)
         if self.dense:
             self.fs.append(np.array(f, dtype=float))
-
-    def check_finite(self, i, t, y):
-        """Every few steps, stop with status -1 if the state is not finite; True to stop."""
-        if i % _CHECK_EVERY:
-            return False
-        if np.all(np.isfinite(y)):
-            return False
-        state = np.array2string(np.asarray(y), precision=6, threshold=12)
-        self.status = -1
-        self.message = f"The state became non-finite at t = {t!r}; state y = {state}."
-        return True
 
     def result(self, method, nfev, nsteps, stats=None):
         """Build the result: ``y`` of shape (n, m) or (n, m, batch), fresh arrays."""
         t = np.array(self.ts, dtype=float)
-        Y = np.array(self.ys, dtype=float)  # (m, n[, batch])
+        Y = np.array(self.ys, dtype=float).reshape((len(t),) + self.shape)
         y = np.ascontiguousarray(np.moveaxis(Y, 0, 1))
         sol = None
         if self.dense and len(t) > 1:
@@ -142,5 +130,87 @@ class FixedRecorder:
         return OdeResult(
             t=t, y=y, nfev=int(nfev), nsteps=int(nsteps),
             nrejected=0, status=self.status, message=self.message, method=method, sol=sol,
-            stats=dict(stats or {}),
+            stats=dict(stats or {}), t_stop=float(t[-1]), y_stop=Y[-1].copy(),
         )
+
+
+def _array_finite(y):
+    return math.isfinite(y.sum())  # a sum is nan or inf if one term is
+
+
+def _small_finite(y):
+    return math.isfinite(sum(y.tolist()))  # faster than y.sum() for a few components
+
+
+def _list_finite(y):
+    return math.isfinite(sum(y))
+
+
+def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=None):
+    """The one loop of the fixed-step methods: `nsteps` steps of size `h` from `t0`.
+
+    ``advance(t, h) -> (y, f)`` makes the step from ``t = t0 + (i - 1) h`` (the method keeps
+    its own history) and returns the new state (a fresh array, or a list of floats) and its
+    derivative (None unless ``rec.dense``). The loop owns, once for every fixed-step method:
+    recording (every ``rec.save_every`` steps and the last), the finiteness of the state at
+    every step (status -1 at the first non-finite state: the last finite one ends the
+    result), the ``progress(t)`` callback after every step (False stops the run) and Ctrl-C
+    (status 2; both keep everything computed so far, the last step made included). The time
+    of step ``i`` is ``t0 + i h``; the last one is `t1` if given.
+
+    `finite(y)` defaults to a check of the sum of an array. Returns the number of steps
+    made.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> rec = FixedRecorder(0.0, np.array([1.0]), None, 1, False)
+    >>> fixed_loop(lambda t, h: (np.array([2.0 ** (t + h)]), None), rec, 0.0, 0.5, 2)
+    2
+    >>> rec.ts, [float(v[0]) for v in rec.ys]
+    ([0.0, 0.5, 1.0], [1.0, 1.4142135623730951, 2.0])
+    """
+    if finite is None:
+        y0 = rec.ys[0]
+        finite = _small_finite if y0.ndim == 1 and y0.size <= 32 else _array_finite
+    every, dense = rec.save_every, rec.dense
+    ts_append, ys_append = rec.ts.append, rec.ys.append
+    t_prev, y_last, f_last = t0, None, None  # the last step made
+    i = 0
+    try:
+        for i in range(1, nsteps + 1):
+            y, f = advance(t0 + (i - 1) * h, h)
+            t = t1 if i == nsteps and t1 is not None else t0 + i * h
+            if not finite(y):
+                _keep(rec, t_prev, y_last, f_last)
+                bad = y if isinstance(y, np.ndarray) else np.array(y, dtype=float)
+                rec.status = -1
+                rec.message = fail_message("The state became non-finite", t, bad, rec.shape)
+                return i - 1
+            if every == 1 or i % every == 0 or i == nsteps:
+                if dense:
+                    rec.add(t, y, f)
+                else:
+                    ts_append(t)
+                    ys_append(y)
+            t_prev, y_last, f_last = t, y, f
+            if progress is not None and progress(t) is False:
+                _keep(rec, t, y, f)
+                _interrupt(rec, "The integration was stopped by the `progress` callback", t)
+                return i
+    except KeyboardInterrupt:  # during step i: steps up to i - 1 are kept
+        _keep(rec, t_prev, y_last, f_last)
+        _interrupt(rec, "The integration was interrupted (KeyboardInterrupt)", t_prev)
+        return i - 1
+    return nsteps
+
+
+def _keep(rec, t, y, f):
+    """Record the last step made, if it was not recorded (thinned output)."""
+    if rec.ts[-1] != t and y is not None:
+        rec.add(t, y, f)
+
+
+def _interrupt(rec, reason, t):
+    rec.status = 2
+    rec.message = f"{reason} at t = {float(t)!r}; the result holds the steps made so far."

@@ -186,6 +186,22 @@ def _underflow_reason(err):
             "step down to the resolution of t (step size underflow), from the state")
 
 
+def _culprit(step, t_new):
+    """A sentence naming the first non-finite component of the last attempted step's
+    derivative (else of its state), or ''."""
+    for what, values in (("the derivative f(t, y)", step.f), ("the state", step.y)):
+        try:
+            flat = np.asarray(values, dtype=float).reshape(-1)
+        except (TypeError, ValueError):
+            continue
+        bad = ~np.isfinite(flat)
+        if bad.any():
+            k = int(np.argmax(bad))
+            return (f" In the last attempted step, {what} was {flat[k]} in component {k} at "
+                    f"t = {float(t_new)!r}.")
+    return ""
+
+
 class Run(NamedTuple):
     """The settings of one run of :func:`integrate` (already validated by ``solve``)."""
 
@@ -298,6 +314,7 @@ class _Loop:
                     nrej += 1
                 if not accepted:
                     rec.fail(_underflow_reason(err), t, y)
+                    rec.message += _culprit(step, t_new)
                     return
                 if not (isfinite(sum(y_new)) if finite is None else finite(step)):
                     extra = 1
@@ -305,6 +322,7 @@ class _Loop:
                     rec.fail("The right-hand side returned non-finite values (nan or inf) at "
                              "the new state" if state_ok else "The state became non-finite",
                              t_new, y_new)
+                    rec.message += _culprit(step, t_new)
                     return
                 naccpt += 1
                 if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline

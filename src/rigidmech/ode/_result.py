@@ -46,6 +46,13 @@ class OdeResult:
         For each event function, the states where it fired.
     stats : dict
         Method-specific extra counters (``njev``, ``nlu``, order history, ...).
+    t_stop : float or None
+        The time the integration reached: the end of ``t_span``, the time of a terminal
+        event, or, after a failure or an early stop, the last step accepted (the time the
+        message names, except after a non-finite state, named at the step that produced it).
+        ``t[-1]`` may be earlier when ``t_eval`` is given.
+    y_stop : ndarray or None
+        The state at ``t_stop`` (shape of ``y0``).
 
     Examples
     --------
@@ -68,6 +75,8 @@ class OdeResult:
     t_events: list = field(default_factory=list)
     y_events: list = field(default_factory=list)
     stats: dict = field(default_factory=dict)
+    t_stop: float | None = None
+    y_stop: np.ndarray | None = None
 
     @property
     def success(self) -> bool:

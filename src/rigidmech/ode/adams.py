@@ -73,6 +73,7 @@ from rigidmech._core.errors import ArgumentError
 from . import _registry
 from ._driver import Recorder, flat_tolerance
 from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
+from ._loop import check_progress
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
 from .multistep import adams_gamma
@@ -512,7 +513,7 @@ def _lazy_dense(y_old, y_new, D, k, h):
 
 def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
           max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-          max_order=MAX_ORDER, nstiff=1000):
+          max_order=MAX_ORDER, nstiff=1000, progress=None):
     r"""Adaptive Adams-Bashforth-Moulton (PECE), variable order 1-12 and step, dense output.
 
     Called through :func:`rigidmech.ode.solve` (``method="adams"``), which validates the
@@ -559,10 +560,12 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     """
     max_order = _check_max_order(max_order)
     nstiff = _check_nstiff(nstiff)
+    progress = check_progress(progress)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return _integrate(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                           max_step=max_step, max_steps=max_steps, dense_output=dense_output,
-                          events=events, max_order=max_order, nstiff=nstiff)
+                          events=events, max_order=max_order, nstiff=nstiff,
+                          progress=progress)
 
 
 #: cache of re-sampling matrices for the usual ratios: 0.25, 0.5 ... 0.9, 2 (the ratios of a
@@ -628,8 +631,16 @@ def _next_ratio(k, erk, phase1, reach, h_abs, max_step):
     return max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
 
 
+def _stopped_by(progress, rec, t):
+    """Call ``progress(t)`` after an accepted step; True (and status 2) if it says stop."""
+    if progress(t) is False:
+        rec.interrupt("The integration was stopped by the `progress` callback", t)
+        return True
+    return False
+
+
 def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, max_order, nstiff):
+               dense_output, events, max_order, nstiff, progress=None):
     t0, t_end = (float(v) for v in t_span)
     direction = 1.0 if t_end > t0 else -1.0
     shape = y0.shape
@@ -725,101 +736,110 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
                 k + 1, N)
         return out.reshape(-1).tolist() if floats else out
 
-    while direction * (t - t_end) < 0:
-        if naccpt >= max_steps:
-            rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
-                     t, np.array(y))
-            break
-        single = phase1 or want_dense
-        if direction * (t + h - t_end) >= 0:  # last step: end exactly at t_end
-            if direction * (t + h - t_end) > 0:
-                D = change(D, k, (t_end - t) / h)
-                n_resample += 1
-                h = t_end - t
-                ns = 0
-            single = True
-        y_old = y
-        ifail = 0
-        while True:
-            ah = abs(h)
-            if ah <= tiny * abs(t) or ah == 0.0 or ah != ah:  # step size underflow (or nan)
-                code = None
+    try:
+        while direction * (t - t_end) < 0:
+            if naccpt >= max_steps:
+                rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
+                         t, np.array(y))
                 break
-            if floats:
-                out = run(fun, t, h, y, D, k, ns, 1 if single else max_steps - naccpt,
-                          far if single else t_end, single, max_order, rtol, atols, max_step,
-                          ts_append, ys_append, hist_append)
-            else:
-                out = _array_run(k, call, norm, t, h, y, D, ns, rtol, atol_arr, ts_append,
-                                 ys_append, hist_append)
-            code, t, y, D, k, ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2, erkp1, hrho = out
-            n_order += nord
-            kmax_used = max(kmax_used, kmaxu)
-            naccpt += nacc
-            nfev += 2 * nacc
-            if nacc:
-                ifail = 0
-                if len(history) > 2 * HISTORY:
-                    del history[:-HISTORY]
-            knew = _lower_order(k, erk, erkm1, erkm2)
-            if code != RUN_REJECTED:
-                break
-            # rejected: halve the step (from the third failure on, at order 1)
-            nfev += 1
-            nrej += 1
-            phase1 = False
-            ifail += 1
-            ratio = 0.5
-            if ifail > 3 and 0.5 < 0.25 * erk:
-                ratio = math.sqrt(0.5 / erk)
-            if ifail >= 3:
-                knew = 1
-            if not math.isfinite(err):
-                ratio, knew = 0.25, 1
-            k = knew
-            D = change(D, k, ratio)
-            n_resample += 1
-            h = h * ratio
-            ns = 0
+            single = phase1 or want_dense or progress is not None  # one step per run
+            if direction * (t + h - t_end) >= 0:  # last step: end exactly at t_end
+                if direction * (t + h - t_end) > 0:
+                    D = change(D, k, (t_end - t) / h)
+                    n_resample += 1
+                    h = t_end - t
+                    ns = 0
+                single = True
             y_old = y
-        if code is None:
-            rec.fail("The step size fell below the resolution of t (step size underflow)",
-                     t, np.array(y))
-            break
-        if code == RUN_NONFINITE:
-            nfev += 2
-            rec.fail("The state became non-finite", t, np.array(y))
-            break
-        if code == RUN_STOPPED:  # before the last step, or at max_steps: see the loop's top
-            continue
-        # RUN_DECIDE: the last accepted step asks for the order and spacing of the next
-        if nstiff and not phase1 and erk >= STIFF_MIN_ESTIMATE:
-            # stiffness: h rho near the stability border at a low order (not in the first
-            # phase, nor with an error estimate so small that e is mostly rounding)
-            iasti, nonsti, warned = stiffness_count(
-                "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, hrho, t,
-                iasti, nonsti, warned)
-        if want_dense:  # a single step from (t - h, y_old)
-            y_rec = np.array(y) if floats else y
-            coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)
-            if rec.accept(t, y_rec, coeffs):
+            ifail = 0
+            while True:
+                ah = abs(h)
+                if ah <= tiny * abs(t) or ah == 0.0 or ah != ah:  # step size underflow (or nan)
+                    code = None
+                    break
+                if floats:
+                    out = run(fun, t, h, y, D, k, ns, 1 if single else max_steps - naccpt,
+                              far if single else t_end, single, max_order, rtol, atols, max_step,
+                              ts_append, ys_append, hist_append)
+                else:
+                    out = _array_run(k, call, norm, t, h, y, D, ns, rtol, atol_arr, ts_append,
+                                     ys_append, hist_append)
+                code, t, y, D, k, ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2, erkp1, hrho = out
+                n_order += nord
+                kmax_used = max(kmax_used, kmaxu)
+                naccpt += nacc
+                nfev += 2 * nacc
+                if nacc:
+                    ifail = 0
+                    if len(history) > 2 * HISTORY:
+                        del history[:-HISTORY]
+                knew = _lower_order(k, erk, erkm1, erkm2)
+                if code != RUN_REJECTED:
+                    break
+                # rejected: halve the step (from the third failure on, at order 1)
+                nfev += 1
+                nrej += 1
+                phase1 = False
+                ifail += 1
+                ratio = 0.5
+                if ifail > 3 and 0.5 < 0.25 * erk:
+                    ratio = math.sqrt(0.5 / erk)
+                if ifail >= 3:
+                    knew = 1
+                if not math.isfinite(err):
+                    ratio, knew = 0.25, 1
+                k = knew
+                D = change(D, k, ratio)
+                n_resample += 1
+                h = h * ratio
+                ns = 0
+                y_old = y
+            if code is None:
+                rec.fail("The step size fell below the resolution of t (step size underflow)",
+                         t, np.array(y))
                 break
-        k_old = k
-        k, erk, phase1 = _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order)
-        if k > k_old:  # one more difference, unknown
-            n_order += 1
-            kmax_used = max(kmax_used, k)
-            D = D + [0.0] * N if floats else np.vstack([D, np.zeros((1, N))])
-        elif k < k_old:
-            n_order += 1
-            D = D[: (k + 2) * N] if floats else D[: k + 2]
-        ratio = _next_ratio(k, erk, phase1, abs(t - rec.ts[-min(len(history), HISTORY)]),
-                            abs(h), max_step)
-        if ratio != 1.0:
-            D = change(D, k, ratio)
-            n_resample += 1
-            h = h * ratio
-            ns = 0
+            if code == RUN_NONFINITE:
+                nfev += 2
+                rec.fail("The state became non-finite", t, np.array(y))
+                break
+            if code == RUN_STOPPED:  # before the last step, or at max_steps: see the loop's top
+                if progress is not None and _stopped_by(progress, rec, t):
+                    break
+                continue
+            # RUN_DECIDE: the last accepted step asks for the order and spacing of the next
+            if nstiff and not phase1 and erk >= STIFF_MIN_ESTIMATE:
+                # stiffness: h rho near the stability border at a low order (not in the first
+                # phase, nor with an error estimate so small that e is mostly rounding)
+                iasti, nonsti, warned = stiffness_count(
+                    "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, hrho, t,
+                    iasti, nonsti, warned)
+            if want_dense:  # a single step from (t - h, y_old)
+                y_rec = np.array(y) if floats else y
+                coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)
+                if rec.accept(t, y_rec, coeffs):
+                    break
+            if progress is not None and _stopped_by(progress, rec, t):
+                break
+            k_old = k
+            k, erk, phase1 = _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order)
+            if k > k_old:  # one more difference, unknown
+                n_order += 1
+                kmax_used = max(kmax_used, k)
+                D = D + [0.0] * N if floats else np.vstack([D, np.zeros((1, N))])
+            elif k < k_old:
+                n_order += 1
+                D = D[: (k + 2) * N] if floats else D[: k + 2]
+            ratio = _next_ratio(k, erk, phase1, abs(t - rec.ts[-min(len(history), HISTORY)]),
+                                abs(h), max_step)
+            if ratio != 1.0:
+                D = change(D, k, ratio)
+                n_resample += 1
+                h = h * ratio
+                ns = 0
+    except KeyboardInterrupt:  # everything computed so far is kept
+        m = min(len(rec.ts), len(rec.ys))  # a run may have been stopped between two appends
+        del rec.ts[m:], rec.ys[m:]
+        rec.interrupt("The integration was interrupted (KeyboardInterrupt)", rec.ts[-1])
     stats = {"order_changes": n_order, "step_changes": n_resample, "max_order_used": kmax_used}
     return rec.result("adams", nfev, nrej, stats)
 

@@ -87,7 +87,7 @@ def _check_options(entry, options):
     params = inspect.signature(entry.function).parameters
     if any(p.kind is p.VAR_KEYWORD for p in params.values()):
         return
-    known = sorted(set(params) - _COMMON - {"fun", "t_span", "y0"})
+    known = sorted(set(params) - _COMMON - {"fun", "t_span", "y0", "progress"})
     for key in options:
         if key not in params or key in _COMMON:
             raise ArgumentError(
@@ -222,7 +222,8 @@ def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
                 status, message = 1, "A terminal event occurred."
                 break
         changes.update(t_events=events.t_events, y_events=events.y_events)
-    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None)
+    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None,
+                   t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
     if t_eval is not None:
         changes["t"], changes["y"] = _restrict(t_eval, t, sol)
     return dataclasses.replace(res, **changes)
@@ -240,6 +241,14 @@ def _check_fun_output(fun, t0, y, kind):
     else:
         arg, want = y.copy(), y.shape
     out = fun(t0, arg)
+    if np.iscomplexobj(out) and np.any(np.imag(out) != 0):  # refused, not truncated
+        flat = np.asarray(out).reshape(-1)
+        k = int(np.argmax(np.imag(flat) != 0))
+        raise ArgumentTypeError(
+            f"`fun(t0, y0)` returned complex values (component {k}: {flat[k]}); the methods "
+            "integrate real equations only (a square root or a logarithm of a negative "
+            "number?)."
+        )
     try:
         got = np.shape(out)
         arr = np.asarray(out, dtype=float)
@@ -263,6 +272,7 @@ def _zero_length(run):
     return OdeResult(
         t=t, y=ys, nfev=0, nsteps=0, nrejected=0, status=0,
         message="`t_span` has zero length: the result is `y0` at `t0`.", method=run.entry.name,
+        t_stop=run.t0, y_stop=run.y.copy(),
         t_events=ev.t_events if ev is not None else [],
         y_events=ev.y_events if ev is not None else [],
     )
@@ -317,8 +327,9 @@ def solve(
         One of :func:`methods` (default ``"dop853"``); ``methods("fixed")`` need `step`. A
         :class:`~rigidmech.ode.tableaux.ButcherTableau` runs as a fixed-step method.
     step : float, optional
-        Step size of a fixed-step method (required by those, refused by the others). It is
-        reduced slightly, if needed, so that a whole number of equal steps spans `t_span`.
+        Step size of a fixed-step method (required by those, refused by the others), at most
+        ``|t1 - t0|``. It is reduced slightly, if needed, so that a whole number of equal
+        steps spans `t_span`.
     rtol, atol : float, or array of shape (n,) for `atol`
         Tolerances of the adaptive methods: local error kept below ``atol + rtol |y|`` in
         Hairer's RMS norm. Ignored by fixed-step methods.
@@ -339,14 +350,18 @@ def solve(
         Extra arguments passed to `fun`.
     **options
         Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
-        ``"radau"``), passed on to it; an option the method does not take is refused.
+        ``"radau"``), passed on to it; an option the method does not take is refused. Every
+        built-in method takes ``progress``: a callable ``progress(t)`` called after every
+        step (a returned False stops the run with status 2 and the steps made so far, as
+        Ctrl-C does for every built-in method).
 
     Returns
     -------
     OdeResult
         ``t``, ``y`` (shape ``(n, len(t))`` or ``(n, len(t), batch)``), counters, ``status``
         (0 end reached, 1 terminal event, -1 numerical failure, with the time and the state in
-        ``message``), ``sol``, ``t_events``, ``y_events``.
+        ``message``, or an event function that returned nan, the motion being kept; 2 stopped
+        early on request), ``t_stop``, ``y_stop``, ``sol``, ``t_events``, ``y_events``.
 
     Raises
     ------
@@ -375,14 +390,16 @@ def solve(
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
     if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
-        return _zero_length(run)
-    _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-    if run.entry.kind in _FIXED:
-        res = _run_fixed(run)
+        res = _zero_length(run)
     else:
-        res = _run_adaptive(run)
+        _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+        res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
     if res.status < 0 and run.y.ndim == 2:
         res = name_failed_member(res, run)
+    failure = run.tracker.failure() if run.tracker is not None else None
+    if failure is not None:  # the motion is kept; the events are not to be trusted
+        res = dataclasses.replace(res, status=min(res.status, -1) if res.status != 2 else 2,
+                                  message=f"{failure} {res.message}")
     return res
 
 
@@ -479,6 +496,9 @@ def _check_fixed_step(entry, step, t0, t1, max_steps):
     h = _float("step", step)
     if not (math.isfinite(h) and h > 0):
         raise ArgumentError(f"`step` must be a finite number > 0; got {h}.")
+    if t0 != t1 and h > abs(t1 - t0):
+        raise ArgumentError(f"`step` = {h!r} exceeds the time span |t1 - t0| = "
+                            f"{abs(t1 - t0)!r}: no step would be of the size asked for.")
     nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
     if nsteps > max_steps:
         raise ArgumentError(

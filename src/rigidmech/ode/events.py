@@ -22,6 +22,7 @@ that of the dense output.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -126,6 +127,7 @@ class EventTracker:
                 )
             self.terminal.append(count)
             self.direction.append(float(getattr(g, "direction", 0.0)))
+        self.nan = None  # (index, t, value) of the first non-finite value of an event function
         self.g = np.array([self._call(i, t0, y0) for i in range(len(self.functions))])
         self.times: list[list[float]] = [[] for _ in self.functions]
         self.states: list[list[np.ndarray]] = [[] for _ in self.functions]
@@ -136,11 +138,36 @@ class EventTracker:
     def _call(self, i, t, y):
         v = self.functions[i](t, y)
         try:
-            return float(v)
+            value = float(v)
         except (TypeError, ValueError):
             raise ArgumentTypeError(
                 f"event function `events[{i}]` must return a real scalar; got {v!r}."
             ) from None
+        if not math.isfinite(value) and self.nan is None:  # noted, see :meth:`failure`
+            self.nan = (i, float(t), value)
+        return value
+
+    def failure(self):
+        """A sentence naming the first event function that returned nan (or an infinity), and
+        where, or None.
+
+        Its zeros cannot be located there (a nan has no sign): :func:`~rigidmech.ode.solve`
+        then reports the run as failed (status -1), the motion computed being kept.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> tr = EventTracker(lambda t, y: np.nan if t > 0.5 else 1.0, 0.0, np.array([0.0]))
+        >>> tr.check(0.0, 1.0, np.array([1.0]), lambda t: np.array([t]))
+        False
+        >>> tr.failure()[:50]
+        'The event function events[0] returned nan at t = 1'
+        """
+        if self.nan is None:
+            return None
+        i, t, value = self.nan
+        return (f"The event function events[{i}] returned {value} at t = {t!r}: its zeros "
+                "cannot be located, events may be missing.")
 
     #: Sub-intervals of a step on which the event functions are sampled (on the interpolant),
     #: so that two zeros inside one step (``g`` negative at both ends) are seen.

@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._fixed import FixedRecorder, check_fixed
+from ._fixed import FixedRecorder, check_fixed, fixed_loop
+from ._loop import check_progress
 from ._registry import register
 
 __all__ = [
@@ -55,7 +56,7 @@ COMPOSITIONS["yoshida6"] = (*_W6, 1.0 - 2.0 * sum(_W6), *_W6[::-1])
 
 
 def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_every=1,
-            dense_output=False, method="compose"):
+            dense_output=False, method="compose", progress=None):
     r"""Symmetric composition of Stormer-Verlet steps with the given `weights`.
 
     Parameters
@@ -78,6 +79,9 @@ def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_eve
         Attach a cubic Hermite interpolant ``sol(t)`` through the kept states.
     method : str
         Name recorded in the result.
+    progress : callable, optional
+        ``progress(t)`` after every step; returning False stops the run (status 2, as
+        Ctrl-C does), with everything computed so far kept.
 
     Returns
     -------
@@ -121,29 +125,28 @@ def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_eve
     kick_in = 0.5 * hw[0]
     kicks = [0.5 * (hw[i] + hw[i + 1]) for i in range(len(hw) - 1)] + [0.5 * hw[-1]]
     a = np.array(acceleration(t0, q), dtype=float)
-    nfev = 1
     rec = FixedRecorder(t0, y, np.concatenate([v, a]), save_every, dense_output)
-    t = t0
+    box = [q, v, a]
+    dense = rec.dense
+    nfev = [1]
+
+    def advance(t, h):
+        q, v, a = box
+        v = v + kick_in * a
+        tau = t
+        for w_h, k in zip(hw, kicks, strict=True):
+            q = q + w_h * v
+            tau += w_h
+            a = acceleration(tau, q)
+            v = v + k * a
+        box[:] = q, v, a
+        nfev[0] += len(hw)
+        return np.concatenate([q, v]), np.concatenate([v, a]) if dense else None
+
     # overflow to inf/nan is reported in the result (status -1), not raised as a warning
     with np.errstate(over="ignore", invalid="ignore"):
-        for i in range(1, nsteps + 1):
-            v = v + kick_in * a
-            tau = t0 + (i - 1) * h
-            for w_h, k in zip(hw, kicks, strict=True):
-                q = q + w_h * v
-                tau += w_h
-                a = acceleration(tau, q)
-                v = v + k * a
-            nfev += len(hw)
-            t = t0 + i * h
-            if rec.wants(i, nsteps):
-                rec.add(t, np.concatenate([q, v]), np.concatenate([v, a]) if rec.dense else None)
-            if rec.check_finite(i, t, q):
-                if rec.ts[-1] != t:
-                    fa = np.concatenate([v, a]) if rec.dense else None
-                    rec.add(t, np.concatenate([q, v]), fa)
-                break
-    return rec.result(method, nfev, i, stats={"step": abs(h), "stages": len(hw)})
+        done = fixed_loop(advance, rec, t0, h, nsteps, progress=check_progress(progress))
+    return rec.result(method, nfev[0], done, stats={"step": abs(h), "stages": len(hw)})
 
 
 def verlet(acceleration, t_span, y0, *, step, **options):

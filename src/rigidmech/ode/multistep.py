@@ -30,7 +30,8 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import tableaux
-from ._fixed import FixedRecorder, check_fixed
+from ._fixed import FixedRecorder, check_fixed, fixed_loop
+from ._loop import check_progress
 from ._registry import register
 from .runge_kutta import integrate_fixed
 
@@ -183,51 +184,52 @@ def _combine(coeffs, fs, h):
     return h * acc
 
 
-def _run(fun, t_span, y0, step, order, corrector, max_steps, save_every, dense_output, name):
+def _run(fun, t_span, y0, step, order, corrector, max_steps, save_every, dense_output, name,
+         progress=None):
     if isinstance(order, bool) or order not in _AB:
         raise ArgumentError(f"`order` must be an integer in 1..{_MAX_ORDER}; got {order!r}.")
+    progress = check_progress(progress)
     t0, h, nsteps, y, save_every = check_fixed(t_span, y0, step, max_steps, save_every)
     beta = _AB[order]
     beta_c = _AM[order] if corrector else None
     f = np.array(fun(t0, y), dtype=float)
-    nfev = 1
     rec = FixedRecorder(t0, y, f, save_every, dense_output)
-    history = [f]  # newest first
-    i = 0
+    # state: the last y, the derivatives newest first, the RK4 starting states, nfev
+    box = {"y": y, "history": [f], "starts": [], "i": 0, "nfev": 1}
+
+    def advance(t, h):
+        i = box["i"] = box["i"] + 1
+        y, history = box["y"], box["history"]
+        t_new = t + h
+        if i < order:  # starting steps (26.3.1): Runge-Kutta 4
+            if i == 1:
+                box["starts"], n_start = _rk4_start(fun, t, y, h, min(order, nsteps + 1))
+                box["nfev"] += n_start
+            y = box["starts"][i - 1]
+        else:
+            y_pred = y + _combine(beta, history, h)
+            if corrector:
+                f_pred = np.array(fun(t_new, y_pred), dtype=float)
+                box["nfev"] += 1
+                y = y + h * beta_c[0] * f_pred + _combine(beta_c[1:], history, h)
+            else:
+                y = y_pred
+        f = np.array(fun(t_new, y), dtype=float)
+        box["nfev"] += 1
+        history.insert(0, f)
+        if len(history) > order:
+            history.pop()
+        box["y"] = y
+        return y, f
+
     # overflow to inf/nan is reported in the result (status -1), not raised as a warning
     with np.errstate(over="ignore", invalid="ignore"):
-        for i in range(1, nsteps + 1):
-            t = t0 + (i - 1) * h
-            t_new = t0 + i * h
-            if i < order:  # starting steps (26.3.1): Runge-Kutta 4
-                if i == 1:
-                    starts, n_start = _rk4_start(fun, t, y, h, min(order, nsteps + 1))
-                    nfev += n_start
-                y = starts[i - 1]
-            else:
-                y_pred = y + _combine(beta, history, h)
-                if corrector:
-                    f_pred = np.array(fun(t_new, y_pred), dtype=float)
-                    nfev += 1
-                    y = y + h * beta_c[0] * f_pred + _combine(beta_c[1:], history, h)
-                else:
-                    y = y_pred
-            f = np.array(fun(t_new, y), dtype=float)
-            nfev += 1
-            history.insert(0, f)
-            if len(history) > order:
-                history.pop()
-            if rec.wants(i, nsteps):
-                rec.add(t_new, y, f)
-            if rec.check_finite(i, t_new, y):
-                if rec.ts[-1] != t_new:
-                    rec.add(t_new, y, f)
-                break
-    return rec.result(name, nfev, i, stats={"step": abs(h), "order": order})
+        done = fixed_loop(advance, rec, t0, h, nsteps, progress=progress)
+    return rec.result(name, box["nfev"], done, stats={"step": abs(h), "order": order})
 
 
 def adams_bashforth(fun, t_span, y0, *, step, order=4, max_steps=None, save_every=1,
-                    dense_output=False):
+                    dense_output=False, progress=None):
     r"""Adams-Bashforth method with `order` steps, started by Runge-Kutta 4 (book, 26.3.2).
 
     Parameters
@@ -248,6 +250,9 @@ def adams_bashforth(fun, t_span, y0, *, step, order=4, max_steps=None, save_ever
         Keep the state only every `save_every` steps (and at the end).
     dense_output : bool
         Attach a cubic Hermite interpolant ``sol(t)``.
+    progress : callable, optional
+        ``progress(t)`` after every step; returning False stops the run (status 2, as
+        Ctrl-C does), with everything computed so far kept.
 
     Returns
     -------
@@ -277,11 +282,11 @@ def adams_bashforth(fun, t_span, y0, *, step, order=4, max_steps=None, save_ever
     (True, 113)
     """
     return _run(fun, t_span, y0, step, order, False, max_steps, save_every, dense_output,
-                f"ab{order}")
+                f"ab{order}", progress)
 
 
 def adams_bashforth_moulton(fun, t_span, y0, *, step, order=4, max_steps=None, save_every=1,
-                            dense_output=False):
+                            dense_output=False, progress=None):
     r"""Adams-Bashforth-Moulton predictor-corrector of order `order` in PECE mode (26.3.2-4).
 
     Parameters are those of :func:`adams_bashforth`; `order` is 2 to 5.
@@ -322,7 +327,7 @@ def adams_bashforth_moulton(fun, t_span, y0, *, step, order=4, max_steps=None, s
     if isinstance(order, bool) or order not in range(2, _MAX_ORDER + 1):
         raise ArgumentError(f"`order` must be an integer in 2..{_MAX_ORDER}; got {order!r}.")
     return _run(fun, t_span, y0, step, order, True, max_steps, save_every, dense_output,
-                f"abm{order}")
+                f"abm{order}", progress)
 
 
 def _make(fn, order):

@@ -40,7 +40,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from . import _rkn12_coefficients as _rkn12
 from ._driver import Recorder, Stops
 from ._floatpath import make_rkn_stepper
-from ._loop import Capabilities, Run, StepResult, integrate
+from ._loop import Capabilities, Run, StepResult, check_progress, integrate
 from ._registry import register
 from .api import _check_t_span, _check_y0, solve
 from .events import EventTracker
@@ -254,7 +254,7 @@ def _dense_coeffs(h, q0, v0, a0, q1, v1, a1):
 
 
 def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-         dense_output, events, t_eval=None):
+         dense_output, events, t_eval=None, progress=None):
     t0, t1, y = _check_common(fun, t_span, y0)
     if t0 == t1:  # nothing to integrate: y0, as solve returns it
         return solve(fun, (t0, t1), y, method=pair.name, max_steps=max_steps)
@@ -280,7 +280,7 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
     if first_step is not None:
         first_step = min(abs(float(first_step)), abs(t1 - t0), max_step)
     run = Run(first_order, (t0, t1), y, rtol, at, first_step, max_step, max_steps,
-              bool(dense_output), events, 0, "i", None,
+              bool(dense_output), events, 0, "i", check_progress(progress),
               Stops(t_eval, (t0, t1)) if t_eval is not None else None)
     stepper = _RknStepper(pair, fun, d, kern, unrolled, rtol, at, (q, v, a))
     with np.errstate(over="ignore", invalid="ignore"):
@@ -536,12 +536,13 @@ def _direct(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_s
 def _solver(pair):
     def method(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
                max_step=np.inf, max_steps=100_000, dense_output=False, events=None,
-               t_eval=None):
+               t_eval=None, progress=None):
         return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                    dense_output, events, t_eval)
+                    dense_output, events, t_eval, progress)
 
     method.__name__ = method.__qualname__ = pair.name
-    method.__doc__ = f"The {pair.name} pair as called by :func:`~rigidmech.ode.solve`."
+    method.__doc__ = (f"The {pair.name} pair as called by :func:`~rigidmech.ode.solve` "
+                      "(``progress`` as for :func:`~rigidmech.ode.adaptive.dopri5`).")
     return method
 
 

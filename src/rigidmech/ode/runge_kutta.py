@@ -9,21 +9,22 @@ of any tableau, and the methods ``"euler"``, ``"heun"``, ``"midpoint"``, ``"rk4"
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from rigidmech._core.errors import ArgumentTypeError
 
 from . import _registry, tableaux
-from ._driver import Problem, fail_message
+from ._driver import Problem
+from ._fixed import FixedRecorder, _list_finite, fixed_loop
 from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
+from ._loop import check_progress
 from ._result import OdeResult
 
 __all__ = ["fixed_step_method", "integrate_fixed"]
 
 
-def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeResult:
+def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None,
+                    progress=None) -> OdeResult:
     """Integrate with the explicit tableau `tableau` and the uniform step `step`.
 
     Parameters
@@ -37,11 +38,15 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
         Signed step; ``round((t1 - t0) / step)`` steps are taken, the last one landing on t1.
     max_steps : int, optional
         Unused (checked by :func:`~rigidmech.ode.solve`); accepted for the common signature.
+    progress : callable, optional
+        ``progress(t)`` after every step; returning False stops the run (status 2, as
+        Ctrl-C does), with everything computed so far kept.
 
     Returns
     -------
     OdeResult
-        All grid points; on a non-finite state, status -1 and the points computed so far.
+        All grid points; on a non-finite state, status -1 and the finite points computed so
+        far; on Ctrl-C, status 2 and the points computed so far.
 
     Examples
     --------
@@ -55,77 +60,69 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None) -> OdeRes
     shape = y0.shape
     nsteps = max(1, int(round((t1 - t0) / step)))
     h = (t1 - t0) / nsteps
+    rec = FixedRecorder(t0, y0.reshape(-1), None, 1, False, shape)
+    f0 = None
     if len(shape) == 1 and shape[0] <= FLOAT_PATH_MAX_N:
         f0 = fun(t0, y0.copy())
         if type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64:
-            return _integrate_fixed_float(tableau, fun, t0, t1, y0, f0, nsteps, h)
-    else:
-        f0 = None
-    prob = Problem(fun, shape)
-    A, b, c = tableau.A, tableau.b, tableau.c
+            advance, nfev = _float_steps(tableau, fun, y0, f0)
+            done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress,
+                              finite=_list_finite)
+            return rec.result(tableau.name, nfev(), done)
+    advance, nfev = _array_steps(tableau, Problem(fun, shape), y0, f0, h)
+    done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress)
+    return rec.result(tableau.name, nfev(), done)
+
+
+def _array_steps(tableau, prob, y0, f0, h):
+    """The step ``advance(t, h) -> (y, None)`` of `tableau` (of size `h`) on flat arrays,
+    and its counter of evaluations."""
     s = tableau.stages
-    hA = [h * A[i, :i] for i in range(s)]
-    hc = h * c
-    hb = h * b
-    used = [i for i in range(s) if b[i] != 0]
-    N = y0.size
-    Y = np.empty((nsteps + 1, N))
-    Y[0] = y0.reshape(-1)
-    K = np.empty((s, N))
-    status, message, last = 0, "The integration reached the end of `t_span`.", nsteps
-    for k in range(nsteps):
-        t = t0 + k * h
-        y = Y[k]
-        if k == 0 and f0 is not None:
+    hA = [h * tableau.A[i, :i] for i in range(s)]
+    hc = h * tableau.c
+    used = [i for i in range(s) if tableau.b[i] != 0]
+    hb = h * tableau.b[used]
+    K = np.empty((s, y0.size))
+    box = [y0.reshape(-1).copy(), f0]
+
+    def advance(t, h):
+        y = box[0]
+        if box[1] is not None:  # f(t0, y0), evaluated to choose the path
             prob.nfev += 1
-            K[0] = f0
+            K[0] = box[1]
+            box[1] = None
         else:
             prob(t, y, K[0])
         for i in range(1, s):
             prob(t + hc[i], y + hA[i] @ K[:i], K[i])
-        y_new = Y[k + 1]
-        np.dot(hb[used], K[used], out=y_new)
+        y_new = np.dot(hb, K[used])
         y_new += y
-        if not np.isfinite(y_new.sum()):
-            status, last = -1, k
-            message = fail_message("The state became non-finite", t + h, y_new, shape)
-            break
-    t_grid = t0 + h * np.arange(last + 1)
-    t_grid[-1] = t1 if status == 0 else t_grid[-1]
-    Yk = Y[: last + 1]
-    y_out = np.ascontiguousarray(np.moveaxis(Yk.reshape((last + 1,) + shape), 0, 1))
-    return OdeResult(t=t_grid, y=y_out, nfev=prob.nfev, nsteps=last, nrejected=0,
-                     status=status, message=message, method=tableau.name)
+        box[0] = y_new
+        return y_new, None
+
+    return advance, lambda: prob.nfev
 
 
-def _integrate_fixed_float(tableau, fun, t0, t1, y0, f0, nsteps, h):
-    """:func:`integrate_fixed` on lists of floats, for one small trajectory."""
+def _float_steps(tableau, fun, y0, f0):
+    """The step ``advance(t, h) -> (y, None)`` of `tableau` on lists of floats, for one small
+    trajectory (a generated kernel), and its counter of evaluations."""
     n = y0.shape[0]
     step = cached(("rk-fixed", tableau, n), lambda: make_unrolled_stepper(
         tableau.name, tableau.A, tableau.b, tableau.c, tableau.stages, None, n))
-    arr, isfinite = np.array, math.isfinite
-    y = y0.tolist()
-    ys = [y]
-    k0 = f0.tolist()
-    status, message, last = 0, "The integration reached the end of `t_span`.", nsteps
-    nfev = 1
-    for k in range(nsteps):
-        t = t0 + k * h
-        if k:
+    arr, stages = np.array, tableau.stages
+    y, k0, nfev = y0.tolist(), f0.tolist(), 1
+
+    def advance(t, h):
+        nonlocal y, k0, nfev
+        if k0 is None:
             k0 = fun(t, arr(y)).tolist()
             nfev += 1
         y = step(fun, t, y, k0, h)
-        nfev += tableau.stages - 1
-        if not isfinite(sum(y)):
-            status, last = -1, k
-            message = fail_message("The state became non-finite", t + h, y, y0.shape)
-            break
-        ys.append(y)
-    t_grid = t0 + h * np.arange(last + 1)
-    if status == 0:
-        t_grid[-1] = t1
-    return OdeResult(t=t_grid, y=np.array(ys).T.copy(), nfev=nfev, nsteps=last, nrejected=0,
-                     status=status, message=message, method=tableau.name)
+        k0 = None
+        nfev += stages - 1
+        return y, None
+
+    return advance, lambda: nfev
 
 
 def fixed_step_method(tableau):
@@ -155,9 +152,10 @@ def fixed_step_method(tableau):
             f"`tableau` must be a ButcherTableau; got {type(tableau).__name__}."
         )
 
-    def method(fun, t_span, y0, *, step, max_steps=None):
+    def method(fun, t_span, y0, *, step, max_steps=None, progress=None):
+        progress = check_progress(progress)
         with np.errstate(over="ignore", invalid="ignore"):  # a blow-up is reported in status
-            return integrate_fixed(tableau, fun, t_span, y0, step=step)
+            return integrate_fixed(tableau, fun, t_span, y0, step=step, progress=progress)
 
     method.__name__ = method.__qualname__ = f"fixed_step_{tableau.name}"
     method.__doc__ = f"Fixed-step explicit Runge-Kutta method {tableau.name!r}."
