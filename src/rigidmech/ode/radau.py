@@ -28,6 +28,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
+from ._driver import Stops
 from ._loop import Capabilities, Run, StepResult, check_progress, integrate
 
 __all__ = ["radau"]
@@ -116,14 +117,18 @@ def _user_jac(jac, lin, t, y, shape):
 
 def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
           max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None, jac=None,
-          progress=None):
+          progress=None, t_eval=None):
     """Radau IIA (order 5) with error control and dense output, for stiff systems.
 
     Called through :func:`rigidmech.ode.solve` (``method="radau"``), which validates the
     common arguments. `jac` is an optional callable ``jac(t, y)`` returning ``df/dy`` of
     shape ``(n, n)`` (``(batch, n, n)`` for a batch); finite differences are used otherwise.
     ``stats`` reports ``njev`` (Jacobians) and ``nlu`` (factorised iteration matrices).
-    `progress` as for :func:`~rigidmech.ode.adaptive.dopri5`.
+    `progress` as for :func:`~rigidmech.ode.adaptive.dopri5`. With `t_eval` (passed by
+    :func:`~rigidmech.ode.solve`) the steps land on those times and only the states there
+    are kept: the samples are as accurate as the steps (the dense output, the order-3
+    collocation polynomial, is not used for them) and the memory is proportional to the
+    samples, not to the steps.
 
     Returns
     -------
@@ -143,7 +148,8 @@ def radau(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     if jac is not None and not callable(jac):
         raise ArgumentTypeError(f"`jac` must be a callable jac(t, y) or None; got {jac!r}.")
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
-              events, 0, "i", check_progress(progress))
+              events, 0, "i", check_progress(progress),
+              Stops(t_eval, t_span) if t_eval is not None else None, t_eval)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
         return integrate(_RadauStepper(jac, y0.shape, rtol, atol, max_step), run)
 
@@ -322,4 +328,4 @@ def _newton(prob, lin, t, y, h, Z0, scale, tol, Minv_r, Minv_c, F):
     return converged, k + 1, Z, rate
 
 
-_registry.register("radau", radau, kind="stiff")
+_registry.register("radau", radau, kind="stiff", capabilities=("t_eval", "t_eval_at_steps"))

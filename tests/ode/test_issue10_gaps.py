@@ -1,0 +1,63 @@
+"""Issue #10, the last gaps of the ODE driver: radau's samples as accurate as its steps and
+recorded step by step, and a right-hand side that becomes complex after ``t0`` reported as a
+failure (status -1) naming the time and the component, with the motion so far kept."""
+
+import tracemalloc
+
+import numpy as np
+import pytest
+
+from rigidmech import ode
+
+
+def oscillator(t, y):
+    """y'' = -y as a first-order system; exact solution (cos t, -sin t) from (1, 0)."""
+    return np.array([y[1], -y[0]])
+
+
+def _exact(t):
+    return np.array([np.cos(t), -np.sin(t)])
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-10])
+def test_radau_samples_as_accurate_as_its_steps(rtol):
+    # error at its own steps (no t_eval) against the closed form
+    t_span, y0, atol = (0.0, 20.0), [1.0, 0.0], rtol * 1e-3
+    steps = ode.solve(oscillator, t_span, y0, method="radau", rtol=rtol, atol=atol)
+    err_steps = np.max(np.abs(steps.y - _exact(steps.t)))
+    te = np.linspace(0.0, 20.0, 137)[1:]  # not the steps' times
+    sampled = ode.solve(oscillator, t_span, y0, method="radau", rtol=rtol, atol=atol,
+                        t_eval=te)
+    assert sampled.status == 0
+    np.testing.assert_array_equal(sampled.t, te)
+    err_samples = np.max(np.abs(sampled.y - _exact(te)))
+    # before: the samples came from the order-3 collocation polynomial, up to 40x worse
+    assert err_samples <= 2.0 * err_steps, (err_samples, err_steps)
+
+
+def test_radau_nfev_unchanged_without_t_eval():
+    # without t_eval the steps do not land anywhere: same steps, same evaluations as with
+    # dense output (which only adds the polynomial's coefficients, no evaluation of fun)
+    a = ode.solve(oscillator, (0.0, 20.0), [1.0, 0.0], method="radau", rtol=1e-8, atol=1e-11)
+    b = ode.solve(oscillator, (0.0, 20.0), [1.0, 0.0], method="radau", rtol=1e-8, atol=1e-11,
+                  dense_output=True)
+    assert (a.nfev, a.nsteps, a.stats) == (b.nfev, b.nsteps, b.stats)
+    np.testing.assert_array_equal(a.t, b.t)
+
+
+def test_radau_memory_bounded_by_samples():
+    # 3000 time units at rtol 1e-10: about 10^4 steps; 100 samples asked for.
+    te = np.linspace(0.0, 3.0e3, 100)
+    run = dict(method="radau", rtol=1e-10, atol=1e-12, t_eval=te, max_steps=10**7)
+    ode.solve(oscillator, (0.0, 50.0), [1.0, 0.0], **run | {"t_eval": None})  # warm caches
+    tracemalloc.start()
+    r = ode.solve(oscillator, (0.0, 3.0e3), [1.0, 0.0], **run)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert r.status == 0 and r.nsteps > 5_000
+    # Bound: 100 samples of 2 floats (a few KB with list overhead) plus the stepper's fixed
+    # working arrays (Jacobian, inverses, 3 x N stages: under 2 KB for N = 2) plus numpy's
+    # temporaries; 64 KB is far below the >= 0.5 MB that keeping every step would need
+    # (more than 5000 steps x (time + state + 3 x 2 dense coefficients) x 8 bytes, plus
+    # the per-step list entries).
+    assert peak < 64 * 1024, peak
