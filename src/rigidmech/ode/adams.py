@@ -71,7 +71,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
-from ._driver import Recorder, flat_tolerance
+from ._driver import Recorder, SampleRecorder, flat_tolerance
 from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
 from ._loop import check_progress
 from ._warnings import stiffness_count
@@ -513,7 +513,7 @@ def _lazy_dense(y_old, y_new, D, k, h):
 
 def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
           max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-          max_order=MAX_ORDER, nstiff=1000, progress=None):
+          max_order=MAX_ORDER, nstiff=1000, progress=None, t_eval=None):
     r"""Adaptive Adams-Bashforth-Moulton (PECE), variable order 1-12 and step, dense output.
 
     Called through :func:`rigidmech.ode.solve` (``method="adams"``), which validates the
@@ -521,6 +521,9 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     `nstiff` (int, default 1000, as for ``"dop853"``): 0 switches the stiffness test off; any
     other value keeps it on (it runs whenever the step size is about to change, not every
     `nstiff` steps: at a constant step size the Adams code does not look back).
+    With `t_eval` (passed by :func:`~rigidmech.ode.solve`) the samples are evaluated on each
+    step's dense polynomial as the steps pass and only they are kept (memory proportional to
+    the samples); the steps are those of a run with dense output.
 
     Returns
     -------
@@ -565,7 +568,7 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
         return _integrate(fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                           max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                           events=events, max_order=max_order, nstiff=nstiff,
-                          progress=progress)
+                          progress=progress, t_eval=t_eval)
 
 
 #: cache of re-sampling matrices for the usual ratios: 0.25, 0.5 ... 0.9, 2 (the ratios of a
@@ -640,7 +643,7 @@ def _stopped_by(progress, rec, t):
 
 
 def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, max_order, nstiff, progress=None):
+               dense_output, events, max_order, nstiff, progress=None, t_eval=None):
     t0, t_end = (float(v) for v in t_span)
     direction = 1.0 if t_end > t0 else -1.0
     shape = y0.shape
@@ -652,7 +655,12 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
               and f_raw.shape == shape and f_raw.dtype == np.float64)
     f0 = np.array(f_raw, dtype=float).reshape(-1)
     nfev = 1
-    rec = Recorder(t0, y, shape, dense_output, events, "power")
+    sampling = t_eval is not None and not dense_output  # keep the samples only
+    if sampling:
+        rec = SampleRecorder(t0, y, shape, events, t_eval, "power")
+    else:
+        rec = Recorder(t0, y, shape, dense_output, events, "power")
+    steps_t = [t0] if sampling else rec.ts  # the times of the last steps (for `change`)
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y)
         return rec.result("adams", nfev, 0)
@@ -698,7 +706,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
     iasti = nonsti = 0
     warned = False
     kmax_used = 1
-    want_dense = rec.cs is not None or events is not None
+    want_dense = rec.needs_dense
     if want_dense:  # the driver records every step itself, through rec.accept
         def ts_append(v):
             pass
@@ -722,7 +730,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
         """
         out = np.zeros((k + 2, N))
         m = min(len(history), HISTORY)
-        T = rec.ts[-m:]
+        T = steps_t[-m:]
         if ratio == 2.0 and ns >= 2 * k:
             vals = np.array(history[-1: -2 * k - 2: -2], dtype=float)  # f_n, f_{n-2}, ...
             out[: k + 1] = _DELTA[k] @ vals
@@ -816,6 +824,10 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
             if want_dense:  # a single step from (t - h, y_old)
                 y_rec = np.array(y) if floats else y
                 coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)
+                if sampling:
+                    steps_t.append(t)
+                    if len(steps_t) > 2 * HISTORY:
+                        del steps_t[:-HISTORY]
                 if rec.accept(t, y_rec, coeffs):
                     break
             if progress is not None and _stopped_by(progress, rec, t):
@@ -829,7 +841,7 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
             elif k < k_old:
                 n_order += 1
                 D = D[: (k + 2) * N] if floats else D[: k + 2]
-            ratio = _next_ratio(k, erk, phase1, abs(t - rec.ts[-min(len(history), HISTORY)]),
+            ratio = _next_ratio(k, erk, phase1, abs(t - steps_t[-min(len(history), HISTORY)]),
                                 abs(h), max_step)
             if ratio != 1.0:
                 D = change(D, k, ratio)
@@ -837,6 +849,11 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
                 h = h * ratio
                 ns = 0
     except KeyboardInterrupt:  # everything computed so far is kept
+        if sampling:
+            rec.interrupt("The integration was interrupted (KeyboardInterrupt)",
+                          rec.reached()["t_stop"])
+            return rec.result("adams", nfev, nrej, {"order_changes": n_order,
+                              "step_changes": n_resample, "max_order_used": kmax_used})
         m = min(len(rec.ts), len(rec.ys))  # a run may have been stopped between two appends
         del rec.ts[m:], rec.ys[m:]
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", rec.ts[-1])
@@ -844,4 +861,4 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
     return rec.result("adams", nfev, nrej, stats)
 
 
-_registry.register("adams", adams, kind="adaptive")
+_registry.register("adams", adams, kind="adaptive", capabilities=("t_eval",))
