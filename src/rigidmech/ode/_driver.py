@@ -11,57 +11,11 @@ import math
 
 import numpy as np
 
-from rigidmech._core.errors import ArgumentTypeError
-
 from ._dense import DenseSolution, evaluate
 from ._result import OdeResult
 
 __all__ = ["Problem", "Recorder", "SampleRecorder", "Stops", "initial_step", "fail_message",
-           "flat_tolerance", "ComplexValues", "real_rhs"]
-
-
-class ComplexValues(ArgumentTypeError):
-    """``fun(t, y)`` returned complex values after ``t0`` (raised by :func:`real_rhs`; the
-    one loop turns it into a failure, status -1, keeping the motion so far)."""
-
-    def __init__(self, t, k, value):
-        self.t, self.k, self.value = float(t), int(k), value
-        super().__init__(
-            f"The right-hand side returned complex values (component {self.k}: {value}) at "
-            f"t = {self.t!r}; the methods integrate real systems only")
-
-
-def real_rhs(fun):
-    """`fun` checked at every call: a complex result raises :class:`ComplexValues` naming the
-    time and the first complex component, instead of being truncated to its real part.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> f = real_rhs(lambda t, y: y * (1j if t > 1 else 1))
-    >>> f(0.0, np.array([2.0])).tolist()
-    [2.0]
-    >>> try:
-    ...     f(2.0, np.array([2.0]))
-    ... except ComplexValues as exc:
-    ...     print(exc.t, exc.k, exc.value)
-    2.0 0 2j
-    """
-
-    def checked(t, y):
-        out = fun(t, y)
-        if out.__class__ is np.ndarray and out.dtype.kind == "f":  # the usual case, fast
-            return out
-        if np.iscomplexobj(out):
-            flat = np.asarray(out).reshape(-1)
-            bad = np.imag(flat) != 0
-            if bad.any():
-                k = int(np.argmax(bad))
-                raise ComplexValues(t, k, flat[k])
-            return np.real(out)
-        return out
-
-    return checked
+           "flat_tolerance"]
 
 
 class Stops:

@@ -53,7 +53,7 @@ import numpy as np
 
 from rigidmech._core.errors import ArgumentError
 
-from ._driver import ComplexValues, Problem, Recorder, SampleRecorder, initial_step
+from ._driver import Problem, Recorder, SampleRecorder, initial_step
 from ._warnings import stiffness_count
 
 __all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress"]
@@ -258,10 +258,6 @@ def integrate(stepper, run, f0=None):
         state.run(t0, y, f, h_abs)
     except KeyboardInterrupt:  # everything computed so far is kept
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
-    except ComplexValues as exc:  # a failure, not a truncation; the motion so far is kept
-        rec.fail(f"The right-hand side returned complex values (component {exc.k}: "
-                 f"{exc.value}) at t = {exc.t!r}, in a step from the last accepted state",
-                 state.t, rec.reached()["y_stop"])
     nfev = prob.nfev + stepper.nfev + state.attempts * stepper.nfev_per_attempt
     return rec.result(caps.name, nfev, state.nrej, stepper.stats())
 

@@ -44,7 +44,6 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
 from ._dense import DenseSolution
-from ._driver import real_rhs
 from ._result import OdeResult
 from .events import EventTracker
 from .runge_kutta import fixed_step_method
@@ -550,8 +549,8 @@ def _run_adaptive(run):
     te, caps = run.t_eval, run.entry.capabilities
     lands, samples = "t_eval_at_steps" in caps, "t_eval" in caps
     own = te is not None and (lands or samples)  # the method takes t_eval itself
-    res = run.entry.function(  # a complex f after t0: a failure (status -1), not a truncation
-        real_rhs(run.fun), (run.t0, run.t1), run.y, step=None, rtol=run.rtol, atol=run.atol,
+    res = run.entry.function(
+        run.fun, (run.t0, run.t1), run.y, step=None, rtol=run.rtol, atol=run.atol,
         first_step=run.first_step, max_step=run.max_step, max_steps=run.max_steps,
         dense_output=run.dense_output or (te is not None and not own),
         events=run.tracker, **({"t_eval": te} if own else {}), **run.options,
