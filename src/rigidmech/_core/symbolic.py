@@ -5,7 +5,7 @@ sympy's ``xreplace`` walks an expression as a tree: a subexpression reached alon
 is rebuilt once per path. Derived equations of motion are DAGs in which the same velocity
 components appear in many entries, so a tree walk costs as much as the swollen expression.
 :func:`xreplace_shared` walks each distinct node once (memoised), which keeps the cost
-proportional to the size of the DAG (ARCHITECTURE.md, principle 5). sympy has no memoised
+proportional to the size of the DAG (no expression swell). sympy has no memoised
 replacement, hence this small function.
 
 "Is it zero?" has four meanings in rigidmech, each with its own cost and answer; each has one

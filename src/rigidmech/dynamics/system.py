@@ -16,7 +16,7 @@ exerted on them. It derives, on demand and each only once:
   where the dot is the comoment. The mass matrix is assembled directly from the partial
   velocities (M_ij = sum m V_i.V_j + Omega_i.J_G(Omega_j)), never extracted from an
   expanded expression, and every vector of a body is kept in the body's own basis: the cost
-  grows polynomially with the number of bodies (ARCHITECTURE.md, principle 5);
+  grows polynomially with the number of bodies (no expression swell);
 * the action in one connection (ch. 18.2), only when asked: the fundamental principle for the
   set of bodies carried by that connection.
 """
@@ -521,8 +521,8 @@ class System(LinkedParameters):
         """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns,
         written with the coordinates q(t) and their derivatives.
 
-        Derived once and cached; no connection action is derived (ARCHITECTURE.md,
-        principle 4). Nothing is simplified: ask for it on the result if wanted. The result
+        Derived once and cached; no connection action is derived (each quantity
+        on demand). Nothing is simplified: ask for it on the result if wanted. The result
         is a snapshot: changing the system afterwards (``act``, ``connect``) leaves it as it
         is, its energy included.
         """

@@ -2,7 +2,7 @@
 ch. 27.2).
 
 :func:`run` takes a :class:`~rigidmech.scenes.Scene` (or its name), overrides of its defaults,
-and goes through the main path of data (ARCHITECTURE.md): the builder assembles the system, the
+and goes through the main path of data of rigidmech: the builder assembles the system, the
 fundamental principle gives M(q) q'' = f (``derive``), the right-hand side is compiled once
 (``compile``), a solver of :mod:`rigidmech.ode` integrates it (``integrate``) and the total
 mechanical energy is followed along the motion (``energy``). Each stage is timed and the whole

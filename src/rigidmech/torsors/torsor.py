@@ -1,8 +1,8 @@
 """The torsor {R ; M(A)}: the book's key concept and rigidmech's spine (book, ch. 5).
 
 One type serves for every torsor of mechanics: kinematic {omega ; v(A)}, action {R ; M(A)},
-kinetic {m v(G) ; sigma(A)} and dynamic {m a(G) ; delta(A)} torsors (ARCHITECTURE.md,
-principle 2). A torsor is known by its resultant, its moment at one point (the point of
+kinetic {m v(G) ; sigma(A)} and dynamic {m a(G) ; delta(A)} torsors: one torsor algebra
+for all of mechanics. A torsor is known by its resultant, its moment at one point (the point of
 reduction) and that point; the moment field follows from the transport formula (ch. 5.1.2)
 
 .. math:: \\mathbf{M}(B) = \\mathbf{M}(A) + \\mathbf{BA} \\wedge \\mathbf{R}.

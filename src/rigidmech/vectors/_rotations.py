@@ -6,7 +6,7 @@ direction cosines between any two frames of a tree (book, ch. 1.5.2 and 2.5). Co
 rotations about the same axis are merged before any matrix is built, so that in a planar chain
 the basis change between two frames is one rotation by the sum of the angles in between
 (``cos(q2 + q3)``, not a product of trigonometric factors): this keeps equations of jointed
-chains small (ARCHITECTURE.md, principle 5). Results are memoised: they are pure functions of
+chains small (no expression swell). Results are memoised: they are pure functions of
 immutable values.
 """
 
