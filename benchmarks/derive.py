@@ -276,9 +276,10 @@ def case_kane(n):
 
 
 # -- parent side ----------------------------------------------------------------------------------
-def run_case(n, side, timeout):
-    """Run one case in a fresh process; returns its dict (``timeout``/``error`` on failure)."""
-    cmd = [sys.executable, os.path.abspath(__file__), "--case", side, str(n)]
+def run_case(n, side, timeout, script=__file__):
+    """Run one case of ``script`` (``script --case SIDE N``) in a fresh process; returns its
+    dict (``timeout``/``error`` on failure)."""
+    cmd = [sys.executable, os.path.abspath(script), "--case", side, str(n)]
     try:
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
         out, status = proc.stdout, None if proc.returncode == 0 else "error"

@@ -29,7 +29,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import subprocess
 import sys
 import time
 
@@ -97,23 +96,10 @@ def case_kane(n):
 
 
 def run_case(n, side, timeout):
-    cmd = [sys.executable, os.path.abspath(__file__), "--case", side, str(n)]
-    try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-        out, status = proc.stdout, None if proc.returncode == 0 else "error"
-        err = proc.stderr
-    except subprocess.TimeoutExpired as exc:
-        out = exc.stdout.decode() if isinstance(exc.stdout, bytes) else (exc.stdout or "")
-        status, err = "timeout", ""
-    result = {}
-    for line in out.splitlines():
-        if line.startswith("{"):
-            result.update(json.loads(line))
-    if status:
-        result["status"] = status
-        if status == "error":
-            result["stderr"] = err.strip().splitlines()[-1:] if err else []
-    return result
+    """One case in a fresh process (the runner of ``derive.py``)."""
+    from derive import run_case as run_in_fresh_process
+
+    return run_in_fresh_process(n, side, timeout, script=__file__)
 
 
 def _rel(a, b):
