@@ -55,7 +55,7 @@ __all__ += ["Helical", "SphericalWithFinger", "PlanarSupport", "LinearAnnular",
             "LinearRectilinear", "PointContact", "Embedding", "Screw", "Planar",
             "SphereCylinder", "LineContact", "CylinderPlane", "SpherePlane", "Fixed",
             "Revolute", "Slide", "BallJoint"]
-from .contacts import GearMesh, RollingContact  # noqa: E402  (ch. 10.1.3, 10.2)
+from .contacts import FrictionContact, GearMesh, RollingContact  # noqa: E402
 
-__all__ += ["RollingContact", "GearMesh"]
+__all__ += ["RollingContact", "GearMesh", "FrictionContact"]
 __all__ += ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]

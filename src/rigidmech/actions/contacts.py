@@ -28,13 +28,14 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from ..kinematics import Solid
 from ..kinematics.constraints import VelocityConstraint
-from ..kinematics.contact import Contact
+from ..kinematics.contact import Contact, ContactKinematics
 from ..kinematics.transmissions import GearPair
 from ..torsors import Torsor
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
+from .contact_laws import Coulomb
 
-__all__ = ["RollingContact", "GearMesh"]
+__all__ = ["RollingContact", "GearMesh", "FrictionContact"]
 
 
 def _solid(x, argument):
@@ -350,3 +351,81 @@ class GearMesh:
     def __repr__(self):
         return (f"GearMesh({self._pair!r}, {self._first.name}, {self._second.name}, "
                 f"carrier={self._carrier.name})")
+
+
+class FrictionContact:
+    """A one-sided point contact with Coulomb friction between two solids of a
+    :class:`~rigidmech.dynamics.System` (ch. 13.1, 21.4, 23).
+
+    S2 touches S1 at I with the normal n (from S1 into S2). The action of S1 on S2 is
+    {N n + T ; 0}_I with N >= 0 (the contact opens when N would become negative) and, by
+    Coulomb's laws, ``|T| <= f_s N`` while S2 **sticks** (or rolls without slipping) on S1,
+    and ``T = -f_k N v_s/|v_s|`` while it **slips** with the sliding velocity
+    v_s = v(I in S2/S1). Its equations therefore change with the regime: a system that holds
+    such a contact is integrated phase by phase with
+    :func:`rigidmech.regimes.contact_motion`, which writes each regime itself (the contact as
+    a no-slip constraint while sticking, the friction force while slipping).
+
+    The coordinates of S2 must leave the contact free in every direction the regimes use:
+    the normal direction (so that N is a Lagrange multiplier) and the tangential ones.
+
+    Parameters
+    ----------
+    contact : ContactKinematics
+        The two solids (S2 ``moving``, S1 ``other``), the contact point I and the normal
+        (:class:`~rigidmech.kinematics.ContactKinematics`, or ``ContactKinematics.between``
+        for two surfaces).
+    friction : Coulomb, optional
+        The law of friction; None for a frictionless contact (T = 0).
+
+    Examples
+    --------
+    A block (centre (x, y)) on the floor y = 0, its bottom point I at (x, y - h):
+
+    >>> import sympy as sp
+    >>> from rigidmech import Frame, coordinates
+    >>> from rigidmech.kinematics import ContactKinematics
+    >>> x, y = coordinates("x y"); h = sp.Symbol("h", positive=True)
+    >>> R0 = Frame("R0"); R1 = R0.translated("R1", R0.point("G", x, y, 0))
+    >>> c = FrictionContact(ContactKinematics(R1, R0, at=R0.point("I", x, y - h, 0),
+    ...                                       normal=R0.j), friction=Coulomb(0.5, 0.4))
+    >>> c
+    FrictionContact(R1 on R0 at I, friction=Coulomb(static=0.5, kinetic=0.4))
+    >>> c.action_torsor("I")[0].resultant
+    T1_I*R0.i + N_I*R0.j - T2_I*R0.k
+    """
+
+    __slots__ = ("_contact", "_friction")
+    one_sided = True
+
+    def __init__(self, contact: ContactKinematics, *, friction: Coulomb | None = None):
+        if not isinstance(contact, ContactKinematics):
+            raise ArgumentTypeError(
+                f"`contact` must be a ContactKinematics (rigidmech.kinematics, or "
+                f"ContactKinematics.between for surfaces); got {type(contact).__name__}.")
+        if friction is not None and not isinstance(friction, Coulomb):
+            raise ArgumentTypeError(
+                f"`friction` must be a Coulomb law or None; got {type(friction).__name__}.")
+        self._contact, self._friction = contact, friction
+
+    contact = property(lambda self: self._contact,
+                       doc="The kinematics of the contact (point, normal, sliding velocity).")
+    friction = property(lambda self: self._friction, doc="The Coulomb law, or None.")
+
+    @property
+    def solids(self) -> tuple:
+        """(S2, S1): the solid acted on and the one it touches."""
+        return self._contact.moving, self._contact.other
+
+    def action_torsor(self, label: str) -> tuple[Torsor, tuple]:
+        """The action of S1 on S2 at I, {N n + T1 t1 + T2 t2 ; 0}, with its unknowns
+        (N, T1, T2) (see :meth:`ContactKinematics.tangents`)."""
+        N, T1, T2 = (sp.Symbol(f"{n}_{label}", real=True) for n in ("N", "T1", "T2"))
+        t1, t2 = self._contact.tangents()
+        return (Torsor(N * self._contact.normal + T1 * t1 + T2 * t2, Vector.zero(),
+                       self._contact.point), (N, T1, T2))
+
+    def __repr__(self):
+        c = self._contact
+        extra = "" if self._friction is None else f", friction={self._friction!r}"
+        return f"FrictionContact({c.moving.name} on {c.other.name} at {c.point.name}{extra})"

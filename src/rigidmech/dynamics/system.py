@@ -191,6 +191,7 @@ class System(LinkedParameters):
         # declaration ranks of the coordinates when their body joined the system: a name
         # declared again afterwards does not reorder this system's coordinates
         self._ranks: dict = {}
+        self._contacts: list = []  # (parent, child, contact): one-sided contacts (regimes)
 
     # -- building -----------------------------------------------------------------------
     @property
@@ -336,6 +337,8 @@ class System(LinkedParameters):
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
+        if getattr(joint, "one_sided", False):
+            return self._touch(parent, child, joint)
         linking = callable(getattr(joint, "velocity_constraints", None))
         if not (isinstance(joint, Joint) or linking):
             raise ArgumentTypeError(
@@ -397,6 +400,28 @@ class System(LinkedParameters):
                 f"but connects {parent.name} (frame {parent.frame.name}) and {child.name} "
                 f"(frame {child.frame.name}) here: build it on the frames of the two bodies "
                 "(the rolling solid as `child`, the driven gear as `child`).")
+
+    def _touch(self, parent, child, contact):
+        """Record a one-sided contact with friction (a :class:`~rigidmech.actions.
+        FrictionContact`): its action depends on the regime (stick, slip, open), so it is
+        left out of :meth:`equations_of_motion`; :func:`rigidmech.regimes.contact_motion`
+        derives each regime from the system."""
+        if child is self._ground:
+            raise ConnectionError_(
+                "`child` cannot be the Galilean reference: connect bodies to it as parent.")
+        if parent is not self._ground and parent not in self._bodies:
+            raise ConnectionError_(f"connect the parent {parent.name} before its children.")
+        self._check_linking_solids(parent, child, contact)
+        if child not in self._bodies:
+            self.add(child)
+        self._contacts.append((parent, child, contact))
+        self._cache.clear()
+
+    @property
+    def contacts(self) -> tuple:
+        """The one-sided contacts with friction ``(parent, child, contact)`` (see
+        :class:`~rigidmech.actions.FrictionContact`), in the order they were connected."""
+        return tuple(self._contacts)
 
     def act(self, action: Action) -> None:
         """Add an external or internal action (gravity, force, couple, spring, ...).
@@ -517,15 +542,26 @@ class System(LinkedParameters):
             self._cache[key] = out
         return self._cache[key]
 
-    def equations_of_motion(self) -> EquationsOfMotion:
+    def equations_of_motion(self, *, open_contacts: bool = False) -> EquationsOfMotion:
         """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns,
         written with the coordinates q(t) and their derivatives.
+
+        A system with one-sided contacts with friction (:attr:`contacts`) has no single set
+        of equations: they change with the contacts' regimes (use
+        :func:`rigidmech.regimes.contact_motion`). It is refused unless ``open_contacts`` is
+        True, which gives the equations with every such contact open (no contact action).
 
         Derived once and cached; no connection action is derived (each quantity
         on demand). Nothing is simplified: ask for it on the result if wanted. The result
         is a snapshot: changing the system afterwards (``act``, ``connect``) leaves it as it
         is, its energy included.
         """
+        if self._contacts and not open_contacts:
+            raise ConnectionError_(
+                f"the system has {len(self._contacts)} one-sided contact(s) with friction "
+                "whose equations change with the regime (stick, slip, lift-off): integrate it "
+                "with rigidmech.regimes.contact_motion, or pass open_contacts=True for the "
+                "equations with the contacts open.")
         if "eom" in self._cache:
             return self._cache["eom"]
         R = self._galilean

@@ -31,7 +31,7 @@ from ..vectors.points import check_point
 from .solid import Solid
 from .surfaces import _unit, _vector, contact_geometry
 
-__all__ = ["Contact"]
+__all__ = ["ContactKinematics", "Contact"]
 
 
 def _solid(x, argument):
@@ -53,7 +53,7 @@ def _basis_vectors(solids):
     return [e for f in seen for e in f.basis]
 
 
-class Contact:
+class ContactKinematics:
     """Two solids in contact at a point: S2 (``moving``) relative to S1 (``other``)
     (ch. 10.1).
 
@@ -95,12 +95,16 @@ class Contact:
         self._other = _solid(other, "other")
         check_point(at, "at")
         self._point = at
-        self._normal = _unit(_vector(normal, "normal"))
+        normal = _vector(normal, "normal")
+        if normal.is_zero or sp.simplify(normal.dot(normal)) == 0:
+            raise ArgumentError(f"`normal` must be a non-zero vector (the common normal at "
+                                f"{at.name}); got {normal!r}.")
+        self._normal = _unit(normal)
         self._cache = {}
 
     @classmethod
     def between(cls, moving, moving_surface, other, other_surface, *, name: str = "I",
-                inner: str | None = None) -> Contact:
+                inner: str | None = None) -> ContactKinematics:
         """The contact of two solids from their surfaces (see
         :func:`~rigidmech.kinematics.surfaces.contact_geometry`): S2 = ``moving`` bounded by
         ``moving_surface`` on S1 = ``other`` bounded by ``other_surface``. The normal is
@@ -280,3 +284,6 @@ class Contact:
     def __repr__(self):
         return (f"Contact({self._moving.name} on {self._other.name}, at={self._point.name}, "
                 f"normal={self._normal!r})")
+
+
+Contact = ContactKinematics

@@ -1,0 +1,545 @@
+"""Motion of a :class:`~rigidmech.dynamics.System` with one-sided contacts and dry friction,
+regime by regime (book, ch. 13.1, 21.4, 23).
+
+A system holds :class:`~rigidmech.actions.FrictionContact` connections (``system.connect(S1,
+S2, FrictionContact(...))``). Its equations of motion change with the state of each
+contact, and :func:`contact_motion` derives them itself from the system, for each regime:
+
+* **stick** (for a wheel: rolls without slipping): the contact is a constraint, the velocity
+  of sliding v(I in S2/S1) = 0 and its normal component; the normal force N and the
+  tangential force T are the Lagrange multipliers of these conditions (M q'' = f + A^T lambda).
+  The phase ends where the friction needed exceeds the cone, ``|T| = f_s N``: the contact
+  then slips, in the direction opposite to T;
+* **slip** (``slip+`` / ``slip-`` along the one tangent t of a plane contact, ``slip`` for a
+  contact with two tangents): only the normal condition is kept, and the friction
+  ``T = -f_k N v_s/|v_s|`` acts with its multiplier N: the generalised force of the contact is
+  (A_n - f_k (v_s/|v_s|) . A_t)^T N. The phase ends where the sliding velocity vanishes; the
+  contact then sticks if the friction needed to stick lies inside the cone
+  (``|T| <= f_s N``), otherwise it slips back;
+* a frictionless contact (``friction=None``) keeps only its normal condition (regime
+  ``contact``).
+
+In every regime the motion **stops** where a normal force N would become negative (guard
+"lifts off"): the contact opens there, and its later motion (flight and a new impact) is not
+integrated. The phases come back as a :class:`ContactMotion`
+(a :class:`~rigidmech.regimes.PhasedMotion` that also gives the contact actions).
+
+The state is y = (q, q'), q the system's coordinates. The coordinates of each body in contact
+must leave the contact free in the normal direction (N is a multiplier) and in the
+tangential ones (T is a multiplier while sticking).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import sympy as sp
+
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
+from ..dynamics import System
+from ..vectors import t as time_symbol
+from .phased import Guard, PhasedMotion, Regime, integrate_phases
+
+__all__ = ["contact_motion", "ContactMotion"]
+
+
+class ContactMotion(PhasedMotion):
+    """The phases of a system with contacts (see :func:`contact_motion`), with the contact
+    actions along the motion.
+
+    Examples
+    --------
+    See :func:`contact_motion`.
+    """
+
+    __slots__ = ("_model",)
+
+    def __init__(self, phases, model):
+        super().__init__(phases)
+        self._model = model
+
+    @property
+    def contacts(self) -> tuple:
+        """The names of the contacts (their points), in the system's order."""
+        return tuple(c.name for c in self._model.contacts)
+
+    def contact_actions(self, time) -> dict:
+        """The action of each contact at ``time`` in the regime of the phase then:
+        ``{name: (N, T, v_s)}`` with N the normal force, T the tangential force and v_s the
+        sliding velocity, both as arrays of their components on the contact's tangents
+        (t1 or (t1, t2), see :meth:`ContactKinematics.tangents`).
+
+        At a switching instant the phase that ends there is used.
+        """
+        time = float(time)
+        ends = np.array([p.end for p in self.phases])
+        k = min(int(np.searchsorted(ends, time, side="left")), len(self.phases) - 1)
+        phase = self.phases[k]
+        y = phase.solution.sol(time)
+        states = self._model.states_of(phase.regime)
+        _, lam, rows = self._model.solve(time, y, states)
+        out = {}
+        for c, (N, T) in zip(self._model.contacts,
+                             self._model.contact_forces(time, y, states, lam, rows),
+                             strict=True):
+            out[c.name] = (N, T, c.sliding(self._model.values(time, y)))
+        return out
+
+
+class _Row:
+    """One constraint velocity c(q, q', t) = J(q, t) q' + ..., numerically."""
+
+    __slots__ = ("J", "h", "c")
+
+    def __init__(self, J, h, c):
+        self.J, self.h, self.c = J, h, c
+
+
+class _Contact:
+    """A contact's numeric rows: the normal one and 1 or 2 tangential ones."""
+
+    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk")
+
+    def __init__(self, name, law, normal, tangents):
+        self.name, self.law, self.normal, self.tangents = name, law, normal, tangents
+        if law is not None:
+            try:
+                self.fs, self.fk = float(law.static), float(law.kinetic)
+            except TypeError:
+                raise ArgumentError(
+                    f"the friction coefficients of contact {name} must be numbers to integrate; "
+                    f"got {law!r}.") from None
+        else:
+            self.fs = self.fk = 0.0
+
+    @property
+    def states(self):
+        if self.law is None:
+            return ("contact",)
+        return ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
+
+    def sliding(self, vals):
+        return np.array([vals[r.c] for r in self.tangents])
+
+
+class _Model:
+    """The numeric pieces of a system with contacts: M, f, the rows, and the regime solve."""
+
+    def __init__(self, system, params):
+        eqs = system.equations_of_motion(open_contacts=True)
+        qs = system.coordinates
+        n = len(qs)
+        q_sym, u_sym, a_sym, rule = system.symbols()
+        self.n = n
+        exprs = [sp.Matrix(eqs.mass_matrix).xreplace(rule), sp.Matrix(eqs.forcing).xreplace(rule)]
+        self.closures = []
+        self.contacts = []
+        rows = []
+
+        def row(c):
+            c = sp.sympify(c).xreplace(rule)
+            J = [sp.diff(c, u) for u in u_sym]
+            h = sum((sp.diff(c, q) * u for q, u in zip(q_sym, u_sym, strict=True)),
+                    sp.S.Zero) + sp.diff(c, time_symbol)
+            rows.append((J, h, c))
+            return len(rows) - 1
+
+        for label, velocity, _ in system.closure_conditions():
+            self.closures.append(row(velocity))
+        for k, (_, child, contact) in enumerate(system.contacts):
+            kin = contact.contact
+            name = kin.point.name if kin.point.name not in [c.name for c in self.contacts] \
+                else f"{kin.point.name}{k + 1}"
+            v = kin.sliding_velocity
+            t1, t2 = kin.tangents()
+            vn = sp.simplify(v.dot(kin.normal).xreplace(rule))
+            if vn == 0:
+                raise ConnectionError_(
+                    f"the contact {name} of {child.name} leaves no normal motion: the "
+                    f"coordinates {list(qs)} keep the contact closed, so its normal force is "
+                    "not a multiplier. Give the body a coordinate along the normal (e.g. its "
+                    "height) and start it on the contact.")
+            comps = [sp.simplify(v.dot(e).xreplace(rule)) for e in (t1, t2)]
+            tangential = [c for c in comps if c != 0]
+            if contact.friction is not None and not tangential:
+                raise ConnectionError_(
+                    f"the contact {name} of {child.name} cannot slip: its coordinates allow "
+                    "no sliding velocity, so friction has no regime to switch between.")
+            normal = row(v.dot(kin.normal))
+            tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
+            self.contacts.append(_Contact(name, contact.friction, normal, tang))
+        self._compile(exprs, rows, q_sym, u_sym, params)
+        for c in self.contacts:
+            c.normal = self._rows[c.normal]
+            c.tangents = [self._rows[i] for i in c.tangents]
+        self.closures = [self._rows[i] for i in self.closures]
+
+    def _compile(self, exprs, rows, q_sym, u_sym, params):
+        flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)]]
+        free = set()
+        for e in flat:
+            free |= sp.sympify(e).free_symbols
+        constants = sorted(free - set(q_sym) - set(u_sym) - {time_symbol}, key=lambda s: s.name)
+        missing = [s.name for s in constants if s.name not in params]
+        if missing:
+            raise ArgumentError(f"missing values for the parameters {missing}; pass them as "
+                                f"keywords, e.g. {missing[0]}=1.0.")
+        unknown = sorted(set(params) - {s.name for s in constants})
+        if unknown:
+            raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
+                                f"{[s.name for s in constants]}.")
+        values = {}
+        for s in constants:
+            try:
+                values[s] = float(params[s.name])
+            except (TypeError, ValueError):
+                raise ArgumentTypeError(f"the value of parameter `{s.name}` must be a real "
+                                        f"number; got {params[s.name]!r}.") from None
+        flat = [sp.sympify(e).xreplace(values) for e in flat]
+        fn = sp.lambdify((time_symbol, *q_sym, *u_sym), flat, modules="numpy", cse=True)
+        n = self.n
+        self._fn = fn
+        # indices into the evaluated list [M, f, J_0, h_0, c_0, J_1, ...]
+        self._rows = [_Row(2 + 3 * i, 3 + 3 * i, 4 + 3 * i) for i in range(len(rows))]
+        self._n = n
+        self._memo = (None, None)
+
+    def values(self, t, y):
+        key = (float(t), np.asarray(y, dtype=float).tobytes())
+        if self._memo[0] != key:
+            self._memo = (key, self._fn(t, *y[: self._n], *y[self._n:]))
+        return self._memo[1]
+
+    # -- one regime ---------------------------------------------------------------------
+    def states_of(self, regime):
+        if len(self.contacts) == 1:
+            return (regime,)
+        return tuple(part.split(": ", 1)[1] for part in regime.split("; "))
+
+    def regime_name(self, states):
+        if len(self.contacts) == 1:
+            return states[0]
+        return "; ".join(f"{c.name}: {s}" for c, s in zip(self.contacts, states, strict=True))
+
+    def solve(self, t, y, states, vals=None):
+        """(q'', multipliers, row layout) of the regime ``states`` at (t, y)."""
+        n = self.n
+        vals = self.values(t, y) if vals is None else vals
+        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
+        f = np.asarray(vals[1], dtype=float).reshape(-1)
+        A, G, b, layout = [], [], [], []
+        for r in self.closures:
+            J = np.asarray(vals[r.J], dtype=float).reshape(-1)
+            A.append(J), G.append(J), b.append(-float(vals[r.h]))
+            layout.append(("closure", None))
+        for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
+            Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
+            Jt = [np.asarray(vals[r.J], dtype=float).reshape(-1) for r in c.tangents]
+            force = Jn.copy()
+            if s.startswith("slip"):
+                direction = self._slip_direction(s, c.sliding(vals))
+                for d, J in zip(direction, Jt, strict=True):
+                    force -= c.fk * d * J
+            A.append(Jn), G.append(force), b.append(-float(vals[c.normal.h]))
+            layout.append(("N", k))
+            if s == "stick":
+                for i, (J, r) in enumerate(zip(Jt, c.tangents, strict=True)):
+                    A.append(J), G.append(J), b.append(-float(vals[r.h]))
+                    layout.append(("T", (k, i)))
+        m = len(A)
+        if m == 0:
+            return np.linalg.solve(M, f), np.zeros(0), layout
+        K = np.zeros((n + m, n + m))
+        K[:n, :n] = M
+        K[:n, n:] = -np.array(G).T
+        K[n:, :n] = np.array(A)
+        rhs = np.concatenate([f, b])
+        try:
+            x = np.linalg.solve(K, rhs)
+        except np.linalg.LinAlgError:
+            raise NumericalError(
+                f"the regime {self.regime_name(states)} has a singular system at t = {t}: the "
+                "contact conditions are not independent (a hyperstatic contact).") from None
+        return x[:n], x[n:], layout
+
+    @staticmethod
+    def _slip_direction(state, vs):
+        if state == "slip+":
+            return np.array([1.0])
+        if state == "slip-":
+            return np.array([-1.0])
+        norm = float(np.linalg.norm(vs))
+        return vs / norm if norm > 0 else np.zeros_like(vs)
+
+    def contact_forces(self, t, y, states, lam, layout):
+        """[(N, T components on the tangents)] for each contact."""
+        vals = self.values(t, y)
+        out = []
+        for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
+            N = next(float(lam[i]) for i, (kind, key) in enumerate(layout)
+                     if kind == "N" and key == k)
+            if s == "stick":
+                T = np.array([lam[i] for i, (kind, key) in enumerate(layout)
+                              if kind == "T" and key[0] == k], dtype=float)
+            elif s.startswith("slip"):
+                T = -c.fk * N * self._slip_direction(s, c.sliding(vals))
+            else:
+                T = np.zeros(len(c.tangents))
+            out.append((N, T))
+        return out
+
+    def project(self, t, y, states):
+        """y with q' projected (in the metric of M) onto the conditions of ``states``."""
+        n = self.n
+        vals = self.values(t, y)
+        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
+        rows = [r for r in self.closures]
+        for c, s in zip(self.contacts, states, strict=True):
+            rows.append(c.normal)
+            if s == "stick":
+                rows.extend(c.tangents)
+        A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for r in rows])
+        c = np.array([float(vals[r.c]) for r in rows])
+        u = np.array(y[n:], dtype=float)
+        Minv_At = np.linalg.solve(M, A.T)
+        u = u - Minv_At @ np.linalg.solve(A @ Minv_At, c)
+        return np.concatenate([np.asarray(y[:n], dtype=float), u])
+
+
+def _state_vector(values, coordinates, what):
+    names = [q.func.__name__ for q in coordinates]
+    if values is None:
+        return np.zeros(len(names))
+    if isinstance(values, dict):
+        out = []
+        by_name = {(k if isinstance(k, str) else getattr(getattr(k, "func", None), "__name__",
+                                                          str(k))): v for k, v in values.items()}
+        unknown = sorted(set(by_name) - set(names))
+        if unknown:
+            raise ArgumentError(f"`{what}` names unknown coordinates {unknown}; the "
+                                f"coordinates are {names}.")
+        for n in names:
+            out.append(by_name.get(n, 0.0))
+        values = out
+    try:
+        arr = np.array(values, dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(f"`{what}` must be numbers (a dict by coordinate or a "
+                                f"sequence in the order {names}); got {values!r}.") from None
+    if arr.size != len(names) or not np.all(np.isfinite(arr)):
+        raise ArgumentError(f"`{what}` must hold {len(names)} finite values, for {names}; got "
+                            f"{values!r}.")
+    return arr
+
+
+class _Rules:
+    """The guards and transitions of every regime of a model."""
+
+    def __init__(self, model):
+        self.m = model
+        self.directions = {}           # contact index -> slip direction at the phase start
+
+    def forces(self, t, y, states):
+        _, lam, layout = self.m.solve(t, y, states)
+        return self.m.contact_forces(t, y, states, lam, layout)
+
+    def _with(self, states, k, state):
+        return tuple(state if i == k else s for i, s in enumerate(states))
+
+    def after_stop(self, t, y, states, k):
+        """The state of contact k where its sliding velocity vanishes."""
+        c = self.m.contacts[k]
+        stick = self._with(states, k, "stick")
+        yp = self.m.project(t, y, stick)
+        N, T = self.forces(t, yp, stick)[k]
+        if N >= 0 and float(np.linalg.norm(T)) <= c.fs * N * (1 + 1e-12) + 1e-300:
+            return "stick"
+        return self.slip_state(k, T)
+
+    def slip_state(self, k, T):
+        """The slip that a needed friction T cannot hold: opposite to T."""
+        if len(self.m.contacts[k].tangents) == 1:
+            return "slip+" if T[0] < 0 else "slip-"
+        self.directions[k] = -T / float(np.linalg.norm(T))
+        return "slip"
+
+    def regimes(self):
+        out = []
+        for states in itertools.product(*(c.states for c in self.m.contacts)):
+            guards = []
+            for k, s in enumerate(states):
+                guards.extend(self.guards(states, k, s))
+            out.append(Regime(self.m.regime_name(states), self.rhs(states), guards))
+        return out
+
+    def rhs(self, states):
+        n = self.m.n
+
+        def rhs(t, y):
+            a, _, _ = self.m.solve(t, y, states)
+            return np.concatenate([y[n:], a])
+        return rhs
+
+    def guards(self, states, k, s):
+        c, m = self.m.contacts[k], self.m
+        name = m.regime_name
+
+        def normal(t, y):
+            return self.forces(t, y, states)[k][0]
+        out = [Guard(f"{c.name} lifts off", normal, target=None, direction=-1)]
+        if s == "stick":
+            def cone(t, y):
+                N, T = self.forces(t, y, states)[k]
+                return c.fs * N - float(np.linalg.norm(T))
+
+            def to_slip(t, y):
+                return name(self._with(states, k, self.slip_state(k, self.forces(t, y,
+                                                                                 states)[k][1])))
+            out.append(Guard(f"{c.name} starts slipping", cone, target=to_slip, direction=-1))
+        elif s in ("slip+", "slip-"):
+            sign = 1.0 if s == "slip+" else -1.0
+            row = c.tangents[0]
+
+            def speed(t, y):
+                return sign * float(m.values(t, y)[row.c])
+            out.append(Guard(f"{c.name} stops slipping", speed, direction=-1,
+                             target=lambda t, y: name(self._with(
+                                 states, k, self.after_stop(t, y, states, k))),
+                             reset=lambda t, y: m.project(t, y, self._with(states, k, "stick"))))
+        elif s == "slip":
+            out.append(self._slip2_guard(states, k))
+        return out
+
+    def _slip2_guard(self, states, k):
+        c, m = self.m.contacts[k], self.m
+
+        def along(t, y):
+            return float(c.sliding(m.values(t, y)) @ self.directions[k])
+
+        def stopped(t, y):
+            vs = c.sliding(m.values(t, y))
+            scale = float(np.linalg.norm(y[m.n:])) + 1e-300
+            return float(np.linalg.norm(vs)) <= 1e-7 * scale
+
+        def target(t, y):
+            if stopped(t, y):
+                return m.regime_name(self._with(states, k, self.after_stop(t, y, states, k)))
+            return m.regime_name(states)
+
+        def reset(t, y):
+            if stopped(t, y):
+                return m.project(t, y, self._with(states, k, "stick"))
+            vs = c.sliding(m.values(t, y))
+            self.directions[k] = vs / float(np.linalg.norm(vs))
+            return y
+        return Guard(f"{c.name} stops slipping", along, target=target, direction=-1,
+                     reset=reset)
+
+    def start(self, t, y):
+        states = []
+        for k, c in enumerate(self.m.contacts):
+            vs = c.sliding(self.m.values(t, y))
+            if c.law is None:
+                states.append("contact")
+            elif float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+                if len(c.tangents) == 1:
+                    states.append("slip+" if vs[0] > 0 else "slip-")
+                else:
+                    self.directions[k] = vs / float(np.linalg.norm(vs))
+                    states.append("slip")
+            else:
+                states.append("stick")
+        states = tuple(states)
+        forces = self.forces(t, y, states)
+        for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
+            if N < 0:
+                raise ArgumentError(
+                    f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
+                    "it opens at once; start the bodies where the contact presses.")
+            if states[k] == "stick" and float(np.linalg.norm(T)) > c.fs * N:
+                states = self._with(states, k, self.slip_state(k, T))
+        return self.m.regime_name(states)
+
+
+def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
+                   rtol: float = 1e-10, atol: float = 1e-12, max_step: float = math.inf,
+                   max_phases: int = 10_000, **params) -> ContactMotion:
+    """Integrate a system with one-sided contacts and dry friction phase by phase, each
+    regime's equations derived from the system (ch. 13.1, 21.4, 23).
+
+    Parameters
+    ----------
+    system : System
+        With at least one :class:`~rigidmech.actions.FrictionContact`.
+    t_span : float or (float, float)
+        End time (from 0) or (start, end).
+    q0, u0 : dict or sequence
+        Initial coordinates and rates (by name or q(t), or in the order of
+        ``system.coordinates``); the contacts must be closed at q0 and u0 must not
+        separate them (v(I) . n = 0).
+    method, rtol, atol, max_step, max_phases
+        Passed to :func:`~rigidmech.regimes.integrate_phases`.
+    **params
+        Values of the constants (by name).
+
+    Returns
+    -------
+    ContactMotion
+        Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact`` (one contact),
+        or ``"I: stick; J: slip+"`` (several, by the names of their points).
+
+    Raises
+    ------
+    ConnectionError\_
+        A system without contact, or a contact whose coordinates forbid the motions the
+        regimes need.
+    ArgumentError
+        Missing or unknown parameters, bad initial values, a contact that pulls at t0 or a
+        normal velocity at t0.
+
+    Examples
+    --------
+    A block of mass m on a spring (zero free length) on a rough floor, released at x = 1:
+
+    >>> import rigidmech as rm
+    >>> from rigidmech.actions import Coulomb, FrictionContact, Spring
+    >>> from rigidmech.kinematics import ContactKinematics
+    >>> x, y = rm.coordinates("x y")
+    >>> R0 = rm.Frame("R0"); G = R0.point("G", x, y, 0); R1 = R0.translated("R1", G)
+    >>> block = rm.Body("block", frame=R1, mass=1, centre=G)
+    >>> s = rm.System(galilean=R0)
+    >>> s.connect(R0, block, FrictionContact(ContactKinematics(
+    ...     R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(0.15)))
+    >>> s.act(rm.gravity(-R0.j))
+    >>> s.act(Spring(1, 0, a=R0.origin, b=G, on_b=block))
+    >>> m = contact_motion(s, 20.0, {"x": 1.0, "y": 0.0}, rtol=1e-12)
+    >>> m.regimes                       # half-cycles of pi, amplitude -0.3 each
+    ('slip-', 'slip+', 'slip-', 'stick')
+    >>> round(m.phases[-1].start, 9), round(m.phases[-1].y_start[0], 9)
+    (9.424777961, -0.1)
+    """
+    if not isinstance(system, System):
+        raise ArgumentTypeError(f"`system` must be a System; got {type(system).__name__}.")
+    if not system.contacts:
+        raise ConnectionError_("the system has no FrictionContact: simulate its "
+                               "equations_of_motion() instead.")
+    try:
+        span = (0.0, float(t_span)) if np.ndim(t_span) == 0 else tuple(float(v) for v in t_span)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"`t_span` must be an end time or a pair of times; got "
+                            f"{t_span!r}.") from None
+    model = _Model(system, params)
+    coords = system.coordinates
+    y0 = np.concatenate([_state_vector(q0, coords, "q0"), _state_vector(u0, coords, "u0")])
+    vals = model.values(span[0], y0)
+    for c in model.contacts:
+        vn = float(vals[c.normal.c])
+        if abs(vn) > 1e-9 * (1.0 + float(np.linalg.norm(y0[model.n:]))):
+            raise ArgumentError(f"`u0` separates the contact {c.name}: its normal velocity is "
+                                f"{vn:.6g} at t0 (it must be 0).")
+    rules = _Rules(model)
+    motion = integrate_phases(rules.regimes(), rules.start, span, y0, method=method,
+                              rtol=rtol, atol=atol, max_step=max_step, max_phases=max_phases)
+    return ContactMotion(motion.phases, model)
