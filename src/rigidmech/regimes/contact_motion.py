@@ -146,7 +146,7 @@ class _Model:
             rows.append((J, h, c))
             return len(rows) - 1
 
-        for label, velocity, _ in system.closure_conditions():
+        for _label, velocity, _ in system.closure_conditions():
             self.closures.append(row(velocity))
         for k, (_, child, contact) in enumerate(system.contacts):
             kin = contact.contact
@@ -492,7 +492,7 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
 
     Raises
     ------
-    ConnectionError\_
+    ConnectionError\\_
         A system without contact, or a contact whose coordinates forbid the motions the
         regimes need.
     ArgumentError
