@@ -22,7 +22,7 @@ import sympy.physics.mechanics as me
 
 import rigidmech as rm
 from rigidmech.dynamics import System
-from rigidmech.kinematics import Contact
+from rigidmech.kinematics import ContactKinematics
 
 L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5
 
@@ -112,7 +112,7 @@ def disc_rigidmech():
     disc = rm.Body("disc", frame=D, mass=m, centre=G,
                    inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
     s = System(galilean=R0)
-    s.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I0, normal=R0.k)))
+    s.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I0, normal=R0.k)))
     s.act(rm.gravity(-g * R0.k))
     return s.equations_of_motion()
 

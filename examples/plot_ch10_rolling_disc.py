@@ -20,7 +20,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import rigidmech as rm
-from rigidmech.kinematics import Contact
+from rigidmech.kinematics import ContactKinematics
 
 x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
 m, g, r = rm.constants("m g r", positive=True)
@@ -33,7 +33,7 @@ D = B.rotated("D", about=B.k, angle=phi, origin=G)     # spin about the disc's a
 disc = rm.Body("disc", frame=D, mass=m, centre=G,
                inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
 system = rm.System(galilean=R0)
-system.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I, normal=R0.k)))
+system.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I, normal=R0.k)))
 system.act(rm.gravity(-g * R0.k))
 for label, condition, _ in system.closure_conditions():
     print(label, ":", condition, "= 0")

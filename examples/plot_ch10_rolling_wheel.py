@@ -23,13 +23,13 @@ import numpy as np
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech.kinematics import Circle, Contact, Solid, centrodes, instantaneous_centre
+from rigidmech.kinematics import Circle, ContactKinematics, Solid, centrodes, instantaneous_centre
 
 x, theta = rm.coordinates("x theta")
 r = sp.Symbol("r", positive=True)
 R0 = rm.Frame("R0")
 wheel = R0.rotated("R1", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
-contact = Contact.between(wheel, Circle(wheel.origin, r, normal=R0.k),
+contact = ContactKinematics.between(wheel, Circle(wheel.origin, r, normal=R0.k),
                           R0, rm.Line(R0.origin, R0.i))
 rolling = rm.joints.RollingContact(contact)
 print("contact point:", contact.point.coordinates(R0).T, " normal:", contact.normal)

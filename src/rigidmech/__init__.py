@@ -8,7 +8,7 @@ dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 from . import actions, errors, inertia, ode, regimes, scenes, statics, vibrations
 from . import actions as joints
 from ._core.version import __version__ as __version__
-from .actions import Contact, Coulomb, Couple, Force, Spring, gravity, power
+from .actions import ContactLaws, Coulomb, Couple, Force, FrictionContact, Spring, gravity, power
 from .dynamics import EquationsOfMotion, Simulation, System
 from .inertia import InertiaOperator
 from .kinematics import (
@@ -70,9 +70,15 @@ __all__ = [
     "vibrations",
 ]
 __all__ += ["velocity_composition", "acceleration_composition"]
-__all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "Contact"]
+__all__ += ["statics", "regimes", "Statics", "Catenary", "Coulomb", "ContactLaws",
+            "FrictionContact"]
 
 from . import systems  # noqa: E402
 from .systems import Mechanism  # noqa: E402
 
 __all__ += ["systems", "Mechanism"]
+
+from ._core.deprecation import deprecated_aliases  # noqa: E402
+
+# ``rm.Contact`` was ContactLaws (rigidmech.kinematics.Contact another class): renamed
+__getattr__ = deprecated_aliases(__name__, {"Contact": ("rigidmech.ContactLaws", ContactLaws)})

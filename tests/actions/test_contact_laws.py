@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 import rigidmech as rm
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
-from rigidmech.actions import Contact, Coulomb, PivotingResistance, RollingResistance, power
+from rigidmech.actions import ContactLaws, Coulomb, PivotingResistance, RollingResistance, power
 
 R0 = rm.Frame("R0")
 I = R0.origin
@@ -56,9 +56,9 @@ def test_bad_input_types_and_missing_directions():
     with pytest.raises(ArgumentTypeError, match=r"`static` must be"):
         Coulomb("slippery")
     with pytest.raises(ArgumentError, match=r"`tangent` is needed with `friction`"):
-        Contact(at=I, normal=R0.j, friction=Coulomb(0.3))
+        ContactLaws(at=I, normal=R0.j, friction=Coulomb(0.3))
     with pytest.raises(ArgumentError, match=r"`rolling_axis` is needed with `rolling`"):
-        Contact(at=I, normal=R0.j, rolling=0.01)
+        ContactLaws(at=I, normal=R0.j, rolling=0.01)
     with pytest.raises(ArgumentError, match=r"`coefficient` must be a length >= 0"):
         RollingResistance(-1)
     with pytest.raises(ArgumentError, match=r"`sliding_velocity` must be non-zero"):
@@ -77,7 +77,7 @@ def test_sliding_action_is_a_slider_opposing_the_sliding_velocity():
 
 
 def test_contact_action_torsor_and_conditions():
-    c = Contact(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(0.3),
+    c = ContactLaws(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(0.3),
                 rolling=0.01, rolling_axis=R0.k, pivoting=0.02)
     T, unknowns = c.action_torsor("1")
     assert [str(u) for u in unknowns] == ["N_1", "T_1", "Mr_1", "Mp_1"]
@@ -102,7 +102,7 @@ def test_friction_never_does_positive_work(vals, N, f, delta, eta):
     v[1] = 0.0                                     # contact kept: no velocity along n = j
     if np.linalg.norm(v) < 1e-6 or np.linalg.norm(w[[0, 2]]) < 1e-6 or abs(w[1]) < 1e-6:
         return
-    c = Contact(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(f), rolling=delta,
+    c = ContactLaws(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(f), rolling=delta,
                 rolling_axis=R0.k, pivoting=eta)
     V = rm.Torsor(R0.vector(*w), R0.vector(*v), I)
     A = c.action(N, V)

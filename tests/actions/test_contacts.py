@@ -11,7 +11,7 @@ from hypothesis import strategies as st
 
 import rigidmech as rm
 from rigidmech._core.errors import ConnectionError_
-from rigidmech.kinematics import Circle, Contact, Gear, GearPair, Sphere, kinematic_torsor
+from rigidmech.kinematics import Circle, ContactKinematics, Gear, GearPair, Sphere, kinematic_torsor
 
 r = sp.Symbol("r", positive=True)
 t = rm.t
@@ -22,7 +22,7 @@ def _ball():
     x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
     R0 = rm.Frame("R0")
     ball = R0.euler("B", psi, theta, phi, origin=R0.point("C", x, y, r))
-    contact = Contact.between(ball, Sphere(ball.origin, r), R0, rm.Plane(R0.origin, R0.k))
+    contact = ContactKinematics.between(ball, Sphere(ball.origin, r), R0, rm.Plane(R0.origin, R0.k))
     return R0, ball, contact, (x, y, psi, theta, phi)
 
 
@@ -111,7 +111,7 @@ def test_planar_wheel_rolling_contact_is_holonomic():
     x, theta = rm.coordinates("x theta")
     R0 = rm.Frame("R0")
     R1 = R0.rotated("R1", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
-    rc = rm.joints.RollingContact(Contact.between(R1, Circle(R1.origin, r, normal=R0.k),
+    rc = rm.joints.RollingContact(ContactKinematics.between(R1, Circle(R1.origin, r, normal=R0.k),
                                                   R0, rm.Line(R0.origin, R0.i)))
     assert rc.holonomic and rc.solids[0].frame is R1
     (rel,) = rc.position_constraints({x: 0, theta: 0})
@@ -128,5 +128,5 @@ def test_bad_input_is_refused():
         rm.joints.GearMesh(-0.5, g1, g2, carrier=R0, axis=R0.k)
     with pytest.raises(ValueError, match="`axis` must be fixed in the carrier"):
         rm.joints.GearMesh(pair, g1, g2, carrier=R0, axis=g1.i)
-    with pytest.raises(TypeError, match="`contact` must be a Contact"):
+    with pytest.raises(TypeError, match="`contact` must be a ContactKinematics"):
         rm.joints.RollingContact(R0)

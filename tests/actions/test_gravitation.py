@@ -16,16 +16,16 @@ from rigidmech.actions import (
     Attractor,
     NewtonAttraction,
     SphericalBodyAttraction,
-    homogeneous_sphere,
-    point_mass,
-    spherical_shell,
+    homogeneous_sphere_attractor,
+    point_mass_attractor,
+    spherical_shell_attractor,
     surface_gravity,
 )
 
 M, R, G, r = sp.symbols("M R G r", positive=True)
 
 
-@pytest.mark.parametrize("make", [homogeneous_sphere, spherical_shell])
+@pytest.mark.parametrize("make", [homogeneous_sphere_attractor, spherical_shell_attractor])
 @pytest.mark.parametrize("branch", [0, 1], ids=["outside", "inside"])
 def test_field_is_minus_the_derivative_of_the_potential(make, branch):
     """g(r) = dV/dr on each branch of the piecewise expressions (the field points towards
@@ -37,7 +37,7 @@ def test_field_is_minus_the_derivative_of_the_potential(make, branch):
     assert sp.simplify(g.args[branch][0] - sp.diff(V.args[branch][0], r)) == 0
 
 
-@pytest.mark.parametrize("make", [homogeneous_sphere, spherical_shell])
+@pytest.mark.parametrize("make", [homogeneous_sphere_attractor, spherical_shell_attractor])
 def test_potential_continuous_at_the_surface_and_outer_law(make):
     body = make(M, R, G=G)
     assert sp.simplify(body.potential(R) + G * M / R) == 0
@@ -50,9 +50,9 @@ def test_solid_sphere_inside_by_gauss(k):
     """Gauss: g(r) = G M(r) / r^2 with M(r) = M r^3 / R^3 inside (ch. 12.1.3); the shell
     encloses no mass: g = 0 inside."""
     rr = k * R
-    assert sp.simplify(homogeneous_sphere(M, R, G=G).field_magnitude(rr)
+    assert sp.simplify(homogeneous_sphere_attractor(M, R, G=G).field_magnitude(rr)
                        - G * (M * rr**3 / R**3) / rr**2) == 0
-    assert spherical_shell(M, R, G=G).field_magnitude(rr) == 0
+    assert spherical_shell_attractor(M, R, G=G).field_magnitude(rr) == 0
 
 
 @pytest.mark.parametrize("rr", [0.3, 0.7, 1.5, 4.0])
@@ -65,7 +65,8 @@ def test_shell_potential_against_numerical_integration(rr):
         return math.sin(th) / math.sqrt(rr**2 + Rn**2 - 2 * rr * Rn * math.cos(th))
 
     expected = -Gn * Mn / 2 * quad(f, 0, math.pi, epsabs=1e-14, epsrel=1e-13)[0]
-    assert_allclose(float(spherical_shell(Mn, Rn, G=Gn).potential(rr)), expected, rtol=1e-11)
+    assert_allclose(float(spherical_shell_attractor(Mn, Rn, G=Gn).potential(rr)), expected,
+                    rtol=1e-11)
 
 
 @pytest.mark.parametrize("rr", [0.0, 0.3, 1.0, 2.5])
@@ -79,24 +80,25 @@ def test_solid_sphere_potential_from_the_field(rr):
 
     inner = quad(g, rr, Rn, epsabs=1e-14, epsrel=1e-13)[0] if rr < Rn else 0.0
     outer = quad(g, max(rr, Rn), math.inf, epsabs=1e-14, epsrel=1e-13)[0]
-    assert_allclose(float(homogeneous_sphere(Mn, Rn, G=Gn).potential(rr)), -(inner + outer),
+    assert_allclose(float(homogeneous_sphere_attractor(Mn, Rn, G=Gn).potential(rr)),
+                    -(inner + outer),
                     rtol=1e-11)
 
 
 def test_symbolic_piecewise_and_point_mass():
-    assert isinstance(homogeneous_sphere(M, R, G=G).potential(r), sp.Piecewise)
-    assert point_mass(M, G=G).potential(r) == -G * M / r
-    assert point_mass(M, G=G).field_magnitude(r) == G * M / r**2
-    assert point_mass(M).G == GRAVITATIONAL_CONSTANT
-    assert point_mass(M, G=G).mu == G * M
-    assert "homogeneous sphere" in repr(homogeneous_sphere(M, R))
+    assert isinstance(homogeneous_sphere_attractor(M, R, G=G).potential(r), sp.Piecewise)
+    assert point_mass_attractor(M, G=G).potential(r) == -G * M / r
+    assert point_mass_attractor(M, G=G).field_magnitude(r) == G * M / r**2
+    assert point_mass_attractor(M).G == GRAVITATIONAL_CONSTANT
+    assert point_mass_attractor(M, G=G).mu == G * M
+    assert "homogeneous sphere" in repr(homogeneous_sphere_attractor(M, R))
 
 
 def test_gravity_is_the_local_approximation():
     """m V(R + h) = m V(R) + m (G M / R^2) h + O(h^2) (ch. 12.2): gravity g = G M / R^2;
     for the Earth (M = 5.972e24 kg, R = 6.371e6 m) g = 9.82 m/s^2."""
     h, m = sp.symbols("h m", positive=True)
-    V = homogeneous_sphere(M, R, G=G).potential(R + h)
+    V = homogeneous_sphere_attractor(M, R, G=G).potential(R + h)
     series = sp.series(m * V, h, 0, 2).removeO()
     assert sp.simplify(series - (-G * M * m / R + m * G * M / R**2 * h)) == 0
     assert sp.simplify(surface_gravity(M, R, G=G) - G * M / R**2) == 0
@@ -104,7 +106,7 @@ def test_gravity_is_the_local_approximation():
     assert_allclose(g, 6.67430e-11 * 5.972e24 / 6.371e6**2, rtol=1e-14)
     assert round(g, 2) == 9.82
     R0 = rm.Frame("R0")
-    grav = point_mass(M, G=G).local_gravity(R0.point("P", 0, 0, R), centre=R0.origin)
+    grav = point_mass_attractor(M, G=G).local_gravity(R0.point("P", 0, 0, R), centre=R0.origin)
     assert grav.field.equals(-G * M / R**2 * R0.k)
 
 
@@ -138,13 +140,13 @@ def test_newton_attraction_forces_derive_from_the_potential():
 def test_spherical_body_attraction():
     """Force m g(P) derives from m V; below the surface the solid sphere pulls linearly."""
     (x, y, z), m1, m2, R0, a, b = _two_bodies()
-    earth = SphericalBodyAttraction(point_mass(M, G=G), centre=R0.origin)
+    earth = SphericalBodyAttraction(point_mass_attractor(M, G=G), centre=R0.origin)
     Ep = earth.potential_energy([a, b], R0)
     (_, Fa), (_, Fb) = earth.contributions([a, b])
     for c, q in zip(Fb.resultant.components(R0), (x, y, z), strict=True):
         assert sp.simplify(c + sp.diff(Ep, q)) == 0
     assert earth.body.kind == "point mass" and "SphericalBodyAttraction" in repr(earth)
-    inner = SphericalBodyAttraction(homogeneous_sphere(M, 10, G=G), centre=R0.origin)
+    inner = SphericalBodyAttraction(homogeneous_sphere_attractor(M, 10, G=G), centre=R0.origin)
     (_, F), = inner.contributions([a])  # A at distance sqrt(5) < 10
     assert F.resultant.equals(-G * M * m1 / 1000 * (a.centre - R0.origin))
     assert inner.contributions([rm.Body("s", frame=R0)]) == []
@@ -152,22 +154,22 @@ def test_spherical_body_attraction():
 
 def test_bad_input():
     with pytest.raises(ArgumentError, match="`mass` must be >= 0; got -1"):
-        point_mass(-1)
+        point_mass_attractor(-1)
     with pytest.raises(ArgumentError, match="`mass` must be >= 0"):
-        homogeneous_sphere(-sp.Symbol("m", positive=True), 1)
+        homogeneous_sphere_attractor(-sp.Symbol("m", positive=True), 1)
     with pytest.raises(ArgumentError, match="`radius` must be > 0; got 0"):
-        homogeneous_sphere(1, 0)
+        homogeneous_sphere_attractor(1, 0)
     with pytest.raises(ArgumentError, match="`G` must be > 0"):
-        point_mass(1, G=-1)
+        point_mass_attractor(1, G=-1)
     with pytest.raises(ArgumentError, match="`mass` must be finite"):
-        point_mass(sp.oo)
+        point_mass_attractor(sp.oo)
     with pytest.raises(ArgumentTypeError, match="`mass` must be a number"):
-        point_mass("a b c (")
+        point_mass_attractor("a b c (")
     with pytest.raises(ArgumentError, match="`r` must be > 0 for a point mass"):
-        point_mass(1).potential(0)
+        point_mass_attractor(1).potential(0)
     with pytest.raises(ArgumentError, match="`r` must be > 0 for a point mass"):
-        point_mass(1).field_magnitude(0)
-    assert homogeneous_sphere(1, 1).field_magnitude(0) == 0
+        point_mass_attractor(1).field_magnitude(0)
+    assert homogeneous_sphere_attractor(1, 1).field_magnitude(0) == 0
     with pytest.raises(ArgumentError, match="`kind` must be one of"):
         Attractor("cube", 1, 1)
     R0 = rm.Frame("R0")

@@ -1,4 +1,4 @@
-"""Contact of two solids, contact geometry and kinematic constraints (book, ch. 10.1).
+"""ContactKinematics of two solids, contact geometry and kinematic constraints (book, ch. 10.1).
 
 Expected values are closed forms worked out in the comments (the geometry of spheres, circles
 and planes; the velocity field of a solid, v(B) = v(A) + omega ^ AB)."""
@@ -14,7 +14,7 @@ import rigidmech as rm
 from rigidmech._core.errors import ConnectionError_
 from rigidmech.kinematics import (
     Circle,
-    Contact,
+    ContactKinematics,
     Cylinder,
     Sphere,
     VelocityConstraint,
@@ -119,15 +119,15 @@ def test_not_in_contact_and_bad_radii_are_refused(R0):
     with pytest.raises(TypeError, match="contact between a Sphere and a Line is not treated"):
         contact_geometry(Sphere(R0.origin, 1), rm.Line(R0.origin, R0.i))
     with pytest.raises(TypeError, match="`moving` must be a Solid, a Body or a Frame"):
-        Contact("wheel", R0, at=R0.origin, normal=R0.k)
+        ContactKinematics("wheel", R0, at=R0.origin, normal=R0.k)
     with pytest.raises(ValueError, match="`inner` must be None, 'moving' or 'other'"):
-        Contact.between(R0, Circle(R0.origin, 1, normal=R0.k), R0,
+        ContactKinematics.between(R0, Circle(R0.origin, 1, normal=R0.k), R0,
                         Circle(R0.origin, 2, normal=R0.k), inner="first")
     with pytest.raises(ValueError, match="`inner` must be None, 'first' or 'second'"):
         contact_geometry(Circle(R0.origin, 1, normal=R0.k), Circle(R0.origin, 2, normal=R0.k),
                          inner="moving")
     with pytest.raises(ValueError, match="`normal` must be a non-zero Vector"):
-        Contact(R0, R0, at=R0.origin, normal=rm.Vector.zero())
+        ContactKinematics(R0, R0, at=R0.origin, normal=rm.Vector.zero())
 
 
 def test_sliding_rolling_spinning_of_a_top_on_a_plane(R0):
@@ -138,7 +138,7 @@ def test_sliding_rolling_spinning_of_a_top_on_a_plane(R0):
     R1 = R0.translated("T", R0.point("P", x, 0, 0))
     R2 = R1.rotated("R2", about=R1.k, angle=s)
     R3 = R2.rotated("R3", about=R2.i, angle=p)
-    c = Contact(R3, R0, at=R1.origin, normal=R0.k)
+    c = ContactKinematics(R3, R0, at=R1.origin, normal=R0.k)
     w = R3.rotation_vector(R0)
     assert c.sliding_velocity.equals(x.diff(rm.t) * R0.i)
     assert (c.rolling + c.spinning).equals(w)
@@ -152,7 +152,7 @@ def test_sliding_rolling_spinning_of_a_top_on_a_plane(R0):
 
 def test_tangents_without_an_orthogonal_basis_vector(R0):
     n = (R0.i + R0.j + R0.k) / sp.sqrt(3)
-    c = Contact(R0, R0, at=R0.origin, normal=n)
+    c = ContactKinematics(R0, R0, at=R0.origin, normal=n)
     t1, t2 = c.tangents()
     for u, v in ((t1, t1), (t2, t2), (n, n)):
         assert sp.simplify(u.dot(v) - 1) == 0
@@ -192,7 +192,7 @@ def test_sliding_velocity_on_a_moving_solid_is_the_difference_of_velocities(R0):
     belt = R0.translated("B", R0.point("S", s, 0, 0))
     wheel = R0.rotated("W", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
     I = R0.point("I", x, 0, 0)
-    c = Contact(wheel, belt, at=I, normal=R0.j)
+    c = ContactKinematics(wheel, belt, at=I, normal=R0.j)
     d = [q.diff(rm.t) for q in (x, theta, s)]
     assert c.sliding_velocity.equals((d[0] + r * d[1] - d[2]) * R0.i)
     absolute = rm.Solid("W", wheel).velocity(I, relative_to=R0) - rm.Solid(
@@ -215,7 +215,7 @@ def test_rotation_splits_into_rolling_and_spinning(n, rates):
     R1 = R0.rotated("R1", about=R0.k, angle=q1)
     R2 = R1.rotated("R2", about=R1.i, angle=q2)
     R3 = R2.rotated("R3", about=R2.k, angle=q3)
-    c = Contact(R3, R0, at=R0.origin, normal=R0.vector(*n))
+    c = ContactKinematics(R3, R0, at=R0.origin, normal=R0.vector(*n))
     values = {q.diff(rm.t): v for q, v in zip((q1, q2, q3), rates, strict=True)}
     values.update({q1: 0.3, q2: -1.1, q3: 2.0})
     num = [np.array(v.components(R0).subs(values), dtype=float).ravel()

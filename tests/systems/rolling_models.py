@@ -6,7 +6,7 @@ import sympy.physics.mechanics as me
 
 import rigidmech as rm
 from rigidmech.dynamics import System
-from rigidmech.kinematics import Circle, Contact
+from rigidmech.kinematics import Circle, ContactKinematics
 from rigidmech.kinematics.surfaces import Plane
 
 
@@ -21,7 +21,7 @@ def wheel_on_incline(alpha, inertia="disk"):
     R1 = Ri.rotated("R1", about=R0.k, angle=th, origin=C)
     J = getattr(rm.inertia, inertia)(m, r, axis=R1.k, centre=C)
     wheel = rm.Body("wheel", frame=R1, mass=m, centre=C, inertia=J)
-    contact = Contact.between(R1, Circle(C, r, normal=R0.k), R0, rm.Line(R0.origin, Ri.i))
+    contact = ContactKinematics.between(R1, Circle(C, r, normal=R0.k), R0, rm.Line(R0.origin, Ri.i))
     s = System(galilean=R0)
     s.connect(R0, wheel, rm.actions.RollingContact(contact))
     s.act(rm.gravity(-g * R0.j))
@@ -40,7 +40,7 @@ def rolling_disc():
     D = B.rotated("D", about=B.k, angle=phi, origin=G)
     disc = rm.Body("disc", frame=D, mass=m, centre=G,
                    inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-    contact = Contact.between(D, Circle(G, r, normal=D.k), R0, Plane(R0.origin, R0.k))
+    contact = ContactKinematics.between(D, Circle(G, r, normal=D.k), R0, Plane(R0.origin, R0.k))
     s = System(galilean=R0)
     s.connect(R0, disc, rm.actions.RollingContact(contact))
     s.act(rm.gravity(-g * R0.k))

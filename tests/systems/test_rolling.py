@@ -19,7 +19,7 @@ from rolling_models import rolling_disc, rolling_disc_kane, wheel_on_incline
 import rigidmech as rm
 from rigidmech.dynamics import System
 from rigidmech.errors import ConnectionError_
-from rigidmech.kinematics import Circle, Contact, Gear, GearPair
+from rigidmech.kinematics import Circle, ContactKinematics, Gear, GearPair
 
 
 @pytest.mark.parametrize(("inertia", "ratio"), [pytest.param("disk", sp.Rational(2, 3), id="disc"),
@@ -98,7 +98,7 @@ def test_rolling_contact_must_join_the_connected_bodies():
     R0 = s.galilean
     other = R0.rotated("Rx", about=R0.k, angle=rm.coordinates("z"))
     body = rm.Body("other", frame=other)
-    contact = Contact(other, R0, at=R0.origin, normal=R0.j)
+    contact = ContactKinematics(other, R0, at=R0.origin, normal=R0.j)
     with pytest.raises(ConnectionError_, match=r"RollingContact joins the frames Rx and R0"):
         s.connect(s.bodies[0], body, rm.actions.RollingContact(contact))
 
@@ -108,7 +108,8 @@ def test_surfaces_not_in_contact_are_refused():
     R0 = rm.Frame("R0")
     R1 = R0.translated("R1", R0.point("C", x, 2, 0))
     with pytest.raises(ConnectionError_, match=r"not in contact|do not touch|contact"):
-        Contact.between(R1, Circle(R1.origin, 1, normal=R0.k), R0, rm.Line(R0.origin, R0.i))
+        ContactKinematics.between(R1, Circle(R1.origin, 1, normal=R0.k), R0,
+                                  rm.Line(R0.origin, R0.i))
 
 
 def test_contact_action_of_the_rolling_wheel():

@@ -30,7 +30,7 @@ import rigidmech as rm
 from rigidmech.kinematics import (
     BeltDrive,
     Circle,
-    Contact,
+    ContactKinematics,
     EpicyclicTrain,
     Gear,
     GearPair,
@@ -51,7 +51,7 @@ def wheel():
     x, theta = rm.coordinates("x theta")
     R0 = rm.Frame("R0")
     R1 = R0.rotated("R1", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
-    rolling = rm.joints.RollingContact(Contact.between(
+    rolling = rm.joints.RollingContact(ContactKinematics.between(
         R1, Circle(R1.origin, r, normal=R0.k), R0, rm.Line(R0.origin, R0.i)))
     (rel,) = rolling.position_constraints({x: 0, theta: 0})
     x_of_theta = sp.solve(rel, x)[0]  # x = -r theta
@@ -103,7 +103,7 @@ def hypocycloid():
     arm = R0.rotated("Ra", about=R0.k, angle=psi)
     C = R0.origin.moved("C", (R - r) * arm.i)
     disc = R0.rotated("Rd", about=R0.k, angle=theta, origin=C)
-    contact = Contact.between(disc, Circle(C, r, normal=R0.k), R0,
+    contact = ContactKinematics.between(disc, Circle(C, r, normal=R0.k), R0,
                               Circle(R0.origin, R, normal=R0.k), inner="moving")
     rolling = rm.joints.RollingContact(contact)
     (rel,) = rolling.position_constraints({psi: 0, theta: 0})
@@ -182,9 +182,9 @@ def test_ch10_epicyclic_train_from_rolling_solids():
     carrier = R0.rotated("K", about=R0.k, angle=c)
     pin = R0.origin.moved("Pc", (rs + rp) * carrier.i)
     planet = R0.rotated("P", about=R0.k, angle=p, origin=pin)
-    sun_planet = Contact.between(planet, Circle(pin, rp, normal=R0.k),
+    sun_planet = ContactKinematics.between(planet, Circle(pin, rp, normal=R0.k),
                                  sun, Circle(R0.origin, rs, normal=R0.k))
-    planet_ring = Contact.between(planet, Circle(pin, rp, normal=R0.k), R0,
+    planet_ring = ContactKinematics.between(planet, Circle(pin, rp, normal=R0.k), R0,
                                   Circle(R0.origin, rs + 2 * rp, normal=R0.k), inner="moving")
     eqs = [*sun_planet.without_slipping_equations(), *planet_ring.without_slipping_equations()]
     sol = sp.solve(eqs, [c.diff(t), p.diff(t)], dict=True)[0]
@@ -253,7 +253,7 @@ def test_ch10_sphere_rolling_on_a_plane_no_slip_conditions():
     x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
     R0 = rm.Frame("R0")
     ball = R0.euler("B", psi, theta, phi, origin=R0.point("C", x, y, r))
-    c = Contact.between(ball, Sphere(ball.origin, r), R0, rm.Plane(R0.origin, R0.k))
+    c = ContactKinematics.between(ball, Sphere(ball.origin, r), R0, rm.Plane(R0.origin, R0.k))
     d = [v.diff(t) for v in (psi, theta, phi)]
     wx = d[1] * sp.cos(psi) + d[2] * sp.sin(psi) * sp.sin(theta)
     wy = d[1] * sp.sin(psi) - d[2] * sp.cos(psi) * sp.sin(theta)
@@ -315,7 +315,7 @@ def test_ch10_rolling_disc_contact_point_and_no_slip_vs_sympy_mechanics():
     Rt = Rp.rotated("Rt", about=Rp.i, angle=theta)
     C = R0.point("P", x, y, 0).moved("C", r * Rt.j)
     disc = Rt.rotated("D", about=Rt.k, angle=phi, origin=C)
-    c = Contact.between(disc, Circle(C, r, normal=disc.k), R0, rm.Plane(R0.origin, R0.k))
+    c = ContactKinematics.between(disc, Circle(C, r, normal=disc.k), R0, rm.Plane(R0.origin, R0.k))
     assert [sp.simplify(v) for v in c.point.coordinates(R0)] == [x, y, 0]
     assert c.normal == R0.k
     assert sp.simplify(c.persistence_equation()) == 0  # the contact persists identically

@@ -19,9 +19,9 @@ from rigidmech.actions import (
     GRAVITATIONAL_CONSTANT,
     NewtonAttraction,
     SphericalBodyAttraction,
-    homogeneous_sphere,
-    point_mass,
-    spherical_shell,
+    homogeneous_sphere_attractor,
+    point_mass_attractor,
+    spherical_shell_attractor,
     surface_gravity,
 )
 from rigidmech.kinematics import escape_speed
@@ -52,7 +52,7 @@ def test_earth_moon_attraction():
 ])
 def test_gravity_inside_the_homogeneous_earth(depth_fraction, expected_ratio):
     """g(r) = g0 r / R inside a homogeneous sphere (ch. 12.1.3)."""
-    earth = homogeneous_sphere(M_EARTH, R_EARTH)
+    earth = homogeneous_sphere_attractor(M_EARTH, R_EARTH)
     r = R_EARTH * (1 - depth_fraction)
     g0 = G * M_EARTH / R_EARTH**2
     assert_allclose(float(earth.field_magnitude(r)), expected_ratio * g0, rtol=1e-13)
@@ -63,14 +63,14 @@ def test_gravity_at_the_surface_and_with_altitude():
     g0 = float(surface_gravity(M_EARTH, R_EARTH))
     assert_allclose(g0, G * M_EARTH / R_EARTH**2, rtol=1e-14)
     assert round(g0, 2) == 9.82
-    g400 = float(point_mass(M_EARTH).field_magnitude(R_EARTH + 400e3))
+    g400 = float(point_mass_attractor(M_EARTH).field_magnitude(R_EARTH + 400e3))
     assert_allclose(g400, g0 * (R_EARTH / (R_EARTH + 400e3)) ** 2, rtol=1e-13)
     assert round(g400, 2) == 8.69
 
 
 def test_spherical_shell_theorem():
     """No field inside a shell; outside as a point mass (ch. 12.1.3)."""
-    shell = spherical_shell(1.0e3, 2.0)
+    shell = spherical_shell_attractor(1.0e3, 2.0)
     assert shell.field_magnitude(1.0) == 0
     assert_allclose(float(shell.field_magnitude(4.0)), G * 1.0e3 / 16, rtol=1e-14)
 
@@ -81,7 +81,8 @@ def test_escape_speed_from_the_energy():
     m, v = sp.symbols("m v", positive=True)
     R0 = rm.Frame("R0")
     probe = rm.Body("probe", frame=R0.translated("Rp", R0.point("P", R_EARTH, 0, 0)), mass=m)
-    earth = SphericalBodyAttraction(homogeneous_sphere(M_EARTH, R_EARTH), centre=R0.origin)
+    earth = SphericalBodyAttraction(homogeneous_sphere_attractor(M_EARTH, R_EARTH),
+                                    centre=R0.origin)
     Ep = earth.potential_energy([probe], R0)
     (v_esc,) = sp.solve(m * v**2 / 2 + Ep, v)
     assert_allclose(float(v_esc), escape_speed(G * M_EARTH, R_EARTH), rtol=1e-13)
@@ -90,9 +91,9 @@ def test_escape_speed_from_the_energy():
 
 def test_negative_mass_is_refused():
     with pytest.raises(ArgumentError, match="`mass` must be >= 0; got -5.972e\\+24"):
-        homogeneous_sphere(-M_EARTH, R_EARTH)
+        homogeneous_sphere_attractor(-M_EARTH, R_EARTH)
     with pytest.raises(ArgumentError, match="`mass` must be >= 0"):
-        point_mass(-1.0)
+        point_mass_attractor(-1.0)
     R0 = rm.Frame("R0")
     with pytest.raises(ArgumentError, match="`mass` must be >= 0"):
         NewtonAttraction(rm.Body("a", frame=R0, mass=-1), rm.Body("b", frame=R0, mass=1))

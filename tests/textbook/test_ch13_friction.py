@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech.actions import Contact, Coulomb, Couple, Force, gravity, power
+from rigidmech.actions import ContactLaws, Coulomb, Couple, Force, gravity, power
 from rigidmech.statics import Statics, limiting_equilibrium
 
 
@@ -24,7 +24,7 @@ def test_ch13_limit_angle_of_an_incline_is_the_cone_half_angle():
     R1 = R0.rotated("R1", about=R0.k, angle=alpha)
     block = rm.Body("block", frame=R1, mass=1.0, centre=R1.origin)
     st = Statics(R0)
-    st.connect(R0, block, Contact(at=R1.origin, normal=R1.j, tangent=R1.i, friction=law),
+    st.connect(R0, block, ContactLaws(at=R1.origin, normal=R1.j, tangent=R1.i, friction=law),
                label="I")
     st.act(gravity(-9.81 * R0.j))
     lim = limiting_equilibrium(st, alpha, (0.0, 1.2))
@@ -39,7 +39,7 @@ def test_ch13_power_of_sliding_friction_is_minus_f_N_v():
     R0 = rm.Frame("R0")
     R1 = R0.translated("R1", R0.point("P", x, 0, 0))
     V = rm.kinematic_torsor(R1, relative_to=R0, at=R1.origin)
-    c = Contact(at=R1.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(f))
+    c = ContactLaws(at=R1.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(f))
     A = c.action(N, V)
     p = power(A, V)
     v = sp.Symbol("v", positive=True)
@@ -59,7 +59,7 @@ def test_ch13_rolling_resistance_wheel(delta, fs, kind, expected):
     R0 = rm.Frame("R0")
     wheel = rm.Body("wheel", frame=R0)
     st = Statics(R0)
-    st.connect(R0, wheel, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+    st.connect(R0, wheel, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
                                   friction=Coulomb(fs), rolling=delta, rolling_axis=R0.k),
                label="I")
     axle = R0.point("C", 0, 0.3, 0)
@@ -77,7 +77,7 @@ def test_ch13_pivoting_resistance_disc():
     R0 = rm.Frame("R0")
     disc = rm.Body("disc", frame=R0)
     st = Statics(R0)
-    st.connect(R0, disc, Contact(at=R0.origin, normal=R0.j, pivoting=0.02), label="I")
+    st.connect(R0, disc, ContactLaws(at=R0.origin, normal=R0.j, pivoting=0.02), label="I")
     st.act(Force(on=disc, vector=-40.0 * R0.j, at=R0.point("G", 0, 0.01, 0)))
     st.act(Couple(on=disc, moment=C * R0.j))
     lim = limiting_equilibrium(st, C, (0.0, 5.0))
@@ -93,8 +93,8 @@ def test_ch13_one_sided_contact_opens():
     R0 = rm.Frame("R0")
     bar = rm.Body("bar", frame=R0)
     st = Statics(R0)
-    st.connect(R0, bar, Contact(at=R0.origin, normal=R0.j), label="A")
-    st.connect(R0, bar, Contact(at=R0.point("B", 2, 0, 0), normal=R0.j), label="B")
+    st.connect(R0, bar, ContactLaws(at=R0.origin, normal=R0.j), label="A")
+    st.connect(R0, bar, ContactLaws(at=R0.point("B", 2, 0, 0), normal=R0.j), label="B")
     st.act(Force(on=bar, vector=-W * R0.j, at=R0.point("G", 1, 0, 0)))
     st.act(Force(on=bar, vector=-P * R0.j, at=R0.point("D", 3, 0, 0)))
     lim = limiting_equilibrium(st, P, (0.0, 30.0))

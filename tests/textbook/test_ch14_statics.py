@@ -18,7 +18,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import rigidmech as rm
-from rigidmech.actions import Contact, Coulomb, Couple, Force, Pivot, Spherical, gravity
+from rigidmech.actions import ContactLaws, Coulomb, Couple, Force, Pivot, Spherical, gravity
 from rigidmech.statics import EquilibriumError, Statics, limiting_equilibrium
 from rigidmech.torsors import Domain
 
@@ -38,7 +38,7 @@ def beam(L, c, F, q, numeric=False):
     bar = rm.Body("beam", frame=R0)
     st_ = Statics(R0)
     st_.connect(R0, bar, Pivot(at=A, axis=R0.k), label="A")
-    st_.connect(R0, bar, Contact(at=B, normal=R0.j), label="B")
+    st_.connect(R0, bar, ContactLaws(at=B, normal=R0.j), label="B")
     st_.act(Force(on=bar, vector=-F * R0.j, at=R0.point("C", c, 0, 0)))
     x = sp.Symbol("x", real=True)
     st_.distributed_load(bar, -q * R0.j, Domain(R0, x * R0.i, (x, 0, L)))
@@ -170,7 +170,7 @@ def incline(alpha, f, m=2.0, g=9.81):
     st_ = Statics(R0)
     # a flat base of half-width 0.5 (the weight does not pass through I once tilted): it
     # would tip only at tan(alpha) = 0.5 / 0.1, far beyond sliding
-    contact = Contact(at=R1.origin, normal=R1.j, tangent=R1.i, friction=Coulomb(f),
+    contact = ContactLaws(at=R1.origin, normal=R1.j, tangent=R1.i, friction=Coulomb(f),
                       footprint=0.5, rolling_axis=R0.k)
     st_.connect(R0, block, contact, label="I")
     st_.act(gravity(-g * R0.j))
@@ -222,9 +222,9 @@ def test_ch14_ladder_against_a_wall_limit_angle(fA, fB):
     B = A.moved("B", l * R1.i)
     ladder = rm.Body("ladder", frame=R1)
     st_ = Statics(R0)
-    st_.connect(R0, ladder, Contact(at=A, normal=R0.j, tangent=R0.i, friction=Coulomb(fA)),
+    st_.connect(R0, ladder, ContactLaws(at=A, normal=R0.j, tangent=R0.i, friction=Coulomb(fA)),
                 label="A")
-    st_.connect(R0, ladder, Contact(at=B, normal=-R0.i, tangent=R0.j, friction=Coulomb(fB)),
+    st_.connect(R0, ladder, ContactLaws(at=B, normal=-R0.i, tangent=R0.j, friction=Coulomb(fB)),
                 label="B")
     st_.act(Force(on=ladder, vector=-W * R0.j, at=A.moved("G", l / 2 * R1.i)))
     eq = st_.solve(values={theta: 1.3})
@@ -248,7 +248,7 @@ def test_ch14_box_pushed_on_a_floor_slides_or_tips(f, h, first, expected):
     R0 = rm.Frame("R0")
     box = rm.Body("box", frame=R0)
     st_ = Statics(R0)
-    st_.connect(R0, box, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
                                  friction=Coulomb(f), footprint=0.5, rolling_axis=R0.k),
                 label="floor")
     st_.act(Force(on=box, vector=-10.0 * R0.j, at=R0.point("G", 0, 0.5, 0)))
@@ -303,7 +303,7 @@ def test_limit_that_is_not_reached_in_the_interval():
     R0 = rm.Frame("R0")
     box = rm.Body("box", frame=R0)
     st_ = Statics(R0)
-    st_.connect(R0, box, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
                                  friction=Coulomb(0.4), footprint=0.5, rolling_axis=R0.k),
                 label="floor")
     st_.act(Force(on=box, vector=-10.0 * R0.j, at=R0.point("G", 0, 0.5, 0)))
@@ -327,10 +327,10 @@ def test_ch14_two_stacked_blocks_which_interface_slides(f_floor, f_top, contact,
     b1, b2 = rm.Body("block1", frame=R0), rm.Body("block2", frame=R0)
     st_ = Statics(R0)
     # wide bases (half-width 10): no tipping in the range searched
-    st_.connect(R0, b1, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+    st_.connect(R0, b1, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
                                 friction=Coulomb(f_floor), footprint=10, rolling_axis=R0.k),
                 label="floor")
-    st_.connect(b1, b2, Contact(at=R0.point("I", 0, 1, 0), normal=R0.j, tangent=R0.i,
+    st_.connect(b1, b2, ContactLaws(at=R0.point("I", 0, 1, 0), normal=R0.j, tangent=R0.i,
                                 friction=Coulomb(f_top), footprint=10, rolling_axis=R0.k),
                 label="top")
     st_.act(Force(on=b1, vector=-30.0 * R0.j, at=R0.point("G1", 0, 0.5, 0)))

@@ -2,16 +2,16 @@
 connections."""
 
 from .actions import Action, Couple, Force, Gravity, Spring, gravity, power
-from .contact_laws import Contact, Coulomb, PivotingResistance, RollingResistance
+from .contact_laws import ContactLaws, Coulomb, PivotingResistance, RollingResistance
 from .dampers import Damper, TorsionalDamper, TorsionSpring, wire_torsional_stiffness
 from .gravitation import (
     GRAVITATIONAL_CONSTANT,
     Attractor,
     NewtonAttraction,
     SphericalBodyAttraction,
-    homogeneous_sphere,
-    point_mass,
-    spherical_shell,
+    homogeneous_sphere_attractor,
+    point_mass_attractor,
+    spherical_shell_attractor,
     surface_gravity,
 )
 from .joints import Cylindrical, Joint, Pivot, Prismatic, Spherical
@@ -26,11 +26,12 @@ from .work import (
 
 __all__ = ["Action", "Couple", "Force", "Gravity", "Spring", "gravity", "power", "Joint",
            "Pivot", "Prismatic", "Cylindrical", "Spherical"]
-__all__ += ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass", "homogeneous_sphere",
-            "spherical_shell", "NewtonAttraction", "SphericalBodyAttraction", "surface_gravity"]
+__all__ += ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass_attractor",
+            "homogeneous_sphere_attractor", "spherical_shell_attractor", "NewtonAttraction",
+            "SphericalBodyAttraction", "surface_gravity"]
 __all__ += ["work_along_path", "power_of", "work_along_motion", "curl", "is_conservative",
             "potential_energy_of"]
-__all__ += ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]
+__all__ += ["Coulomb", "RollingResistance", "PivotingResistance", "ContactLaws"]
 from .connections import (  # noqa: E402  (the rest of the catalogue, ch. 13.2.2)
     BallJoint,
     CylinderPlane,
@@ -59,3 +60,13 @@ from .contacts import FrictionContact, GearMesh, RollingContact  # noqa: E402
 
 __all__ += ["RollingContact", "GearMesh", "FrictionContact"]
 __all__ += ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
+
+from .._core.deprecation import deprecated_aliases  # noqa: E402
+from . import gravitation as _gravitation  # noqa: E402
+
+# former names: ``Contact`` (also the name of rigidmech.kinematics.ContactKinematics) and the
+# attractors ``point_mass``, ``spherical_shell`` (also inertia operators of rigidmech.inertia)
+__getattr__ = deprecated_aliases(__name__, {
+    "Contact": ("rigidmech.actions.ContactLaws", ContactLaws),
+    **{old: (f"rigidmech.actions.{old}_attractor", getattr(_gravitation, f"{old}_attractor"))
+       for old in ("point_mass", "homogeneous_sphere", "spherical_shell")}})

@@ -35,12 +35,13 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .._core.deprecation import deprecated_aliases
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
 
-__all__ = ["Coulomb", "RollingResistance", "PivotingResistance", "Contact"]
+__all__ = ["Coulomb", "RollingResistance", "PivotingResistance", "ContactLaws"]
 
 
 def _coefficient(value, argument, what="a number >= 0"):
@@ -179,7 +180,7 @@ class Coulomb:
         ------
         ArgumentError
             If the sliding velocity is zero (the contact sticks: the tangential force is then
-            an unknown bounded by f_s N, see :class:`Contact`).
+            an unknown bounded by f_s N, see :class:`ContactLaws`).
 
         Examples
         --------
@@ -283,7 +284,7 @@ _KIND_NAMES = {"friction": "sliding", "rolling": "rolling", "footprint": "tippin
                "pivoting": "pivoting"}
 
 
-class Contact:
+class ContactLaws:
     """A one-sided point contact with its laws (ch. 13.1), as a connection for statics.
 
     The action of the first body on the second at ``at`` is
@@ -322,7 +323,7 @@ class Contact:
     --------
     >>> from rigidmech import Frame
     >>> R0 = Frame("R0")
-    >>> c = Contact(at=R0.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5))
+    >>> c = ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5))
     >>> T, unknowns = c.action_torsor("I")
     >>> T, unknowns
     (Torsor(resultant=T_I*R0.i + N_I*R0.j, moment=0, at=O_R0), (N_I, T_I))
@@ -387,7 +388,7 @@ class Contact:
         --------
         >>> from rigidmech import Frame
         >>> R0 = Frame("R0")
-        >>> Contact(at=R0.origin, normal=R0.j).action_torsor("A")[1]
+        >>> ContactLaws(at=R0.origin, normal=R0.j).action_torsor("A")[1]
         (N_A,)
         """
         s = self._symbols(label)
@@ -411,7 +412,7 @@ class Contact:
         --------
         >>> from rigidmech import Frame
         >>> R0 = Frame("R0")
-        >>> Contact(at=R0.origin, normal=R0.j, footprint=0.5, rolling_axis=R0.k).conditions("B")
+        >>> ContactLaws(at=R0.origin, normal=R0.j, footprint=0.5, rolling_axis=R0.k).conditions("B")
         [('lift-off', N_B), ('tipping', -Mr_B + 0.5*N_B), ('tipping', Mr_B + 0.5*N_B)]
         """
         s = self._symbols(label)
@@ -437,7 +438,7 @@ class Contact:
         >>> from rigidmech import Frame, Torsor
         >>> from rigidmech.actions import power
         >>> R0 = Frame("R0")
-        >>> c = Contact(at=R0.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5, 0.4))
+        >>> c = ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5, 0.4))
         >>> V = Torsor(Vector.zero(), 3 * R0.i, R0.origin)        # sliding along i at 3
         >>> A = c.action(10, V); A
         Torsor(resultant=-4.0*R0.i + 10*R0.j, moment=0, at=O_R0)
@@ -463,4 +464,9 @@ class Contact:
         parts = [f"at={self._at.name}", f"normal={self._normal!r}"]
         if self._friction is not None:
             parts.append(f"friction={self._friction!r}")
-        return f"Contact({', '.join(parts)})"
+        return f"ContactLaws({', '.join(parts)})"
+
+
+# ``Contact`` was this class's name, also that of rigidmech.kinematics.ContactKinematics
+__getattr__ = deprecated_aliases(
+    __name__, {"Contact": ("rigidmech.actions.ContactLaws", ContactLaws)})

@@ -28,7 +28,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from ..kinematics import Solid
 from ..kinematics.constraints import VelocityConstraint
-from ..kinematics.contact import Contact, ContactKinematics
+from ..kinematics.contact import ContactKinematics
 from ..kinematics.transmissions import GearPair
 from ..torsors import Torsor
 from ..vectors import Frame, Point, Vector
@@ -52,9 +52,10 @@ class RollingContact:
 
     Parameters
     ----------
-    contact : Contact
+    contact : ContactKinematics
         The two solids, the contact point and the common normal
-        (see :class:`~rigidmech.kinematics.contact.Contact` and ``Contact.between``).
+        (see :class:`~rigidmech.kinematics.ContactKinematics` and
+        ``ContactKinematics.between``).
     pivoting : bool
         Whether S2 may spin about the normal (default True); False adds the condition
         "without pivoting".
@@ -65,11 +66,11 @@ class RollingContact:
 
     >>> import sympy as sp
     >>> from rigidmech import Frame, Line, coordinates
-    >>> from rigidmech.kinematics import Circle, Contact
+    >>> from rigidmech.kinematics import Circle, ContactKinematics
     >>> x, theta = coordinates("x theta"); r = sp.Symbol("r", positive=True)
     >>> R0 = Frame("R0")
     >>> R1 = R0.rotated("R1", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
-    >>> rc = RollingContact(Contact.between(R1, Circle(R1.origin, r, normal=R0.k),
+    >>> rc = RollingContact(ContactKinematics.between(R1, Circle(R1.origin, r, normal=R0.k),
     ...                                     R0, Line(R0.origin, R0.i)))
     >>> rc.holonomic, rc.position_constraints({x: 0, theta: 0})
     (True, (r*theta(t) + x(t),))
@@ -79,11 +80,11 @@ class RollingContact:
 
     __slots__ = ("_contact", "_pivoting", "_constraints")
 
-    def __init__(self, contact: Contact, *, pivoting: bool = True):
-        if not isinstance(contact, Contact):
+    def __init__(self, contact: ContactKinematics, *, pivoting: bool = True):
+        if not isinstance(contact, ContactKinematics):
             raise ArgumentTypeError(
-                f"`contact` must be a Contact (rigidmech.kinematics.Contact, or "
-                f"Contact.between for surfaces); got {type(contact).__name__}.")
+                f"`contact` must be a ContactKinematics (rigidmech.kinematics, or "
+                f"ContactKinematics.between for surfaces); got {type(contact).__name__}.")
         if not isinstance(pivoting, bool):
             raise ArgumentTypeError(f"`pivoting` must be a bool; got {type(pivoting).__name__}.")
         self._contact = contact
@@ -91,7 +92,7 @@ class RollingContact:
         self._constraints = None
 
     @property
-    def contact(self) -> Contact:
+    def contact(self) -> ContactKinematics:
         """The kinematics of the contact (point, normal, sliding velocity, ...)."""
         return self._contact
 
@@ -164,9 +165,10 @@ class RollingContact:
         Examples
         --------
         >>> from rigidmech import Frame
-        >>> from rigidmech.kinematics import Contact
+        >>> from rigidmech.kinematics import ContactKinematics
         >>> R0 = Frame("R0")
-        >>> rc = RollingContact(Contact(R0, R0, at=R0.origin, normal=R0.k), pivoting=False)
+        >>> rc = RollingContact(ContactKinematics(R0, R0, at=R0.origin, normal=R0.k),
+        ...                     pivoting=False)
         >>> rc.allowed_motion("a")[0].resultant
         omega_1_a*R0.i + omega_2_a*R0.j
         """

@@ -28,14 +28,16 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .._core.deprecation import deprecated_aliases
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..torsors import slider
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
 from .actions import Action, Gravity, _check_solid
 
-__all__ = ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass", "homogeneous_sphere",
-           "spherical_shell", "NewtonAttraction", "SphericalBodyAttraction",
+__all__ = ["GRAVITATIONAL_CONSTANT", "Attractor", "point_mass_attractor",
+           "homogeneous_sphere_attractor",
+           "spherical_shell_attractor", "NewtonAttraction", "SphericalBodyAttraction",
            "surface_gravity"]
 
 GRAVITATIONAL_CONSTANT = 6.67430e-11
@@ -64,14 +66,14 @@ def _scalar(x, argument, *, positive=False):
 
 class Attractor:
     """A spherically symmetric attracting body: a point mass, a homogeneous solid sphere or
-    a thin spherical shell (ch. 12.1.3). Build with :func:`point_mass`,
-    :func:`homogeneous_sphere`, :func:`spherical_shell`.
+    a thin spherical shell (ch. 12.1.3). Build with :func:`point_mass_attractor`,
+    :func:`homogeneous_sphere_attractor`, :func:`spherical_shell_attractor`.
 
     Examples
     --------
     >>> import sympy as sp
     >>> M, R, r, G = sp.symbols("M R r G", positive=True)
-    >>> earth = homogeneous_sphere(M, R, G=G)
+    >>> earth = homogeneous_sphere_attractor(M, R, G=G)
     >>> earth.field_magnitude(R / 2), earth.potential(2 * R)
     (G*M/(2*R**2), -G*M/(2*R))
     """
@@ -107,7 +109,8 @@ class Attractor:
 
         Examples
         --------
-        >>> spherical_shell(1, 2, G=1).field_magnitude(1), point_mass(4, G=1).field_magnitude(2)
+        >>> (spherical_shell_attractor(1, 2, G=1).field_magnitude(1),
+        ...  point_mass_attractor(4, G=1).field_magnitude(2))
         (0, 1)
         """
         r = _scalar(r, "r")
@@ -126,7 +129,7 @@ class Attractor:
 
         Examples
         --------
-        >>> homogeneous_sphere(1, 1, G=1).potential(0)
+        >>> homogeneous_sphere_attractor(1, 1, G=1).potential(0)
         -3/2
         """
         r = _scalar(r, "r")
@@ -154,7 +157,7 @@ class Attractor:
         --------
         >>> from rigidmech import Frame
         >>> R0 = Frame("R0")
-        >>> point_mass(8, G=1).field(R0.point("P", 2, 0, 0), centre=R0.origin)
+        >>> point_mass_attractor(8, G=1).field(R0.point("P", 2, 0, 0), centre=R0.origin)
         -2*R0.i
         """
         check_point(at, "at")
@@ -171,7 +174,7 @@ class Attractor:
         --------
         >>> from rigidmech import Frame
         >>> R0 = Frame("R0")
-        >>> point_mass(8, G=1).local_gravity(R0.point("P", 0, 0, 2), centre=R0.origin)
+        >>> point_mass_attractor(8, G=1).local_gravity(R0.point("P", 0, 0, 2), centre=R0.origin)
         Gravity(-2*R0.k)
         """
         return Gravity(self.field(at, centre=centre))
@@ -181,34 +184,34 @@ class Attractor:
         return f"Attractor({self._kind!r}, mass={self._mass}{radius}, G={self._G})"
 
 
-def point_mass(mass, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
+def point_mass_attractor(mass, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
     """A point mass (ch. 12.1.1).
 
     Examples
     --------
-    >>> f"{float(point_mass(5.972e24).mu):.4e}"   # G M of the Earth, m^3/s^2
+    >>> f"{float(point_mass_attractor(5.972e24).mu):.4e}"   # G M of the Earth, m^3/s^2
     '3.9859e+14'
     """
     return Attractor("point mass", mass, 0, G=G)
 
 
-def homogeneous_sphere(mass, radius, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
+def homogeneous_sphere_attractor(mass, radius, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
     """A homogeneous solid sphere of mass M and radius R (ch. 12.1.3).
 
     Examples
     --------
-    >>> homogeneous_sphere(1, 2, G=1).field_magnitude(1)
+    >>> homogeneous_sphere_attractor(1, 2, G=1).field_magnitude(1)
     1/8
     """
     return Attractor("homogeneous sphere", mass, radius, G=G)
 
 
-def spherical_shell(mass, radius, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
+def spherical_shell_attractor(mass, radius, *, G=GRAVITATIONAL_CONSTANT) -> Attractor:
     """A thin homogeneous spherical shell of mass M and radius R (ch. 12.1.3).
 
     Examples
     --------
-    >>> spherical_shell(1, 2, G=1).potential(1)
+    >>> spherical_shell_attractor(1, 2, G=1).potential(1)
     -1/2
     """
     return Attractor("spherical shell", mass, radius, G=G)
@@ -222,7 +225,7 @@ def surface_gravity(mass, radius, *, G=GRAVITATIONAL_CONSTANT):
     >>> round(surface_gravity(5.972e24, 6.371e6), 3)
     9.82
     """
-    return homogeneous_sphere(mass, radius, G=G).field_magnitude(radius)
+    return homogeneous_sphere_attractor(mass, radius, G=G).field_magnitude(radius)
 
 
 def _massive(s, argument):
@@ -295,7 +298,7 @@ class SphericalBodyAttraction(Action):
     >>> r = rm.coordinates("r"); mu, m = sp.symbols("mu m", positive=True)
     >>> R0 = rm.Frame("R0")
     >>> sat = rm.Body("sat", frame=R0.translated("R1", R0.point("S", r, 0, 0)), mass=m)
-    >>> earth = SphericalBodyAttraction(point_mass(mu, G=1), centre=R0.origin)
+    >>> earth = SphericalBodyAttraction(point_mass_attractor(mu, G=1), centre=R0.origin)
     >>> earth.contributions([sat])[0][1].resultant
     -m*mu/(r(t)*Abs(r(t)))*R0.i
     """
@@ -305,8 +308,8 @@ class SphericalBodyAttraction(Action):
     def __init__(self, body: Attractor, *, centre: Point):
         if not isinstance(body, Attractor):
             raise ArgumentTypeError(
-                "`body` must be an Attractor (point_mass, homogeneous_sphere, "
-                f"spherical_shell); got {type(body).__name__}.")
+                "`body` must be an Attractor (point_mass_attractor, homogeneous_sphere_attractor, "
+                f"spherical_shell_attractor); got {type(body).__name__}.")
         check_point(centre, "centre")
         self._body, self._centre = body, centre
 
@@ -330,3 +333,10 @@ class SphericalBodyAttraction(Action):
     def __repr__(self):
         return f"SphericalBodyAttraction({self._body!r}, centre={self._centre.name})"
 
+
+
+# the former names, which clashed with the inertia operators rigidmech.inertia.point_mass and
+# rigidmech.inertia.spherical_shell
+_RENAMED = {old: (f"rigidmech.actions.{old}_attractor", globals()[f"{old}_attractor"])
+            for old in ("point_mass", "homogeneous_sphere", "spherical_shell")}
+__getattr__ = deprecated_aliases(__name__, _RENAMED)

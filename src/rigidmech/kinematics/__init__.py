@@ -25,7 +25,7 @@ __all__ += ["areal_velocity", "areal_constant", "is_central", "binet_speed_squar
             "binet_acceleration"]
 __all__ += ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
             "circular_speed", "escape_speed", "hohmann_transfer"]
-from .contact import Contact, ContactKinematics  # noqa: E402  (ch. 10)
+from .contact import ContactKinematics  # noqa: E402  (ch. 10)
 from .plane_motion import Centrodes, centrodes, instantaneous_centre  # noqa: E402
 from .surfaces import Circle, ContactGeometry, Cylinder, Sphere, contact_geometry  # noqa: E402
 from .transmissions import (  # noqa: E402
@@ -36,9 +36,16 @@ from .transmissions import (  # noqa: E402
     GearTrain,
 )
 
-__all__ += ["Contact", "ContactKinematics", "Centrodes", "centrodes", "instantaneous_centre", "Circle",
+__all__ += ["ContactKinematics", "Centrodes", "centrodes", "instantaneous_centre", "Circle",
             "ContactGeometry", "Cylinder", "Sphere", "contact_geometry", "BeltDrive",
             "EpicyclicTrain", "Gear", "GearPair", "GearTrain"]
 from .constraints import VelocityConstraint  # noqa: E402  (ch. 10.1.3, 25.3)
 
 __all__ += ["VelocityConstraint"]
+
+from .._core.deprecation import deprecated_aliases  # noqa: E402
+
+# ``Contact`` was the name of ContactKinematics; rigidmech.actions.ContactLaws was the other
+# ``Contact``: two classes of one name in two namespaces
+__getattr__ = deprecated_aliases(
+    __name__, {"Contact": ("rigidmech.kinematics.ContactKinematics", ContactKinematics)})

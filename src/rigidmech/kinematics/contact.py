@@ -16,7 +16,7 @@ the rotation vector splits along the normal and the tangent plane (ch. 10.1.2):
     (\\boldsymbol{\\omega} \\wedge \\mathbf{n})}_{\\text{rolling}} .
 
 S2 rolls **without slipping** on S1 when v(I in S2/S1) = 0 and **without pivoting** when
-omega(S2/S1) . n = 0 (ch. 10.1.3). :class:`Contact` gives these vectors and the scalar
+omega(S2/S1) . n = 0 (ch. 10.1.3). :class:`ContactKinematics` gives these vectors and the scalar
 equations (sympy expressions that must vanish) in the parameters of situation and their
 derivatives.
 """
@@ -25,13 +25,14 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .._core.deprecation import deprecated_aliases
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
 from .solid import Solid
 from .surfaces import _unit, _vector, contact_geometry
 
-__all__ = ["ContactKinematics", "Contact"]
+__all__ = ["ContactKinematics"]
 
 
 def _solid(x, argument):
@@ -68,7 +69,7 @@ class ContactKinematics:
 
     See Also
     --------
-    Contact.between : the contact point and normal from the two surfaces.
+    ContactKinematics.between : the contact point and normal from the two surfaces.
 
     Examples
     --------
@@ -79,7 +80,7 @@ class ContactKinematics:
     >>> x, theta = coordinates("x theta"); r = sp.Symbol("r", positive=True)
     >>> R0 = Frame("R0")
     >>> R1 = R0.rotated("R1", about=R0.k, angle=theta, origin=R0.point("C", x, r, 0))
-    >>> c = Contact(R1, R0, at=R0.point("I", x, 0, 0), normal=R0.j)
+    >>> c = ContactKinematics(R1, R0, at=R0.point("I", x, 0, 0), normal=R0.j)
     >>> c.sliding_velocity.components(R0).T
     Matrix([[r*Derivative(theta(t), t) + Derivative(x(t), t), 0, 0]])
     >>> c.without_slipping_equations()
@@ -124,7 +125,7 @@ class ContactKinematics:
         >>> from rigidmech.kinematics.surfaces import Sphere
         >>> x, y = coordinates("x y"); r = sp.Symbol("r", positive=True)
         >>> R0 = Frame("R0"); R1 = R0.translated("R1", R0.point("C", x, y, r))
-        >>> c = Contact.between(R1, Sphere(R1.origin, r), R0, Plane(R0.origin, R0.k))
+        >>> c = ContactKinematics.between(R1, Sphere(R1.origin, r), R0, Plane(R0.origin, R0.k))
         >>> c.point.coordinates(R0).T, c.normal
         (Matrix([[x(t), y(t), 0]]), R0.k)
         """
@@ -173,7 +174,7 @@ class ContactKinematics:
         >>> from rigidmech import Frame, coordinates
         >>> x = coordinates("x")
         >>> R0 = Frame("R0"); R1 = R0.translated("R1", R0.point("P", x, 0, 0))
-        >>> Contact(R1, R0, at=R1.origin, normal=R0.j).sliding_velocity
+        >>> ContactKinematics(R1, R0, at=R1.origin, normal=R0.j).sliding_velocity
         Derivative(x(t), t)*R0.i
         """
         if "v" not in self._cache:
@@ -197,7 +198,7 @@ class ContactKinematics:
         >>> from rigidmech import Frame, coordinates
         >>> q = coordinates("q")
         >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.i, angle=q)
-        >>> Contact(R1, R0, at=R0.origin, normal=R0.k).rolling
+        >>> ContactKinematics(R1, R0, at=R0.origin, normal=R0.k).rolling
         Derivative(q(t), t)*R0.i
         """
         return (self.rotation - self.spinning).compact()
@@ -223,7 +224,7 @@ class ContactKinematics:
         --------
         >>> from rigidmech import Frame
         >>> R0 = Frame("R0")
-        >>> Contact(R0, R0, at=R0.origin, normal=R0.k).tangents()
+        >>> ContactKinematics(R0, R0, at=R0.origin, normal=R0.k).tangents()
         (R0.i, R0.j)
         """
         if "t" not in self._cache:
@@ -261,7 +262,7 @@ class ContactKinematics:
         >>> from rigidmech import Frame, coordinates
         >>> q = coordinates("q")
         >>> R0 = Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
-        >>> Contact(R1, R0, at=R0.origin, normal=R0.k).without_pivoting_equations()
+        >>> ContactKinematics(R1, R0, at=R0.origin, normal=R0.k).without_pivoting_equations()
         (Derivative(q(t), t),)
         """
         e = sp.expand(self.rotation.dot(self._normal))
@@ -276,14 +277,16 @@ class ContactKinematics:
         >>> from rigidmech import Frame, coordinates
         >>> z = coordinates("z")
         >>> R0 = Frame("R0"); R1 = R0.translated("R1", R0.point("P", 0, 0, z))
-        >>> Contact(R1, R0, at=R1.origin, normal=R0.k).persistence_equation()
+        >>> ContactKinematics(R1, R0, at=R1.origin, normal=R0.k).persistence_equation()
         Derivative(z(t), t)
         """
         return sp.simplify(self.sliding_velocity.dot(self._normal))
 
     def __repr__(self):
-        return (f"Contact({self._moving.name} on {self._other.name}, at={self._point.name}, "
+        return (f"ContactKinematics({self._moving.name} on {self._other.name}, "
+                f"at={self._point.name}, "
                 f"normal={self._normal!r})")
 
 
-Contact = ContactKinematics
+__getattr__ = deprecated_aliases(  # the name of rigidmech < 0.x, kept as a deprecated alias
+    __name__, {"Contact": ("rigidmech.kinematics.ContactKinematics", ContactKinematics)})

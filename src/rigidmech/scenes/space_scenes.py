@@ -49,7 +49,7 @@ import math
 
 import sympy as sp
 
-from ..actions import Force, Spherical, SphericalBodyAttraction, point_mass
+from ..actions import Force, Spherical, SphericalBodyAttraction, point_mass_attractor
 from ..dynamics import System
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates, t
@@ -72,7 +72,7 @@ def _satellite() -> Built:
     sat = Body("satellite", frame=R0.translated("Rs", S), mass=m, centre=S)
     system = System(galilean=R0)
     system.add(sat)
-    system.act(SphericalBodyAttraction(point_mass(mu, G=1), centre=R0.origin))
+    system.act(SphericalBodyAttraction(point_mass_attractor(mu, G=1), centre=R0.origin))
     return Built(system, (sat,))
 
 
@@ -88,7 +88,7 @@ def _moon_probe() -> Built:
     probe = Body("probe", frame=R0.translated("Rp", P), mass=m, centre=P)
     system = System(galilean=R0)
     system.add(probe)
-    for body, centre in ((point_mass(mE, G=1), E), (point_mass(mM, G=1), M)):
+    for body, centre in ((point_mass_attractor(mE, G=1), E), (point_mass_attractor(mM, G=1), M)):
         system.act(Force(on=probe, vector=m * body.field(P, centre=centre), at=P))
     return Built(system, (probe,))
 

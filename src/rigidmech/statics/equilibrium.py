@@ -65,13 +65,13 @@ class Statics:
     A beam of length L on a pivot at A and a roller at B, a load F at x = c:
 
     >>> import rigidmech as rm
-    >>> from rigidmech.actions import Contact, Force, Pivot
+    >>> from rigidmech.actions import ContactLaws, Force, Pivot
     >>> L, c, F = rm.constants("L c F", positive=True)
     >>> R0 = rm.Frame("R0"); A = R0.origin; B = R0.point("B", L, 0, 0)
     >>> beam = rm.Body("beam", frame=R0)
     >>> st = Statics(R0)
     >>> st.connect(R0, beam, Pivot(at=A, axis=R0.k), label="A")
-    >>> st.connect(R0, beam, Contact(at=B, normal=R0.j), label="B")
+    >>> st.connect(R0, beam, ContactLaws(at=B, normal=R0.j), label="B")
     >>> st.act(Force(on=beam, vector=-F * R0.j, at=R0.point("C", c, 0, 0)))
     >>> eq = st.solve()
     >>> eq.values[sp.Symbol("N_B", real=True)], eq.hyperstaticity
@@ -105,7 +105,7 @@ class Statics:
         >>> R0 = rm.Frame("R0"); beam = rm.Body("beam", frame=R0)
         >>> g = (Mechanism(R0)
         ...      .with_connection(R0, beam, rm.joints.Pivot(at=R0.origin, axis=R0.k), label="A")
-        ...      .with_connection(R0, beam, rm.actions.Contact(at=R0.point("B", 2, 0, 0),
+        ...      .with_connection(R0, beam, rm.actions.ContactLaws(at=R0.point("B", 2, 0, 0),
         ...                                                    normal=R0.j), label="B")
         ...      .with_action(rm.actions.Force(on=beam, vector=-R0.j, at=R0.point("C", 1, 0, 0))))
         >>> Statics.from_mechanism(g).solve().values[sp.Symbol("N_B", real=True)]
@@ -156,7 +156,7 @@ class Statics:
         ----------
         first, second : Body or Frame
             The two ends; a Frame is fixed (the ground).
-        connection : Joint, Contact or any object with ``action_torsor(label)``
+        connection : Joint, ContactLaws or any object with ``action_torsor(label)``
             returning ``(Torsor, unknowns)``.
         label : str, optional
             Suffix of the unknowns' names (default: the connection's rank, ``"1"``, ...).
@@ -164,10 +164,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.unknowns
         (N_A,)
         """
@@ -178,7 +178,7 @@ class Statics:
         if not callable(getattr(connection, "action_torsor", None)):
             raise ArgumentTypeError(
                 "`connection` must have an action_torsor(label) method (a joint or a "
-                f"Contact); got {type(connection).__name__}.")
+                f"ContactLaws); got {type(connection).__name__}.")
         label = str(len(self._connections) + 1) if label is None else str(label)
         if label in self._labels:
             raise ArgumentError(f"`label` must be unique; {label!r} is already used.")
@@ -195,10 +195,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.act(Force(on=box, vector=-3 * R0.j, at=R0.origin))
         >>> st.solve().values
         {N_A: 3.0}
@@ -215,10 +215,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.load(box, rm.slider(-2 * R0.j, R0.origin))
         >>> st.solve().values
         {N_A: 2.0}
@@ -238,7 +238,7 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
         >>> import sympy as sp
@@ -258,7 +258,7 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
         >>> from rigidmech.actions import Pivot
@@ -274,10 +274,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.contact_conditions()
         [('lift-off', 'A', N_A)]
         """
@@ -294,10 +294,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.torsors_on(box)
         [Torsor(resultant=N_A*R0.j, moment=0, at=O_R0)]
         """
@@ -322,10 +322,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> st.act(Force(on=box, vector=-3 * R0.j, at=R0.origin))
         >>> [(c, e) for _, c, e in st.equations() if e != 0]
         [('resultant along j', N_A - 3)]
@@ -363,10 +363,10 @@ class Statics:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
         >>> W = rm.constants("W", positive=True)
         >>> st.act(Force(on=box, vector=-W * R0.j, at=R0.origin))
         >>> st.solve().values, st.solve(values={W: 2}).values
@@ -417,11 +417,11 @@ class Statics:
 
         >>> import sympy as sp
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Coulomb, Force
+        >>> from rigidmech.actions import ContactLaws, Coulomb, Force
         >>> P = sp.Symbol("P")
         >>> R0 = rm.Frame("R0"); block = rm.Body("block", frame=R0)
         >>> st = Statics(R0)
-        >>> st.connect(R0, block, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+        >>> st.connect(R0, block, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
         ...                               friction=Coulomb(0.3)), label="I")
         >>> st.act(Force(on=block, vector=-10 * R0.j + P * R0.i, at=R0.origin))
         >>> lim = st.limit(P, (0, 10))

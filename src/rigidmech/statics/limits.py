@@ -1,7 +1,7 @@
 """Limiting equilibrium with friction: where the equilibrium breaks, and how (book, ch. 13.1,
 14.4).
 
-A body held by contacts (:class:`~rigidmech.actions.contact_laws.Contact`) is at rest while
+A body held by contacts (:class:`~rigidmech.actions.contact_laws.ContactLaws`) is at rest while
 the equations of statics have a solution that satisfies the laws of every contact: N >= 0
 (one-sided contact), ``|T| <= f_s N`` (Coulomb), ``|M_r| <= delta N`` (rolling resistance, or a flat
 base of half-width a: tipping), ``|M_p| <= eta N`` (pivoting). With one tangent per contact these
@@ -114,7 +114,7 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     Parameters
     ----------
     statics : Statics
-        Bodies held by contacts (:class:`~rigidmech.actions.contact_laws.Contact`) with one
+        Bodies held by contacts (:class:`~rigidmech.actions.contact_laws.ContactLaws`) with one
         tangent each, and possibly by joints.
     parameter : sympy.Symbol
         The load or angle that varies.
@@ -150,11 +150,11 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
 
     >>> import sympy as sp
     >>> import rigidmech as rm
-    >>> from rigidmech.actions import Contact, Coulomb, Force
+    >>> from rigidmech.actions import ContactLaws, Coulomb, Force
     >>> P = sp.Symbol("P")
     >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
     >>> st = rm.statics.Statics(R0)
-    >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j, tangent=R0.i,
+    >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
     ...            friction=Coulomb(0.4), footprint=0.5, rolling_axis=R0.k), label="floor")
     >>> st.act(Force(on=box, vector=-10 * R0.j, at=R0.point("G", 0, 0.5, 0)))
     >>> st.act(Force(on=box, vector=P * R0.i, at=R0.point("H", -0.5, 1.0, 0)))
@@ -178,7 +178,7 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     exprs = [e.xreplace(subs) for _, _, e in statics.equations()]
     conds = statics.contact_conditions()
     if not conds:
-        raise ArgumentError("`statics` has no contact law (Contact with friction, rolling, "
+        raise ArgumentError("`statics` has no contact law (ContactLaws with friction, rolling, "
                             "footprint or pivoting): nothing can break.")
     A, b = sp.linear_eq_to_matrix(exprs, xs)
     G, _ = sp.linear_eq_to_matrix([e.xreplace(subs) for _, _, e in conds], xs)

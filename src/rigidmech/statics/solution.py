@@ -103,10 +103,10 @@ class Equilibrium:
     Examples
     --------
     >>> import rigidmech as rm
-    >>> from rigidmech.actions import Contact, Force
+    >>> from rigidmech.actions import ContactLaws, Force
     >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
     >>> st = rm.statics.Statics(R0)
-    >>> st.connect(R0, box, Contact(at=R0.origin, normal=R0.j), label="A")
+    >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
     >>> st.act(Force(on=box, vector=-10 * R0.j, at=R0.point("G", 0, 1, 0)))
     >>> print(st.solve())
     Equilibrium of 1 body: 1 unknown, rank 1, isostatic
@@ -134,11 +134,11 @@ class Equilibrium:
         A bar on three supports: statics finds none of the three reactions alone.
 
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
         >>> st = rm.statics.Statics(R0)
         >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
-        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...     st.connect(R0, bar, ContactLaws(at=R0.point(label, x, 0, 0), normal=R0.j),
         ...                label=label)
         >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
         >>> eq = st.solve()
@@ -193,11 +193,11 @@ class Equilibrium:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
         >>> st = rm.statics.Statics(R0)
         >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
-        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...     st.connect(R0, bar, ContactLaws(at=R0.point(label, x, 0, 0), normal=R0.j),
         ...                label=label)
         >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
         >>> eq = st.solve()
@@ -214,11 +214,11 @@ class Equilibrium:
         Examples
         --------
         >>> import rigidmech as rm
-        >>> from rigidmech.actions import Contact, Force
+        >>> from rigidmech.actions import ContactLaws, Force
         >>> R0 = rm.Frame("R0"); bar = rm.Body("bar", frame=R0)
         >>> st = rm.statics.Statics(R0)
         >>> for label, x in (("A", 0), ("B", 1), ("C", 2)):
-        ...     st.connect(R0, bar, Contact(at=R0.point(label, x, 0, 0), normal=R0.j),
+        ...     st.connect(R0, bar, ContactLaws(at=R0.point(label, x, 0, 0), normal=R0.j),
         ...                label=label)
         >>> st.act(Force(on=bar, vector=-6 * R0.j, at=R0.point("G", 1, 0, 0)))
         >>> eq = st.solve()

@@ -1,0 +1,346 @@
+"""Regimes derived from a System with FrictionContact (ch. 13.1, 21.4, 23), checked against
+the hand-written regimes of rigidmech.regimes.friction, closed forms, and a direct scipy
+integration of hand-written equations (the ball with spin)."""
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.integrate import solve_ivp
+
+import rigidmech as rm
+from rigidmech.actions import Coulomb, Force, FrictionContact, Spring
+from rigidmech.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from rigidmech.kinematics import ContactKinematics
+from rigidmech.regimes import (
+    block_on_wagon,
+    contact_motion,
+    coulomb_oscillator,
+    cylinder_on_incline,
+)
+from rigidmech.vectors import t as time
+
+G_ACC = 9.81
+
+
+def block_on_spring(law, *, horizontal_force=None):
+    """A block (mass m, centre (x, y)) on the floor y = 0, a spring of zero free length from
+    the origin, gravity -g j."""
+    x, y = rm.coordinates("x y")
+    m, k, g = sp.symbols("m k g", positive=True)
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.translated("R1", G)
+    block = rm.Body("block", frame=R1, mass=m, centre=G)
+    s = rm.System(galilean=R0)
+    s.connect(R0, block, FrictionContact(ContactKinematics(
+        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=law))
+    s.act(rm.gravity(-g * R0.j))
+    s.act(Spring(k, 0, a=R0.origin, b=G, on_b=block))
+    if horizontal_force is not None:
+        s.act(Force(on=block, vector=horizontal_force(R0), at=G))
+    return s
+
+
+def cylinder_system(law, beta_body="disk"):
+    """A cylinder of radius r, centre (x, y), rotation theta (x' = r theta' when rolling)
+    on the incline y = 0 of angle alpha (x down the slope)."""
+    x, y, th = rm.coordinates("x y theta")
+    m, r, g, alpha = sp.symbols("m r g alpha", positive=True)
+    R0 = rm.Frame("R0")
+    C = R0.point("C", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=-th, origin=C)
+    inertia = getattr(rm.inertia, beta_body)(m, r, axis=R1.k, centre=C)
+    cyl = rm.Body("cylinder", frame=R1, mass=m, centre=C, inertia=inertia)
+    s = rm.System(galilean=R0)
+    s.connect(R0, cyl, FrictionContact(ContactKinematics(
+        R1, R0, at=R0.point("I", x, y - r, 0), normal=R0.j), friction=law))
+    s.act(rm.gravity(g * (sp.sin(alpha) * R0.i - sp.cos(alpha) * R0.j)))
+    return s
+
+
+def ball_system(mu):
+    """A solid ball of radius r on the plane z = 0, centre (x, y, z), oriented by the
+    rotations a (about i), b (about the new j), c (about the new k)."""
+    x, y, z, a, b, c = rm.coordinates("x y z a b c")
+    m, r, g = sp.symbols("m r g", positive=True)
+    R0 = rm.Frame("R0")
+    C = R0.point("C", x, y, z)
+    Ra = R0.rotated("Ra", about=R0.i, angle=a, origin=C)
+    Rb = Ra.rotated("Rb", about=Ra.j, angle=b)
+    Rc = Rb.rotated("Rc", about=Rb.k, angle=c)
+    ball = rm.Body("ball", frame=Rc, mass=m, centre=C,
+                   inertia=rm.inertia.sphere(m, r, frame=Rc, centre=C))
+    s = rm.System(galilean=R0)
+    s.connect(R0, ball, FrictionContact(ContactKinematics(
+        Rc, R0, at=R0.point("I", x, y, z - r), normal=R0.k), friction=Coulomb(mu)))
+    s.act(rm.gravity(-g * R0.k))
+    return s
+
+
+RENAME = {"stick": "stick", "rolling": "stick", "slipping+": "slip+", "slipping-": "slip-",
+          "slide+": "slip+", "slide-": "slip-"}
+
+
+# -- Coulomb-damped oscillator (ch. 21.4) ---------------------------------------------------
+def test_coulomb_oscillator_from_bodies_matches_hand_written_and_closed_form():
+    m, k, fs, fk, x0 = 2.0, 3.0, 0.2, 0.15, 1.0
+    law = Coulomb(fs, fk)
+    ours = contact_motion(block_on_spring(law), 20.0, {"x": x0}, rtol=1e-12, m=m, k=k,
+                          g=G_ACC)
+    hand = coulomb_oscillator(mass=m, stiffness=k, friction=law, normal_force=m * G_ACC,
+                              x0=x0, t_end=20.0)
+    assert ours.regimes == tuple(RENAME[r] for r in hand.regimes)
+    np.testing.assert_allclose(ours.switch_times, hand.switch_times, rtol=0, atol=1e-9)
+    # closed form: half-cycles of pi/omega, the amplitude loses 2 f_k N / k each
+    omega, d = math.sqrt(k / m), 2 * fk * m * G_ACC / k
+    n = len(ours.switch_times)
+    np.testing.assert_allclose(ours.switch_times, [(i + 1) * math.pi / omega
+                                                   for i in range(n)], atol=1e-9)
+    stop = (-1) ** n * (x0 - n * d)
+    assert abs(stop) <= fs * m * G_ACC / k < abs(x0 - (n - 1) * d)
+    assert ours.phases[-1].y_start[0] == pytest.approx(stop, abs=1e-9)
+    assert ours.phases[-1].y_end[0] == pytest.approx(stop, abs=1e-9)
+
+
+def test_coulomb_oscillator_no_chattering_at_the_stop():
+    """The number of switches is the physical one: three half-cycles and a final stick."""
+    law = Coulomb(0.15)
+    m = contact_motion(block_on_spring(law), 60.0, {"x": 1.0}, rtol=1e-12, m=1.0, k=1.0,
+                       g=1.0)
+    assert m.regimes == ("slip-", "slip+", "slip-", "stick")
+
+
+# -- cylinder on an incline (ch. 23) ------------------------------------------------------
+@pytest.mark.parametrize("factor, regimes", [(1 - 1e-6, ("stick",)), (1 + 1e-6, ("slip+",))])
+def test_cylinder_rolls_below_tan_alpha_3fs_and_slips_above(factor, regimes):
+    fs = 0.2
+    alpha = math.atan(3 * fs * factor)
+    m = contact_motion(cylinder_system(Coulomb(fs, 0.15)), 1.0, {"y": 0.1}, rtol=1e-12,
+                       m=2.0, r=0.1, g=G_ACC, alpha=alpha)
+    assert m.regimes == regimes
+
+
+def test_cylinder_rolling_friction_is_the_one_of_the_closed_form():
+    """Rolling: N = m g cos(alpha), T = -m g sin(alpha)/3 (up the slope), x'' = 2/3 g sin."""
+    alpha, mass = math.atan(0.5), 2.0
+    m = contact_motion(cylinder_system(Coulomb(0.2, 0.15)), 1.0, {"y": 0.1}, rtol=1e-12,
+                       m=mass, r=0.1, g=G_ACC, alpha=alpha)
+    N, T, vs = m.contact_actions(0.5)["I"]
+    assert N == pytest.approx(mass * G_ACC * math.cos(alpha), rel=1e-12)
+    assert T[0] == pytest.approx(-mass * G_ACC * math.sin(alpha) / 3, rel=1e-12)
+    assert abs(vs[0]) < 1e-10
+    assert m(1.0)[0] == pytest.approx(G_ACC * math.sin(alpha) / 3, rel=1e-10)
+
+
+@pytest.mark.parametrize("tan_alpha, v0, omega0", [(0.3, 2.0, 0.0), (0.5, 0.0, 30.0),
+                                                    (0.7, 2.0, 0.0), (0.2, -1.0, 5.0)])
+def test_cylinder_from_bodies_matches_hand_written(tan_alpha, v0, omega0):
+    law, r, alpha = Coulomb(0.2, 0.15), 0.1, math.atan(tan_alpha)
+    ours = contact_motion(cylinder_system(law), 3.0, {"y": r}, {"x": v0, "theta": omega0},
+                          rtol=1e-12, m=2.0, r=r, g=G_ACC, alpha=alpha)
+    hand = cylinder_on_incline(radius=r, angle=alpha, friction=law, v0=v0, omega0=omega0,
+                               t_end=3.0)
+    assert ours.regimes == tuple(RENAME[x] for x in hand.regimes)
+    np.testing.assert_allclose(ours.switch_times, hand.switch_times, rtol=0, atol=1e-9)
+    y_ours, y_hand = np.array(ours.phases[-1].y_end), np.array(hand.phases[-1].y_end)
+    np.testing.assert_allclose(y_ours[[0, 3, 2, 5]], y_hand, rtol=1e-9, atol=1e-9)
+
+
+def test_cylinder_slip_stops_at_the_closed_form_time():
+    """Launched at v0 without spin on a gentle slope: s = x' - r theta' decreases at the rate
+    g (f_k cos(alpha) (1 + 1/beta) - sin(alpha)), beta = 1/2; then it rolls."""
+    fk, alpha, v0 = 0.15, math.atan(0.3), 2.0
+    ours = contact_motion(cylinder_system(Coulomb(0.2, fk)), 3.0, {"y": 0.1}, {"x": v0},
+                          rtol=1e-12, m=2.0, r=0.1, g=G_ACC, alpha=alpha)
+    rate = G_ACC * (fk * math.cos(alpha) * 3 - math.sin(alpha))
+    assert ours.regimes == ("slip+", "stick")
+    assert ours.switch_times[0] == pytest.approx(v0 / rate, abs=1e-9)
+
+
+# -- block on an accelerating wagon (ch. 24) ------------------------------------------------
+def wagon_system(law):
+    xr, y = rm.coordinates("x_r y")
+    g = sp.Symbol("g", positive=True)
+    R0 = rm.Frame("R0")
+    Rw = R0.translated("Rw", R0.point("W", time**3 / 3, 0, 0))     # acceleration 2 t
+    wagon = rm.Body("wagon", frame=Rw)
+    B = Rw.point("B", xr, y, 0)
+    Rb = Rw.translated("Rb", B)
+    s = rm.System(galilean=R0)
+    s.add(wagon)
+    s.connect(wagon, rm.Body("block", frame=Rb, mass=1, centre=B), FrictionContact(
+        ContactKinematics(Rb, Rw, at=Rw.point("I", xr, y, 0), normal=Rw.j), friction=law))
+    s.act(rm.gravity(-g * R0.j))
+    return s
+
+
+def test_block_on_wagon_from_bodies_matches_hand_written_and_closed_form():
+    law = Coulomb(0.3, 0.2)
+    ours = contact_motion(wagon_system(law), 3.0, {}, rtol=1e-12, g=G_ACC)
+    hand = block_on_wagon(acceleration=lambda t: 2.0 * t, friction=law, t_end=3.0)
+    assert ours.regimes == ("stick", "slip-") == tuple(RENAME[x] for x in hand.regimes)
+    t1 = 0.3 * G_ACC / 2                                      # a(t) = f_s g
+    assert ours.switch_times[0] == pytest.approx(t1, abs=1e-9)
+    assert hand.switch_times[0] == pytest.approx(t1, abs=1e-9)
+    # sliding: x_r'' = -2 t + f_k g from rest at t1
+    T = 3.0
+    v = -(T**2 - t1**2) + 0.2 * G_ACC * (T - t1)
+    x = -(T**3 - t1**3) / 3 + t1**2 * (T - t1) + 0.1 * G_ACC * (T - t1) ** 2
+    y = ours.phases[-1].y_end
+    assert (y[0], y[2]) == (pytest.approx(x, abs=1e-9), pytest.approx(v, abs=1e-9))
+    np.testing.assert_allclose([y[0], y[2]], hand.phases[-1].y_end, atol=1e-9)
+
+
+# -- ball on a plane: two tangents ----------------------------------------------------------
+@pytest.fixture(scope="module")
+def ball():
+    return ball_system(0.3)
+
+
+def test_ball_without_spin_rolls_at_five_sevenths_of_v0(ball):
+    v0, mu, r = 1.0, 0.3, 0.5
+    m = contact_motion(ball, 1.0, {"z": r}, {"x": v0}, rtol=1e-12, m=1.0, r=r, g=G_ACC)
+    assert m.regimes == ("slip", "stick")
+    assert m.switch_times[0] == pytest.approx(2 * v0 / (7 * mu * G_ACC), abs=1e-9)
+    end = np.array(m.phases[0].y_end)
+    assert end[6] == pytest.approx(5 * v0 / 7, abs=1e-9)
+    assert end[7] == pytest.approx(0.0, abs=1e-12)
+    N, T, _ = m.contact_actions(0.5 * m.switch_times[0])["I"]
+    assert N == pytest.approx(G_ACC, rel=1e-12)
+    np.testing.assert_allclose(T, [-mu * G_ACC, 0.0], atol=1e-12)   # opposes v along i
+
+
+def _ball_by_hand(v0, w0, mu, r, g, t_end):
+    """m v' = F, (2/5) m r^2 w' = (-r k) ^ F, F = -mu m g u/|u|, u = v + w ^ (-r k)."""
+    def slip(s):
+        vx, vy, wx, wy, _ = s
+        return np.array([vx - r * wy, vy + r * wx])
+
+    def rhs(_, s):
+        u = slip(s)
+        F = -mu * g * u / np.linalg.norm(u)
+        k = 2.5 / r ** 2
+        return [F[0], F[1], k * r * F[1], -k * r * F[0], 0.0]
+
+    u0 = slip([*v0, *w0])
+
+    def stops(_, s):
+        return slip(s) @ u0
+
+    stops.terminal, stops.direction = True, -1
+    sol = solve_ivp(rhs, (0, t_end), [*v0, *w0], method="DOP853", rtol=1e-13, atol=1e-14,
+                    events=stops)
+    return sol.t_events[0][0], sol.y_events[0][0]
+
+
+def test_ball_with_spin_slides_in_the_direction_of_slip_not_of_velocity(ball):
+    """Spin (3, 0, 1) and v = (1, 0): the sliding velocity (1, 1.5) is not along v; the
+    friction opposes the sliding velocity, against a scipy integration of the hand-written
+    equations of the ball."""
+    r, mu = 0.5, 0.3
+    m = contact_motion(ball, 1.0, {"z": r}, {"x": 1.0, "a": 3.0, "c": 1.0}, rtol=1e-12,
+                       m=1.0, r=r, g=G_ACC)
+    t_star, s_star = _ball_by_hand((1.0, 0.0), (3.0, 0.0, 1.0), mu, r, G_ACC, 1.0)
+    assert m.regimes == ("slip", "stick")
+    assert m.switch_times[0] == pytest.approx(t_star, abs=1e-9)
+    assert t_star == pytest.approx(2 * math.hypot(1.0, 1.5) / (7 * mu * G_ACC), abs=1e-9)
+    end = m.phases[0].y_end
+    np.testing.assert_allclose(end[6:8], s_star[:2], atol=1e-9)
+    N, T, vs = m.contact_actions(0.05)["I"]
+    np.testing.assert_allclose(T / np.linalg.norm(T), -vs / np.linalg.norm(vs), atol=1e-12)
+    assert np.linalg.norm(T) == pytest.approx(mu * N, rel=1e-12)
+
+
+# -- friction never does positive work (property) -------------------------------------------
+@pytest.fixture(scope="module")
+def cylinder():
+    return cylinder_system(Coulomb(0.25, 0.2))
+
+
+@settings(max_examples=12, deadline=None)
+@given(tan_alpha=st.floats(-1.0, 1.0), v0=st.floats(-3.0, 3.0),
+       omega0=st.floats(-40.0, 40.0))
+def test_friction_power_is_never_positive(cylinder, tan_alpha, v0, omega0):
+    m = contact_motion(cylinder, 1.5, {"y": 0.1}, {"x": v0, "theta": omega0}, rtol=1e-10,
+                       m=1.0, r=0.1, g=G_ACC, alpha=math.atan(tan_alpha))
+    for p in m.phases:
+        for s in np.linspace(p.start, p.end, 7):
+            N, T, vs = m.contact_actions(s)["I"]
+            assert N > 0
+            assert float(T @ vs) <= 1e-9 * (1 + abs(N) * (1 + np.linalg.norm(vs)))
+
+
+# -- lift-off ----------------------------------------------------------------------------
+def test_lift_off_stops_the_motion_where_the_normal_force_vanishes():
+    """A pull t j upward on a block of weight m g: N = m g - t vanishes at t = m g."""
+    s = block_on_spring(Coulomb(0.3), horizontal_force=lambda R0: time * R0.j)
+    m = contact_motion(s, 20.0, {"x": 0.0}, rtol=1e-12, m=1.0, k=1.0, g=G_ACC)
+    assert m.regimes == ("stick",)
+    assert m.phases[-1].ended_by == "I lifts off"
+    assert m.phases[-1].end == pytest.approx(G_ACC, abs=1e-9)
+
+
+# -- bad input -----------------------------------------------------------------------------
+def test_negative_and_inconsistent_friction_coefficients_are_refused():
+    with pytest.raises(ArgumentError, match="`static` must be a friction coefficient >= 0"):
+        Coulomb(-0.1)
+    with pytest.raises(ArgumentError, match="`kinetic` must not exceed `static`"):
+        Coulomb(0.2, 0.3)
+
+
+def test_zero_contact_normal_is_refused():
+    R0 = rm.Frame("R0")
+    with pytest.raises(ArgumentError, match="`normal` must be a non-zero Vector"):
+        ContactKinematics(R0, R0, at=R0.origin, normal=0 * R0.j)
+    a = sp.Symbol("a", real=True)
+    with pytest.raises(ArgumentError, match="`normal` must be a non-zero vector"):
+        ContactKinematics(R0, R0, at=R0.origin,
+                          normal=(sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1) * R0.j)
+
+
+def test_friction_contact_needs_a_contact_and_a_coulomb_law():
+    R0 = rm.Frame("R0")
+    with pytest.raises(ArgumentTypeError, match="`contact` must be a ContactKinematics"):
+        FrictionContact(R0.origin, friction=Coulomb(0.1))
+    with pytest.raises(ArgumentTypeError, match="`friction` must be a Coulomb law"):
+        FrictionContact(ContactKinematics(R0, R0, at=R0.origin, normal=R0.j), friction=0.3)
+
+
+def test_equations_of_motion_of_a_system_with_contacts_are_refused():
+    s = block_on_spring(Coulomb(0.2))
+    with pytest.raises(ConnectionError_, match="contact_motion"):
+        s.equations_of_motion()
+    open_eqs = s.equations_of_motion(open_contacts=True)        # free flight
+    assert len(open_eqs.coordinates) == 2
+
+
+def test_contact_without_normal_coordinate_is_refused():
+    x = rm.coordinates("x")
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, 0, 0)
+    R1 = R0.translated("R1", G)
+    s = rm.System(galilean=R0)
+    s.connect(R0, rm.Body("b", frame=R1, mass=1, centre=G), FrictionContact(
+        ContactKinematics(R1, R0, at=G, normal=R0.j), friction=Coulomb(0.2)))
+    with pytest.raises(ConnectionError_, match="leaves no normal motion"):
+        contact_motion(s, 1.0, {"x": 0.0})
+
+
+def test_bad_values_for_contact_motion():
+    s = block_on_spring(Coulomb(0.2))
+    with pytest.raises(ArgumentError, match=r"missing values for the parameters \['g'"):
+        contact_motion(s, 1.0, {"x": 1.0}, m=1.0, k=1.0)
+    with pytest.raises(ArgumentError, match="unknown parameters"):
+        contact_motion(s, 1.0, {"x": 1.0}, m=1.0, k=1.0, g=1.0, mu=3.0)
+    with pytest.raises(ArgumentError, match="`u0` separates the contact I"):
+        contact_motion(s, 1.0, {"x": 1.0}, {"y": 1.0}, m=1.0, k=1.0, g=1.0)
+    with pytest.raises(ArgumentError, match="the contact I pulls"):
+        contact_motion(s, 1.0, {"x": 1.0}, m=1.0, k=1.0, g=-1.0)
+    with pytest.raises(ArgumentError, match="`q0` names unknown coordinates"):
+        contact_motion(s, 1.0, {"z": 1.0}, m=1.0, k=1.0, g=1.0)
+    with pytest.raises(ConnectionError_, match="no FrictionContact"):
+        contact_motion(rm.System(galilean=rm.Frame("R0")), 1.0, {})
