@@ -344,3 +344,73 @@ def test_bad_values_for_contact_motion():
         contact_motion(s, 1.0, {"z": 1.0}, m=1.0, k=1.0, g=1.0)
     with pytest.raises(ConnectionError_, match="no FrictionContact"):
         contact_motion(rm.System(galilean=rm.Frame("R0")), 1.0, {})
+
+
+# -- two contacts: a ladder sliding on a floor and a wall --------------------------------
+def ladder_system(floor_friction):
+    """A ladder (rod of length L, centre (x, y), angle theta with the floor), foot A on the
+    floor y = 0, top B against the wall x = 0 (frictionless)."""
+    x, y, th = rm.coordinates("x y theta")
+    m, L, g = sp.symbols("m L g", positive=True)
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=-th, origin=G)
+    A = R0.point("A", x + L / 2 * sp.cos(th), y - L / 2 * sp.sin(th), 0)
+    B = R0.point("B", x - L / 2 * sp.cos(th), y + L / 2 * sp.sin(th), 0)
+    ladder = rm.Body("ladder", frame=R1, mass=m, centre=G,
+                     inertia=rm.inertia.rod(m, L, axis=R1.i, centre=G))
+    s = rm.System(galilean=R0)
+    s.connect(R0, ladder, FrictionContact(ContactKinematics(R1, R0, at=A, normal=R0.j),
+                                          friction=floor_friction))
+    s.connect(R0, ladder, FrictionContact(ContactKinematics(R1, R0, at=B, normal=R0.i)))
+    s.act(rm.gravity(-g * R0.j))
+    return s
+
+
+def test_frictionless_ladder_leaves_the_wall_at_two_thirds_of_its_height():
+    """Closed form: the wall's normal force m x_G'' = (3 m g / 2) cos(theta)
+    (3/2 sin(theta) - sin(theta0)) vanishes at sin(theta) = 2/3 sin(theta0); the time against
+    a scipy integration of theta'' = -(3 g / 2 L) cos(theta)."""
+    th0, L = 1.2, 1.0
+    m = contact_motion(ladder_system(None), 5.0, {"x": math.cos(th0) * L / 2,
+                                                  "y": math.sin(th0) * L / 2, "theta": th0},
+                       rtol=1e-12, m=1.0, L=L, g=G_ACC)
+    assert m.regimes == ("A: contact; B: contact",)
+    assert m.phases[0].ended_by == "B lifts off"
+    th1 = math.asin(2 / 3 * math.sin(th0))
+    assert m.phases[0].y_end[2] == pytest.approx(th1, abs=1e-9)
+
+    def leaves(_, s):
+        return math.sin(s[0]) - math.sin(th1)
+
+    leaves.terminal = True
+    ref = solve_ivp(lambda _, s: [s[1], -1.5 * G_ACC / L * math.cos(s[0])], (0, 5),
+                    [th0, 0.0], method="DOP853", rtol=1e-13, atol=1e-14, events=leaves)
+    assert m.phases[0].end == pytest.approx(ref.t_events[0][0], abs=1e-9)
+    N = m.contact_actions(0.5 * m.phases[0].end)
+    assert N["A"][0] > 0 and N["B"][0] > 0
+
+
+def test_ladder_with_floor_friction_slips_from_the_start_and_leaves_the_wall():
+    m = contact_motion(ladder_system(Coulomb(0.1)), 5.0, {"x": math.cos(1.2) / 2,
+                                                         "y": math.sin(1.2) / 2, "theta": 1.2},
+                       rtol=1e-12, m=1.0, L=1.0, g=G_ACC)
+    assert m.regimes == ("A: slip+; B: contact",)
+    assert m.phases[0].ended_by == "B lifts off"
+
+
+def test_a_box_sticking_on_two_points_is_hyperstatic():
+    x, y, phi = rm.coordinates("x y phi")
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=phi, origin=G)
+    box = rm.Body("box", frame=R1, mass=1, centre=G,
+                  inertia=rm.inertia.rectangular_plate(1, 1, 1, frame=R1, centre=G))
+    s = rm.System(galilean=R0)
+    for name, side in (("A", -1), ("B", 1)):
+        at = G.moved(name, side * 0.5 * R1.i - 0.5 * R1.j)
+        s.connect(R0, box, FrictionContact(ContactKinematics(R1, R0, at=at, normal=R0.j),
+                                           friction=Coulomb(0.5)))
+    s.act(rm.gravity(-R0.j))
+    with pytest.raises(rm.errors.NumericalError, match="hyperstatic"):
+        contact_motion(s, 1.0, {"y": 0.5})

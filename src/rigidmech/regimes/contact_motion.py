@@ -256,12 +256,13 @@ class _Model:
         K[:n, n:] = -np.array(G).T
         K[n:, :n] = np.array(A)
         rhs = np.concatenate([f, b])
-        try:
-            x = np.linalg.solve(K, rhs)
-        except np.linalg.LinAlgError:
+        rows = np.array(A)
+        if np.linalg.matrix_rank(rows, tol=1e-10 * max(1.0, float(np.abs(rows).max()))) < m:
             raise NumericalError(
-                f"the regime {self.regime_name(states)} has a singular system at t = {t}: the "
-                "contact conditions are not independent (a hyperstatic contact).") from None
+                f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
+                "conditions are not independent, so their multipliers (the contact forces) "
+                "are not determined (e.g. a body sticking on a floor at two points).")
+        x = np.linalg.solve(K, rhs)
         return x[:n], x[n:], layout
 
     @staticmethod
