@@ -414,3 +414,16 @@ def test_a_box_sticking_on_two_points_is_hyperstatic():
     s.act(rm.gravity(-R0.j))
     with pytest.raises(rm.errors.NumericalError, match="hyperstatic"):
         contact_motion(s, 1.0, {"y": 0.5})
+
+
+def test_friction_contact_between_other_solids_than_the_connected_ones_is_refused():
+    x, y = rm.coordinates("x y")
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.translated("R1", G)
+    R2 = R0.translated("R2", R0.point("H", 0, 0, 1))
+    s = rm.System(galilean=R0)
+    with pytest.raises(ConnectionError_, match="FrictionContact joins the frames R2 and R0"):
+        s.connect(R0, rm.Body("b", frame=R1, mass=1, centre=G), FrictionContact(
+            ContactKinematics(R2, R0, at=G, normal=R0.j), friction=Coulomb(0.2)))
+    assert s.contacts == ()
