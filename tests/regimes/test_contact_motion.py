@@ -427,3 +427,19 @@ def test_friction_contact_between_other_solids_than_the_connected_ones_is_refuse
         s.connect(R0, rm.Body("b", frame=R1, mass=1, centre=G), FrictionContact(
             ContactKinematics(R2, R0, at=G, normal=R0.j), friction=Coulomb(0.2)))
     assert s.contacts == ()
+
+
+@settings(max_examples=6, deadline=None)
+@given(v=st.tuples(st.floats(-2.0, 2.0), st.floats(-2.0, 2.0)),
+       w=st.tuples(st.floats(-5.0, 5.0), st.floats(-5.0, 5.0), st.floats(-5.0, 5.0)))
+def test_friction_on_the_ball_never_does_positive_work(ball, v, w):
+    """Two tangents: T . v_s <= 0 at every sampled instant, |T| = mu N while sliding."""
+    m = contact_motion(ball, 0.5, {"z": 0.5}, {"x": v[0], "y": v[1], "a": w[0], "b": w[1],
+                                               "c": w[2]}, rtol=1e-10, m=1.0, r=0.5, g=G_ACC)
+    for p in m.phases:
+        for s in np.linspace(p.start, p.end, 5):
+            N, T, vs = m.contact_actions(s)["I"]
+            assert N == pytest.approx(G_ACC, rel=1e-9)
+            assert float(T @ vs) <= 1e-9 * (1 + N * (1 + np.linalg.norm(vs)))
+            if p.regime == "slip":
+                assert np.linalg.norm(T) == pytest.approx(0.3 * N, rel=1e-12)
