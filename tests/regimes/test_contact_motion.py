@@ -342,6 +342,11 @@ def test_bad_values_for_contact_motion():
         contact_motion(s, 1.0, {"x": 1.0}, m=1.0, k=1.0, g=-1.0)
     with pytest.raises(ArgumentError, match="`q0` names unknown coordinates"):
         contact_motion(s, 1.0, {"z": 1.0}, m=1.0, k=1.0, g=1.0)
+    with pytest.raises(ArgumentError, match="`t_span` must be an end time or a pair"):
+        contact_motion(s, "soon", {"x": 1.0}, m=1.0, k=1.0, g=1.0)
+    symbolic = block_on_spring(Coulomb(sp.Symbol("f", positive=True)))
+    with pytest.raises(ArgumentError, match="friction coefficients of contact I must be num"):
+        contact_motion(symbolic, 1.0, {"x": 1.0}, m=1.0, k=1.0, g=1.0)
     with pytest.raises(ConnectionError_, match="no FrictionContact"):
         contact_motion(rm.System(galilean=rm.Frame("R0")), 1.0, {})
 
