@@ -6,8 +6,8 @@ A solid ball of radius r is launched on a rough horizontal plane with the veloci
 spin omega0. The contact with the plane is a :class:`~rigidmech.actions.FrictionContact`
 with Coulomb's law: the System knows the bodies and the contact, and
 :func:`rigidmech.regimes.contact_motion` derives each regime itself. While the ball slides,
-the friction -mu N v_s/|v_s| opposes the **sliding velocity** v_s = v(I in ball/R0), not the
-velocity of the centre; it slows the sliding down until v_s = 0 at t* = 2 |v_s(0)| / (7 mu g),
+the friction ``-mu N v_s/|v_s|`` opposes the **sliding velocity** v_s = v(I in ball/R0), not the
+velocity of the centre; it slows the sliding down until v_s = 0 at ``t* = 2 |v_s(0)| / (7 mu g)``,
 and then the ball rolls without slipping (the contact sticks). Launched without spin, it
 rolls on at 5/7 of v0.
 """

@@ -420,7 +420,10 @@ class System(LinkedParameters):
     @property
     def contacts(self) -> tuple:
         """The one-sided contacts with friction ``(parent, child, contact)`` (see
-        :class:`~rigidmech.actions.FrictionContact`), in the order they were connected."""
+        :class:`~rigidmech.actions.FrictionContact`), in the order they were connected.
+        Their actions depend on the regime: they are in none of the system's derivations
+        (equations of motion, connection actions), only in
+        :func:`rigidmech.regimes.contact_motion` (which gives them along the motion)."""
         return tuple(self._contacts)
 
     def act(self, action: Action) -> None:

@@ -13,7 +13,7 @@ contact, and :func:`contact_motion` derives them itself from the system, for eac
 * **slip** (``slip+`` / ``slip-`` along the one tangent t of a plane contact, ``slip`` for a
   contact with two tangents): only the normal condition is kept, and the friction
   ``T = -f_k N v_s/|v_s|`` acts with its multiplier N: the generalised force of the contact is
-  (A_n - f_k (v_s/|v_s|) . A_t)^T N. The phase ends where the sliding velocity vanishes; the
+  ``(A_n - f_k (v_s/|v_s|) . A_t)^T N``. The phase ends where the sliding velocity vanishes; the
   contact then sticks if the friction needed to stick lies inside the cone
   (``|T| <= f_s N``), otherwise it slips back;
 * a frictionless contact (``friction=None``) keeps only its normal condition (regime
