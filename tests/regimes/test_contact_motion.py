@@ -448,3 +448,19 @@ def test_friction_on_the_ball_never_does_positive_work(ball, v, w):
             assert float(T @ vs) <= 1e-9 * (1 + N * (1 + np.linalg.norm(vs)))
             if p.regime == "slip":
                 assert np.linalg.norm(T) == pytest.approx(0.3 * N, rel=1e-12)
+
+
+def test_contact_conditions_do_not_drift_while_rolling(ball):
+    """Conditions enforced at the acceleration level, no stabilisation: over 10 s at
+    rtol 1e-12 the normal gap and the sliding velocity of the sticking contact stay at
+    round-off."""
+    m = contact_motion(cylinder_system(Coulomb(0.2, 0.15)), 10.0, {"y": 0.1}, {"x": 2.0},
+                       rtol=1e-12, m=2.0, r=0.1, g=G_ACC, alpha=math.atan(0.3))
+    ts = np.linspace(m.switch_times[0], 10.0, 25)
+    assert max(abs(m.contact_actions(s)["I"][2][0]) for s in ts) < 1e-12
+    assert max(abs(m(s)[1] - 0.1) for s in ts) < 1e-12
+    b = contact_motion(ball, 10.0, {"z": 0.5}, {"x": 1.0, "a": 3.0, "c": 1.0}, rtol=1e-12,
+                       m=1.0, r=0.5, g=G_ACC)
+    ts = np.linspace(b.switch_times[0], 10.0, 25)
+    assert max(np.linalg.norm(b.contact_actions(s)["I"][2]) for s in ts) < 1e-10
+    assert max(abs(b(s)[2] - 0.5) for s in ts) < 1e-12
