@@ -464,3 +464,22 @@ def test_contact_conditions_do_not_drift_while_rolling(ball):
     ts = np.linspace(b.switch_times[0], 10.0, 25)
     assert max(np.linalg.norm(b.contact_actions(s)["I"][2]) for s in ts) < 1e-10
     assert max(abs(b(s)[2] - 0.5) for s in ts) < 1e-12
+
+
+@pytest.mark.parametrize("factor, regimes", [(1 + 1e-6, ("A: stick; B: contact",)),
+                                             (1 - 1e-6, ("A: slip+; B: contact",))])
+def test_ladder_held_by_floor_friction_iff_fs_above_its_limit(factor, regimes):
+    """Statics of the ladder on a frictionless wall: N_A = m g, T_A = N_B = m g / (2 tan
+    theta): it holds at rest iff f_s >= 1 / (2 tan theta)."""
+    th0 = 1.2
+    fs = factor / (2 * math.tan(th0))
+    m = contact_motion(ladder_system(Coulomb(fs)), 2.0, {"x": math.cos(th0) / 2,
+                                                        "y": math.sin(th0) / 2, "theta": th0},
+                       rtol=1e-12, m=1.0, L=1.0, g=G_ACC)
+    assert m.regimes == regimes
+    N = m.contact_actions(0.0)
+    if regimes[0].startswith("A: stick"):
+        assert N["A"][0] == pytest.approx(G_ACC, rel=1e-12)
+        assert N["B"][0] == pytest.approx(G_ACC / (2 * math.tan(th0)), rel=1e-12)
+        assert N["A"][1][0] == pytest.approx(-N["B"][0], rel=1e-12)
+        assert m.phases[-1].y_end[2] == pytest.approx(th0, abs=1e-12)
