@@ -316,6 +316,8 @@ def test_equations_of_motion_of_a_system_with_contacts_are_refused():
         s.equations_of_motion()
     open_eqs = s.equations_of_motion(open_contacts=True)        # free flight
     assert len(open_eqs.coordinates) == 2
+    with pytest.raises(ConnectionError_, match="connection actions would miss them"):
+        s.connection_action(s.galilean, s.bodies[0])
 
 
 def test_contact_without_normal_coordinate_is_refused():

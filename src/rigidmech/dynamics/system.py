@@ -743,6 +743,11 @@ class System(LinkedParameters):
         """
         parent = self._solid(parent, "parent")
         child = self._solid(child, "child")
+        if self._contacts:
+            raise ConnectionError_(
+                "the system has one-sided contacts with friction whose actions depend on the "
+                "regime: its connection actions would miss them (see "
+                "rigidmech.regimes.contact_motion and ContactMotion.contact_actions).")
         link = self._link(parent, child, label)
         key = ("action", id(link))
         if key in self._cache:
