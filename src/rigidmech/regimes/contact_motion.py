@@ -520,6 +520,9 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     ('slip-', 'slip+', 'slip-', 'stick')
     >>> round(m.phases[-1].start, 9), round(m.phases[-1].y_start[0], 9)
     (9.424777961, -0.1)
+    >>> N, T, v_s = m.contact_actions(1.0)["I"]      # sliding back: T = +f_k N
+    >>> float(N), T.round(12), bool(v_s[0] < 0)
+    (1.0, array([0.15]), True)
     """
     if not isinstance(system, System):
         raise ArgumentTypeError(f"`system` must be a System; got {type(system).__name__}.")
