@@ -1,36 +1,97 @@
 """Ready-made motions with dry friction, run phase by phase (book, ch. 21.4, 23).
 
-Each :class:`RegimeScene` names a system of :mod:`rigidmech.regimes.friction`, its parameters
-with default values and its default initial state and duration; :func:`run_regime_scene`
-integrates it and returns a :class:`RegimeReport` whose summary prints the phases (regime,
-start, end, what ended each). ``python -m rigidmech run coulomb-oscillator`` and
-``python -m rigidmech run rolling-cylinder`` print these summaries.
+Each :class:`RegimeScene` poses a system from bodies (a :class:`~rigidmech.dynamics.System`
+with a :class:`~rigidmech.actions.FrictionContact`), its parameters with default values and
+its default initial state and duration; :func:`run_regime_scene` integrates it with
+:func:`rigidmech.regimes.contact_motion`, which derives the regimes from the system, and
+returns a :class:`RegimeReport` whose summary prints the phases (regime, start, end, what ended
+each). ``python -m rigidmech run coulomb-oscillator`` and ``python -m rigidmech run
+rolling-cylinder`` print these summaries. (The same motions written regime by regime are
+:func:`rigidmech.regimes.coulomb_oscillator` and :func:`rigidmech.regimes.cylinder_on_incline`;
+the tests check that both give the same phases.)
 """
 
 from __future__ import annotations
 
 import math
 import time
+from functools import lru_cache
+
+import sympy as sp
 
 from .._core.errors import SceneError
-from ..actions.contact_laws import Coulomb
-from ..regimes import PhasedMotion, coulomb_oscillator, cylinder_on_incline
+from ..actions import Coulomb, FrictionContact, Spring, gravity
+from ..dynamics import System
+from ..inertia import disk
+from ..kinematics import ContactKinematics
+from ..kinetics import Body
+from ..regimes import PhasedMotion, contact_motion
+from ..vectors import Frame, coordinates
 from .pipeline import _finite, check_plot_path
 
 __all__ = ["RegimeScene", "RegimeReport", "regime_scenes", "regime_scene_names",
            "run_regime_scene"]
 
 
+@lru_cache(maxsize=8)
+def _oscillator_system(fs, fk):
+    """A block (centre (x, y)) on the floor y = 0, a spring of zero free length from the
+    origin, the weight -m g j: the normal force is m g."""
+    x, y = coordinates("x y")
+    m, k, g = sp.symbols("m k g", positive=True)
+    R0 = Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.translated("R1", G)
+    block = Body("block", frame=R1, mass=m, centre=G)
+    system = System(galilean=R0)
+    system.connect(R0, block, FrictionContact(ContactKinematics(
+        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(fs, fk)))
+    system.act(gravity(-g * R0.j))
+    system.act(Spring(k, 0, a=R0.origin, b=G, on_b=block))
+    return system
+
+
+@lru_cache(maxsize=8)
+def _cylinder_system(fs, fk):
+    """A solid cylinder (centre (x, y), rotation theta, x' = r theta' when rolling) on the
+    incline y = 0 of angle alpha, x down the slope."""
+    x, y, th = coordinates("x y theta")
+    m, r, g, alpha = sp.symbols("m r g alpha", positive=True)
+    R0 = Frame("R0")
+    C = R0.point("C", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=-th, origin=C)
+    cylinder = Body("cylinder", frame=R1, mass=m, centre=C,
+                    inertia=disk(m, r, axis=R1.k, centre=C))
+    system = System(galilean=R0)
+    system.connect(R0, cylinder, FrictionContact(ContactKinematics(
+        R1, R0, at=R0.point("I", x, y - r, 0), normal=R0.j), friction=Coulomb(fs, fk)))
+    system.act(gravity(g * (sp.sin(alpha) * R0.i - sp.cos(alpha) * R0.j)))
+    return system
+
+
+def _law(p):
+    Coulomb(p["fs"], p["fk"])                 # refuses a negative or inconsistent coefficient
+    return p["fs"], p["fk"]
+
+
+def _positive(p, *names):
+    bad = [f"{n}={p[n]:g}" for n in names if not p[n] > 0]
+    if bad:
+        raise SceneError(f"parameters {', '.join(names)} must be > 0; got {', '.join(bad)}.")
+
+
 def _oscillator(p, q0, u0, t_end):
-    return coulomb_oscillator(mass=p["m"], stiffness=p["k"], normal_force=p["N"],
-                              friction=Coulomb(p["fs"], p["fk"]), x0=q0[0], v0=u0[0],
-                              t_end=t_end)
+    _positive(p, "m", "k", "N")
+    return contact_motion(_oscillator_system(*_law(p)), t_end, {"x": q0[0], "y": 0.0},
+                          {"x": u0[0]}, rtol=1e-12, m=p["m"], k=p["k"], g=p["N"] / p["m"])
 
 
 def _cylinder(p, q0, u0, t_end):
-    return cylinder_on_incline(radius=p["r"], angle=p["alpha"], g=p["g"],
-                               friction=Coulomb(p["fs"], p["fk"]), v0=u0[0], omega0=u0[1],
-                               t_end=t_end)
+    _positive(p, "r", "g")
+    return contact_motion(_cylinder_system(*_law(p)), t_end,
+                          {"x": q0[0], "y": p["r"], "theta": q0[1]},
+                          {"x": u0[0], "theta": u0[1]}, rtol=1e-12, m=1.0, r=p["r"],
+                          g=p["g"], alpha=p["alpha"])
 
 
 class RegimeScene:
@@ -44,11 +105,13 @@ class RegimeScene:
     """
 
     __slots__ = ("_name", "_title", "_section", "_parameters", "_state", "_q0", "_u0",
-                 "_t_end", "_runner", "_notes")
+                 "_t_end", "_runner", "_notes", "_layout")
 
     def __init__(self, name, title, section, *, parameters, state, q0, u0, t_end, runner,
-                 notes=""):
+                 notes="", layout=None):
         self._name, self._title, self._section = name, title, section
+        self._layout = tuple(layout) if layout is not None else tuple(
+            n for q in state for n in (q, f"{q}_dot"))
         self._parameters = tuple(parameters)
         self._state, self._q0, self._u0 = tuple(state), tuple(q0), tuple(u0)
         self._t_end, self._runner, self._notes = float(t_end), runner, notes
@@ -60,7 +123,9 @@ class RegimeScene:
                           doc="(name, default, meaning) of each parameter.")
     notes = property(lambda self: self._notes, doc="Conventions of the scene.")
     state = property(lambda self: self._state,
-                     doc="Names of the coordinates (the state is q and q').")
+                     doc="Names of the coordinates given by q0 and u0.")
+    layout = property(lambda self: self._layout,
+                      doc="Names of the components of the integrated state y.")
 
     @property
     def defaults(self) -> dict:
@@ -78,15 +143,19 @@ _SCENES = (
                     ("fs", 0.12, "static friction coefficient"),
                     ("fk", 0.1, "kinetic friction coefficient")),
         state=("x",), q0=(1.0,), u0=(0.0,), t_end=20.0, runner=_oscillator,
-        notes="x: elongation of the spring; the amplitude drops by 4 fk N / k per cycle."),
+        layout=("x", "y", "x_dot", "y_dot"),
+        notes="x: elongation of the spring, y: height of the block on the floor (0 while in "
+              "contact); the amplitude drops by 4 fk N / k per cycle."),
     RegimeScene(
         "rolling-cylinder", "Solid cylinder on a rough incline: rolling or slipping", "ch. 23",
         parameters=(("r", 0.1, "radius"), ("alpha", math.atan(0.3), "angle of the incline"),
                     ("g", 9.81, "gravity"), ("fs", 0.2, "static friction coefficient"),
                     ("fk", 0.15, "kinetic friction coefficient")),
         state=("x", "theta"), q0=(0.0, 0.0), u0=(2.0, 0.0), t_end=2.0, runner=_cylinder,
-        notes="x down the slope, theta the rotation; launched sliding (u0 = x', theta'), it "
-              "slips, then rolls if tan(alpha) <= 3 fs."),
+        layout=("x", "y", "theta", "x_dot", "y_dot", "theta_dot"),
+        notes="x down the slope, y the height of the centre (r while in contact), theta the "
+              "rotation; launched sliding (u0 = x', theta'), it slips, then rolls (sticks) if "
+              "tan(alpha) <= 3 fs."),
 )
 _BY_NAME = {s.name: s for s in _SCENES}
 
@@ -138,13 +207,13 @@ class RegimeReport:
         >>> print(run_regime_scene("coulomb-oscillator", t_end=2.0).summary())
         ... # doctest: +ELLIPSIS
         Mass on a spring with dry friction: stick-slip (coulomb-oscillator, book ch. 21.4)
-        state y = (x, x_dot); m=1, k=4, N=2, fs=0.12, fk=0.1
+        state y = (x, y, x_dot, y_dot); m=1, k=4, N=2, fs=0.12, fk=0.1
         initial q0 = [1.0], u0 = [0.0], t = 0 .. 2
         phases (2):
           phase  regime  start        end          ended by
-          1      slide-  0            1.570796327  stops
-          2      slide+  1.570796327  2            -
-        final state at t = 2: [...] (slide+)
+          1      slip-   0            1.570796327  I stops slipping
+          2      slip+   1.570796327  2            -
+        final state at t = 2: [...] (slip+)
         integrated in ... ms
         """
         sc = self.scene
@@ -153,7 +222,7 @@ class RegimeReport:
         final = ", ".join(f"{v:.10g}" for v in last.y_end)
         return "\n".join([
             f"{sc.title} ({sc.name}, book {sc.section})",
-            f"state y = ({', '.join(f'{q}, {q}_dot' for q in sc._state)}); {params}",
+            f"state y = ({', '.join(sc.layout)}); {params}",
             f"initial q0 = {list(self.q0)}, u0 = {list(self.u0)}, t = 0 .. {self.t_end:g}",
             f"phases ({len(self.motion.phases)}):",
             *("  " + line for line in self.motion.table().splitlines()),
@@ -180,8 +249,8 @@ def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None,
     >>> print(run_regime_scene("rolling-cylinder").summary())     # doctest: +ELLIPSIS
     Solid cylinder on a rough incline: rolling or slipping (rolling-cylinder, book ch. 23)
     ...
-      1      slipping+  0 ...
-      2      rolling    ...
+      1      slip+   0 ...
+      2      stick   ...
     """
     if name not in _BY_NAME:
         raise SceneError(f"unknown regime scene {name!r}; known: {', '.join(_BY_NAME)}.")
