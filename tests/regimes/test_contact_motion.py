@@ -10,6 +10,7 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
 import rigidmech as rm
 from rigidmech.actions import Coulomb, Force, FrictionContact, Spring
@@ -26,9 +27,9 @@ from rigidmech.vectors import t as time
 G_ACC = 9.81
 
 
-def block_on_spring(law, *, horizontal_force=None):
+def block_on_spring(law, *, horizontal_force=None, gap=False):
     """A block (mass m, centre (x, y)) on the floor y = 0, a spring of zero free length from
-    the origin, gravity -g j."""
+    the origin, gravity -g j; with ``gap``, the contact knows its gap y."""
     x, y = rm.coordinates("x y")
     m, k, g = sp.symbols("m k g", positive=True)
     R0 = rm.Frame("R0")
@@ -37,7 +38,8 @@ def block_on_spring(law, *, horizontal_force=None):
     block = rm.Body("block", frame=R1, mass=m, centre=G)
     s = rm.System(galilean=R0)
     s.connect(R0, block, FrictionContact(ContactKinematics(
-        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=law))
+        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=law,
+        gap=y if gap else None))
     s.act(rm.gravity(-g * R0.j))
     s.act(Spring(k, 0, a=R0.origin, b=G, on_b=block))
     if horizontal_force is not None:
@@ -485,3 +487,38 @@ def test_ladder_held_by_floor_friction_iff_fs_above_its_limit(factor, regimes):
         assert N["B"][0] == pytest.approx(G_ACC / (2 * math.tan(th0)), rel=1e-12)
         assert N["A"][1][0] == pytest.approx(-N["B"][0], rel=1e-12)
         assert m.phases[-1].y_end[2] == pytest.approx(th0, abs=1e-12)
+
+
+def test_block_lifted_off_flies_lands_and_slides_against_closed_forms():
+    """A block (weight m g) pulled by 2 m g sin(t) j and 0.1 m g i, f = 0.3, with the gap y:
+    it sticks until 0.3 (m g - 2 m g sin t) = 0.1 m g (sin t = 1/3), slips, lifts off where
+    N = m g (1 - 2 sin t) = 0 (t = pi/6), flies with y'' = -g + 2 g sin t and lands where
+    y(t) = 0 (solved by brentq), its normal velocity set to zero by the impact."""
+    m_, g_ = sp.symbols("m g", positive=True)
+    s = block_on_spring(Coulomb(0.3), gap=True, horizontal_force=lambda R0: (
+        2 * m_ * g_ * (sp.sin(time) * R0.j + sp.Rational(1, 20) * R0.i)))
+    m = contact_motion(s, 8.0, {}, rtol=1e-12, m=1.0, k=0.0, g=G_ACC)
+    assert m.regimes == ("stick", "slip+", "open", "slip+", "stick", "slip+", "open")
+    assert [p.ended_by for p in m.phases[:3]] == ["I starts slipping", "I lifts off", "I lands"]
+    t1 = math.pi / 6
+
+    def height(t):
+        return (-G_ACC * (t - t1) ** 2 / 2 - 2 * G_ACC * (math.sin(t) - math.sin(t1))
+                + 2 * G_ACC * math.cos(t1) * (t - t1))
+
+    landing = brentq(height, 3.0, 7.0)
+    expected = [math.asin(1 / 3), t1, landing]
+    np.testing.assert_allclose(m.switch_times[:3], expected, atol=1e-9)
+    np.testing.assert_allclose(m.switch_times[4:6], [2 * math.pi + math.asin(1 / 3),
+                                                     2 * math.pi + t1], atol=1e-9)
+    before, after = m.phases[2].y_end, m.phases[3].y_start
+    assert before[3] < 0 and after[3] == pytest.approx(0.0, abs=1e-12)   # plastic impact
+    assert after[2] == pytest.approx(before[2], rel=1e-12)                # x' unchanged
+    assert m.contact_actions(2.0)["I"][0] == 0.0                          # open: no action
+
+
+def test_gap_must_be_an_expression():
+    R0 = rm.Frame("R0")
+    kin = ContactKinematics(R0, R0, at=R0.origin, normal=R0.j)
+    with pytest.raises(ArgumentError, match="`gap` must be an expression of the coordinates"):
+        FrictionContact(kin, gap=1.0)

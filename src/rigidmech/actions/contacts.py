@@ -379,6 +379,12 @@ class FrictionContact:
         for two surfaces).
     friction : Coulomb, optional
         The law of friction; None for a frictionless contact (T = 0).
+    gap : sympy expression, optional
+        The distance between the two surfaces as a function of the coordinates (and t): 0 in
+        contact, > 0 when the contact is open (for a block whose bottom is at height y above
+        the floor, ``y``). With it, a contact that lifts off **opens** and the motion goes on
+        in flight until the gap closes again (a perfectly plastic impact: the normal relative
+        velocity drops to zero); without it, the motion stops where the contact lifts off.
 
     Examples
     --------
@@ -397,10 +403,11 @@ class FrictionContact:
     T1_I*R0.i + N_I*R0.j - T2_I*R0.k
     """
 
-    __slots__ = ("_contact", "_friction")
+    __slots__ = ("_contact", "_friction", "_gap")
     one_sided = True
 
-    def __init__(self, contact: ContactKinematics, *, friction: Coulomb | None = None):
+    def __init__(self, contact: ContactKinematics, *, friction: Coulomb | None = None,
+                 gap=None):
         if not isinstance(contact, ContactKinematics):
             raise ArgumentTypeError(
                 f"`contact` must be a ContactKinematics (rigidmech.kinematics, or "
@@ -408,8 +415,19 @@ class FrictionContact:
         if friction is not None and not isinstance(friction, Coulomb):
             raise ArgumentTypeError(
                 f"`friction` must be a Coulomb law or None; got {type(friction).__name__}.")
-        self._contact, self._friction = contact, friction
+        if gap is not None:
+            try:
+                gap = sp.sympify(gap)
+            except (sp.SympifyError, TypeError):
+                raise ArgumentTypeError(f"`gap` must be a sympy expression of the coordinates; "
+                                        f"got {gap!r}.") from None
+            if not isinstance(gap, sp.Expr) or gap.is_number:
+                raise ArgumentError(f"`gap` must be an expression of the coordinates (the "
+                                    f"distance between the surfaces); got {gap!r}.")
+        self._contact, self._friction, self._gap = contact, friction, gap
 
+    gap = property(lambda self: self._gap,
+                   doc="The distance between the surfaces (an expression), or None.")
     contact = property(lambda self: self._contact,
                        doc="The kinematics of the contact (point, normal, sliding velocity).")
     friction = property(lambda self: self._friction, doc="The Coulomb law, or None.")

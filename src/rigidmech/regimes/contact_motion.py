@@ -19,10 +19,13 @@ contact, and :func:`contact_motion` derives them itself from the system, for eac
 * a frictionless contact (``friction=None``) keeps only its normal condition (regime
   ``contact``).
 
-In every regime the motion **stops** where a normal force N would become negative (guard
-"lifts off"): the contact opens there, and its later motion (flight and a new impact) is not
-integrated. The phases come back as a :class:`ContactMotion`
-(a :class:`~rigidmech.regimes.PhasedMotion` that also gives the contact actions).
+Where a normal force N would become negative (guard "lifts off") the contact opens: if the
+contact has a ``gap`` (the distance between the surfaces), the motion goes on with the contact
+**open** (no condition, no action) until the gap closes again (guard "lands": a perfectly
+plastic impact sets the normal relative velocity to zero, in the metric of the mass matrix, and
+the contact sticks or slips from there); without a gap the motion **stops** there. The impact
+is frictionless (no tangential impulse). The phases come back as a :class:`ContactMotion` (a
+:class:`~rigidmech.regimes.PhasedMotion` that also gives the contact actions).
 
 The state is y = (q, q'), q the system's coordinates. The coordinates of each body in contact
 must leave the contact free in the normal direction (N is a multiplier) and in the
@@ -100,10 +103,11 @@ class _Row:
 class _Contact:
     """A contact's numeric rows: the normal one and 1 or 2 tangential ones."""
 
-    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk")
+    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap")
 
-    def __init__(self, name, law, normal, tangents):
+    def __init__(self, name, law, normal, tangents, gap=None):
         self.name, self.law, self.normal, self.tangents = name, law, normal, tangents
+        self.gap = gap                        # index of the gap in the evaluated list
         if law is not None:
             try:
                 self.fs, self.fk = float(law.static), float(law.kinetic)
@@ -117,8 +121,10 @@ class _Contact:
     @property
     def states(self):
         if self.law is None:
-            return ("contact",)
-        return ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
+            out = ("contact",)
+        else:
+            out = ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
+        return out + (("open",) if self.gap is not None else ())
 
     def sliding(self, vals):
         return np.array([vals[r.c] for r in self.tangents])
@@ -136,7 +142,7 @@ class _Model:
         exprs = [sp.Matrix(eqs.mass_matrix).xreplace(rule), sp.Matrix(eqs.forcing).xreplace(rule)]
         self.closures = []
         self.contacts = []
-        rows = []
+        rows, gaps = [], []
 
         def row(c):
             c = sp.sympify(c).xreplace(rule)
@@ -169,15 +175,21 @@ class _Model:
                     "no sliding velocity, so friction has no regime to switch between.")
             normal = row(v.dot(kin.normal))
             tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
-            self.contacts.append(_Contact(name, contact.friction, normal, tang))
-        self._compile(exprs, rows, q_sym, u_sym, params)
+            gap = None
+            if contact.gap is not None:
+                gaps.append(contact.gap.xreplace(rule))
+                gap = len(gaps) - 1
+            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap))
+        self._compile(exprs, rows, q_sym, u_sym, params, gaps)
         for c in self.contacts:
             c.normal = self._rows[c.normal]
             c.tangents = [self._rows[i] for i in c.tangents]
+            if c.gap is not None:                 # gaps come after the rows
+                c.gap = 2 + 3 * len(rows) + c.gap
         self.closures = [self._rows[i] for i in self.closures]
 
-    def _compile(self, exprs, rows, q_sym, u_sym, params):
-        flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)]]
+    def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
+        flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)], *gaps]
         free = set()
         for e in flat:
             free |= sp.sympify(e).free_symbols
@@ -235,6 +247,8 @@ class _Model:
             A.append(J), G.append(J), b.append(-float(vals[r.h]))
             layout.append(("closure", None))
         for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
+            if s == "open":
+                continue
             Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
             Jt = [np.asarray(vals[r.J], dtype=float).reshape(-1) for r in c.tangents]
             force = Jn.copy()
@@ -279,6 +293,9 @@ class _Model:
         vals = self.values(t, y)
         out = []
         for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
+            if s == "open":
+                out.append((0.0, np.zeros(len(c.tangents))))
+                continue
             N = next(float(lam[i]) for i, (kind, key) in enumerate(layout)
                      if kind == "N" and key == k)
             if s == "stick":
@@ -298,9 +315,13 @@ class _Model:
         M = np.atleast_2d(np.asarray(vals[0], dtype=float))
         rows = [r for r in self.closures]
         for c, s in zip(self.contacts, states, strict=True):
+            if s == "open":
+                continue
             rows.append(c.normal)
             if s == "stick":
                 rows.extend(c.tangents)
+        if not rows:
+            return np.array(y, dtype=float)
         A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for r in rows])
         c = np.array([float(vals[r.c]) for r in rows])
         u = np.array(y[n:], dtype=float)
@@ -386,10 +407,13 @@ class _Rules:
     def guards(self, states, k, s):
         c, m = self.m.contacts[k], self.m
         name = m.regime_name
+        if s == "open":
+            return [self._landing_guard(states, k)]
 
         def normal(t, y):
             return self.forces(t, y, states)[k][0]
-        out = [Guard(f"{c.name} lifts off", normal, target=None, direction=-1)]
+        opened = None if c.gap is None else name(self._with(states, k, "open"))
+        out = [Guard(f"{c.name} lifts off", normal, target=opened, direction=-1)]
         if s == "stick":
             def cone(t, y):
                 N, T = self.forces(t, y, states)[k]
@@ -438,11 +462,45 @@ class _Rules:
         return Guard(f"{c.name} stops slipping", along, target=target, direction=-1,
                      reset=reset)
 
+    def _landing_guard(self, states, k):
+        """The open contact k closes: a perfectly plastic impact, then stick or slip."""
+        c, m = self.m.contacts[k], self.m
+        impact = self._with(states, k, "impact")  # the normal condition of k, no tangent
+
+        def gap(t, y):
+            return float(m.values(t, y)[c.gap])
+
+        def target(t, y):
+            return m.regime_name(self._with(states, k, self.closing_state(
+                t, m.project(t, y, impact), states, k)))
+
+        def reset(t, y):
+            after = m.project(t, y, impact)
+            return m.project(t, after, self._with(states, k, self.closing_state(
+                t, after, states, k)))
+
+        return Guard(f"{c.name} lands", gap, target=target, direction=-1, reset=reset)
+
+    def closing_state(self, t, y, states, k):
+        """The state of contact k as it closes at (t, y) (normal velocity zero)."""
+        c = self.m.contacts[k]
+        if c.law is None:
+            return "contact"
+        vs = c.sliding(self.m.values(t, y))
+        if float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+            if len(c.tangents) == 1:
+                return "slip+" if vs[0] > 0 else "slip-"
+            self.directions[k] = vs / float(np.linalg.norm(vs))
+            return "slip"
+        return self.after_stop(t, y, states, k)
+
     def start(self, t, y):
         states = []
         for k, c in enumerate(self.m.contacts):
             vs = c.sliding(self.m.values(t, y))
-            if c.law is None:
+            if c.gap is not None and self.m.values(t, y)[c.gap] > 1e-12:
+                states.append("open")
+            elif c.law is None:
                 states.append("contact")
             elif float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
                 if len(c.tangents) == 1:
@@ -455,7 +513,11 @@ class _Rules:
         states = tuple(states)
         forces = self.forces(t, y, states)
         for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
-            if N < 0:
+            if states[k] == "open":
+                continue
+            if N < 0 and c.gap is not None:
+                states = self._with(states, k, "open")
+            elif N < 0:
                 raise ArgumentError(
                     f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
                     "it opens at once; start the bodies where the contact presses.")
@@ -488,7 +550,8 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     Returns
     -------
     ContactMotion
-        Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact`` (one contact),
+        Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one
+        contact),
         or ``"I: stick; J: slip+"`` (several, by the names of their points).
 
     Raises
@@ -539,6 +602,8 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     y0 = np.concatenate([_state_vector(q0, coords, "q0"), _state_vector(u0, coords, "u0")])
     vals = model.values(span[0], y0)
     for c in model.contacts:
+        if c.gap is not None and float(vals[c.gap]) > 1e-12:
+            continue                                 # starts open
         vn = float(vals[c.normal.c])
         if abs(vn) > 1e-9 * (1.0 + float(np.linalg.norm(y0[model.n:]))):
             raise ArgumentError(f"`u0` separates the contact {c.name}: its normal velocity is "
