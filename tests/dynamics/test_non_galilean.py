@@ -179,3 +179,18 @@ def test_reference_bad_input():
     Rm = R0.rotated("Rm", about=R0.k, angle=t)
     with pytest.raises(FrameError, match="pass a moving frame as `reference=`"):
         rm.System(galilean=Rm)
+
+
+def test_lagrange_equations_in_the_moving_reference():
+    """Lagrange's equations written with T relative to the Earth and the power coefficients
+    of the inertial actions (ch. 25) agree with the fundamental principle (both routes)."""
+    s = _foucault("reference")[0]
+    _same_equations(s, _LagrangeView(rm.lagrange_equations(s)))
+
+
+class _LagrangeView:
+    def __init__(self, eqs):
+        self._eqs = eqs
+
+    def equations_of_motion(self):
+        return self._eqs
