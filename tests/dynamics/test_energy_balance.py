@@ -175,3 +175,36 @@ def test_energy_balance_bad_input():
     s.act(rm.gravity(-s.galilean.j))
     with pytest.raises(ArgumentError, match="the system has changed"):
         sim.energy_balance()
+
+
+def test_four_bar_with_a_damper_energy_balance():
+    """A closed loop: the multipliers of the closing joint do no work (its conditions do
+    not depend on time), the torsional damper dissipates."""
+    q1, q2, q3 = rm.coordinates("q1 q2 q3")
+    m, g, c = rm.constants("m g c", positive=True)
+    R0 = rm.Frame("R0")
+    k = R0.k
+    R1 = R0.rotated("R1", about=k, angle=q1)
+    R2 = R1.rotated("R2", about=k, angle=q2, origin=R0.origin.moved("B", R1.i))
+    R3 = R0.rotated("R3", about=k, angle=q3, origin=R0.point("D", 2, 0, 0))
+    bars = []
+    for name, frame, length in (("crank", R1, 1), ("coupler", R2, 2), ("rocker", R3, 1.5)):
+        G = frame.origin.moved("G" + name, length / 2 * frame.i)
+        bars.append(rm.Body(name, frame=frame, mass=m, centre=G,
+                            inertia=rm.inertia.rod(m, length, axis=frame.i, centre=G)))
+    crank, coupler, rocker = bars
+    s = rm.System(galilean=R0)
+    s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
+    s.connect(crank, coupler, rm.joints.Pivot(at=R2.origin, axis=k))
+    s.connect(R0, rocker, rm.joints.Pivot(at=R3.origin, axis=k))
+    s.connect(coupler, rocker, rm.joints.Pivot(at=R2.origin.moved("C", 2 * R2.i), axis=k),
+              meets=R3.origin.moved("C3", 1.5 * R3.i))
+    s.act(rm.gravity(-g * R0.j))
+    s.act(rm.actions.TorsionalDamper(c, axis=k, on=crank))
+    q0, u0 = s.assemble({"q1": 1.0, "q2": -0.6, "q3": 1.4}, independent=["q1"],
+                        rates={"q1": 2.0}, m=1.0, g=9.81, c=0.3)
+    sim = s.equations_of_motion().simulate(t=(0, 5), q0=q0, u0=u0, m=1.0, g=9.81, c=0.3,
+                                           **TIGHT)
+    E = sim.energy()
+    assert E[-1] < E[0] - 1.0                        # the damper took energy away
+    assert np.max(np.abs(sim.energy_balance())) < 1e-7 * abs(E[0])

@@ -194,3 +194,17 @@ class _LagrangeView:
 
     def equations_of_motion(self):
         return self._eqs
+
+
+def test_reference_fixed_in_the_galilean_one_adds_nothing():
+    R0 = rm.Frame("R0")
+    R = R0.rotated("R", about=R0.k, angle=sp.pi / 6).translated("RT", R0.point("A", 1, 2, 0))
+    s = rm.System(galilean=R0, reference=R)
+    assert s.reference is R and s.galilean is R0 and s.actions == ()
+
+
+def test_inertial_actions_given_twice_refused():
+    s, _, _, E = _foucault("reference")
+    with pytest.raises(rm.errors.ConnectionError_,
+                       match="already adds its inertial actions .* would count them twice"):
+        s.act(InertialActions(reference=E.frame, galilean=E.geocentric))

@@ -22,12 +22,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .._core.errors import ArgumentTypeError, FrameError
+from .._core.errors import ArgumentTypeError, ConnectionError_, FrameError
 from ..kinetics import EarthReference, InertialActions
 from ..vectors import Frame, t
 from ..vectors.symbols import is_coordinate
 
-__all__ = ["resolve_reference"]
+__all__ = ["resolve_reference", "check_inertial_action"]
 
 
 def _placing(frame, stop=None):
@@ -119,11 +119,25 @@ def resolve_reference(galilean, reference):
     if reference.root is not galilean.root:
         raise FrameError(f"`reference` ({reference.name}) and `galilean` ({galilean.name}) "
                          "must belong to the same frame tree.")
-    found = _coordinates_of(_placing(reference))
+    placing = _placing(reference)
+    found = _coordinates_of(placing)
     if found:
         raise FrameError(
             f"`reference` frame {reference.name} moves with the parameter of situation "
             f"{found[0]}: the motion of the reference relative to the Galilean one must be "
             "prescribed (a function of time). Write the system in the Galilean reference, "
             "with that body as one of its bodies.")
+    if not any(sp.sympify(e).has(t) for e in placing):
+        return reference, None, galilean       # fixed in R0: Galilean as well
     return reference, InertialActions(reference=reference, galilean=galilean), galilean
+
+
+def check_inertial_action(system, action):
+    """Refuse inertial actions given to a system whose reference already adds them (they
+    would count twice)."""
+    if isinstance(action, InertialActions) and any(
+            isinstance(a, InertialActions) for a in system.actions):
+        raise ConnectionError_(
+            f"the system is written in the moving reference {system.reference.name} and "
+            "already adds its inertial actions of entrainment and Coriolis; adding "
+            f"{action!r} would count them twice.")

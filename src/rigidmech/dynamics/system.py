@@ -40,7 +40,7 @@ from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 from .linked import LinkedParameters
-from .reference import resolve_reference
+from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
 
@@ -405,8 +405,10 @@ class System(LinkedParameters):
         ------
         ConnectionError\\_
             If the action is already in the system, if it is a second gravity, or if it acts
-            on a body that is not in the system (connect the body first).
+            on a body that is not in the system (connect the body first), or inertial actions
+            given to a system whose ``reference`` already adds them.
         """
+        check_inertial_action(self, action)
         self._graph = self._graph.with_action(action)
         self._cache.clear()
 
@@ -620,8 +622,9 @@ class System(LinkedParameters):
                                   tuple(self._bodies), tuple(self._actions))
 
     def kinetic_energy(self):
-        """Kinetic energy of the set of bodies relative to the Galilean reference (ch. 16.3.3),
-        in terms of q(t) and q'(t)."""
+        """Kinetic energy of the set of bodies relative to the reference of the equations
+        (:attr:`reference`, the Galilean one by default; ch. 16.3.3), in terms of q(t) and
+        q'(t)."""
         return sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
 
     def generalized_forces(self):
