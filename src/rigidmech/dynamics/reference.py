@@ -16,6 +16,25 @@ the equations of motion and the connection actions are relative to R, and an
 :class:`~rigidmech.kinetics.InertialActions` is among the system's actions. The motion of R
 relative to R0 must be prescribed: it may depend on time, not on the parameters of
 situation.
+
+Examples
+--------
+A bead on a rod turning at the constant rate w about the vertical k0: relative to the rod,
+m r'' = m w^2 r (the inertial action of entrainment), and the rod pushes on the bead with the
+opposite of the Coriolis action, 2 m w r' j1, besides m g k0.
+
+>>> import rigidmech as rm
+>>> r = rm.coordinates("r"); m, w, g = rm.constants("m w g", positive=True)
+>>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=w * rm.t)
+>>> B = R1.point("B", r, 0, 0)
+>>> bead = rm.Body("bead", frame=R1.translated("Rb", B), mass=m, centre=B)
+>>> s = rm.System(galilean=R0, reference=R1)
+>>> s.connect(R1, bead, rm.joints.Prismatic(at=B, axis=R1.i))
+>>> s.act(rm.gravity(-g * R0.k))
+>>> s.equations_of_motion().forcing
+Matrix([[m*w**2*r(t)]])
+>>> s.connection_action(R1, bead).resultant.components(R1).T   # first: 0 along the motion
+Matrix([[-m*w**2*r(t) + m*Derivative(r(t), (t, 2)), 2*m*w*Derivative(r(t), t), g*m]])
 """
 
 from __future__ import annotations
