@@ -95,10 +95,11 @@ def time_dependence(kinetic, energy, rates, rule):
     >>> time_dependence(r.diff(rm.t)**2 / 2, r.diff(rm.t)**2 / 2 + rm.t * r, [u], rule)
     'the energy T + V depends on time explicitly (a prescribed motion or a field that varies)'
     """
-    rest = dict.fromkeys(rates, 0)
     if kinetic is not None:
-        T = sp.sympify(kinetic).xreplace(rule)
-        low = [T.xreplace(rest)] + [T.diff(u).xreplace(rest) for u in rates]
+        # T(s q') = T2 s^2 + T1 s + T0: T0 and T1 from one derivative in s at s = 0
+        s = sp.Dummy("s")
+        T = sp.sympify(kinetic).xreplace(rule).xreplace({u: s * u for u in rates})
+        low = (T.xreplace({s: 0}), T.diff(s).xreplace({s: 0}))
         if any(_nonzero(x) for x in low):
             return ("the kinetic energy has terms of degree 0 or 1 in the rates (a motion "
                     "prescribed with time)")
