@@ -138,3 +138,31 @@ def test_ch19_apparent_weight_and_plumb_line_on_the_earth():
     ga_P = np.array(_at_rest(ga_P.components(R), rest).subs(numbers), dtype=float).ravel()
     assert np.allclose(N, -2.0 * ga_P, rtol=1e-12, atol=1e-14)
     assert math.isclose(np.linalg.norm(N), 2.0 * np.linalg.norm(ga), rel_tol=1e-9)  # m g_a
+
+
+def test_ch19_foucault_pendulum_in_the_earth_reference():
+    """The Foucault pendulum written in the Earth's reference (System(reference=E)): the swing
+    plane turns at -Omega sin(lambda) relative to the ground (first order in Omega; the
+    tolerance 1e-2 covers the centrifugal terms and Airy's precession with the exaggerated
+    Omega = 0.05 rad/s, see the scene's test). The local vertical, gravity and the ground are
+    fixed in E and the Earth turns at a constant rate: T + V relative to the Earth, with the
+    potential of the inertial actions, is conserved."""
+    alpha, beta = rm.coordinates("alpha beta")
+    lat, W = math.pi / 4, 0.05
+    E = earth_reference(latitude=lat, rate=W, radius=1.0)
+    R = E.frame
+    Ra = R.rotated("Ra", about=R.i, angle=alpha)
+    Rb = Ra.rotated("Rb", about=Ra.j, angle=beta)
+    bob = rm.Body("bob", frame=Rb, mass=1.0, centre=R.origin.moved("P", -1.0 * Rb.k))
+    s = rm.System(reference=E)
+    s.connect(R, bob, rm.joints.Spherical(at=R.origin))
+    s.act(rm.gravity(-9.81 * E.up))
+    sim = s.equations_of_motion().simulate(t=(0.0, 40.0), q0=[0.05, 0.0], rtol=1e-10,
+                                           atol=1e-12, n_output=8001)
+    a, b = sim.q
+    X, Y = -np.sin(b), np.sin(a) * np.cos(b)         # east, north
+    r2 = X**2 + Y**2
+    i = np.where((r2[1:-1] > r2[:-2]) & (r2[1:-1] >= r2[2:]))[0] + 1
+    rate = np.polyfit(sim.t[i], np.unwrap(2 * np.arctan2(Y[i], X[i])) / 2, 1)[0]
+    assert math.isclose(rate, -W * math.sin(lat), rel_tol=1e-2)
+    assert sim.time_dependence() is None and sim.energy_drift() < 1e-9
