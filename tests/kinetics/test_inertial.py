@@ -113,3 +113,48 @@ def test_bad_input():
     with pytest.raises(ArgumentTypeError, match="`at` must be a Point"):
         coriolis_dynamic_torsor(rm.Body("b", frame=R1, mass=1), relative_to=R1, absolute=R0,
                                 at=R0.i)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_inertial_potential_energy_derives_the_power(seed):
+    """In a steady motion of the reference (constant rotation vector, origin with a constant
+    acceleration in its basis), the power of the inertial actions in the motion relative to
+    R1 is -dE_p/dt: checked at random states for a body with a full operator of inertia."""
+    rng = random.Random(seed)
+    psi, theta, phi, x, y, z = Q[:6]
+    W, lam, d = (sp.Rational(rng.randint(1, 9), 7) for _ in range(3))
+    R0 = rm.Frame("R0")
+    # an Earth-like reference: turning about an inclined axis, its origin off the axis
+    R1 = R0.rotated("R1", about=sp.cos(lam) * R0.j + sp.sin(lam) * R0.k, angle=W * rm.t,
+                    origin=R0.point("O1", d, 0, 0))
+    G = R1.point("G", x, y, z)
+    RS = R1.euler("RS", psi, theta, phi, origin=G)
+    J = rm.InertiaOperator.from_products(3, 4, 5, sp.Rational(1, 3), sp.Rational(1, 5),
+                                         sp.Rational(-1, 4), frame=RS, at=G)
+    body = rm.Body("b", frame=RS, mass=2, centre=G, inertia=J)
+    act = InertialActions(reference=R1, galilean=R0)
+    V = act.potential_energy([body], R1)
+    plain = V.xreplace({q: sp.Symbol(f"s{i}") for i, q in enumerate(Q[:6])})
+    assert not plain.has(rm.t)                      # a function of the position only
+    (_, F), = act.contributions([body])
+    power = F.resultant.dot(G.velocity(R1)) + F.moment_at(G).dot(RS.rotation_vector(R1))
+    rule = {}
+    for q in Q[:6]:
+        rule[q.diff(rm.t)] = rng.uniform(-1, 1)
+    for q in Q[:6]:
+        rule[q] = rng.uniform(-1, 1)
+    value = float(sp.N((power + V.diff(rm.t)).subs(rule).subs(rm.t, 0.3)))
+    scale = float(sp.N(power.subs(rule).subs(rm.t, 0.3)))
+    assert abs(scale) > 1e-3 and abs(value) < 1e-10 * abs(scale)
+
+
+def test_inertial_potential_energy_none_or_refused():
+    x = rm.coordinates("x")
+    a = sp.Symbol("a", positive=True)
+    R0 = rm.Frame("R0")
+    jerk = R0.translated("R1", R0.point("W", a * rm.t**3, 0, 0))   # a(O) grows with t
+    body = rm.Body("b", frame=jerk.translated("Rb", jerk.point("B", x, 0, 0)), mass=1)
+    act = InertialActions(reference=jerk, galilean=R0)
+    assert act.potential_energy([body], jerk) is None
+    with pytest.raises(FrameError, match="relative to their reference R1; got `frame` R0"):
+        act.potential_energy([body], R0)

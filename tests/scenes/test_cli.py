@@ -21,7 +21,7 @@ def test_scenes_lists_the_catalogue(capsys):
     rows = {line.split()[0]: line for line in out[1:]}
     assert set(rows) == {"simple-pendulum", "double-pendulum", "slider-pendulum", "spring-mass",
                          "coulomb-oscillator", "rolling-cylinder",
-                         "satellite", "moon-probe", "foucault-pendulum"}
+                         "satellite", "moon-probe", "foucault-pendulum", "wagon-pendulum"}
     assert " 2 " in rows["rolling-cylinder"] and "fs=0.12 fk=0.1" in rows["coulomb-oscillator"]
     assert "ch. 22.2.1" in rows["simple-pendulum"] and "m=1 L=1 g=9.81" in rows["simple-pendulum"]
     assert " 2 " in rows["double-pendulum"] and "M=2 m=1 L=1 g=9.81" in rows["slider-pendulum"]

@@ -6,6 +6,7 @@ import re
 
 import numpy as np
 import pytest
+import sympy as sp
 from scipy.integrate import solve_ivp
 
 import rigidmech as rm
@@ -164,8 +165,32 @@ def test_foucault_no_precession_at_the_equator():
     assert abs(_precession_rate(sim)) < 1e-2 * scene.defaults["Omega"]
 
 
+def test_wagon_pendulum_swings_about_its_relative_equilibrium():
+    """Ch. 19, 24: from theta = 0 at rest in the wagon, the pendulum swings between 0 and
+    2 theta* (tan theta* = -a/g: a symmetric swing about the relative equilibrium) with the
+    period 2 pi sqrt(L / g_a) of small oscillations corrected by the amplitude (the exact
+    pendulum period with g_a = sqrt(g^2 + a^2)); the energy relative to the wagon is
+    conserved."""
+    scene = scenes.get("wagon-pendulum")
+    p = scene.defaults
+    eqs = scene.build().system.equations_of_motion()
+    sim = eqs.simulate(t=(0.0, 10.0), q0=scene.q0, u0=scene.u0, params=p, rtol=1e-11,
+                       atol=1e-12, n_output=20001)
+    theta_star = -math.atan(p["a"] / p["g"])
+    assert sim.q[0].min() == pytest.approx(2 * theta_star, rel=1e-6)
+    assert sim.energy_drift() < 1e-9
+    assert np.max(np.abs(sim.energy_balance())) < 1e-8
+    # period of the pendulum of amplitude |theta*| in the apparent gravity g_a
+    ga = math.hypot(p["g"], p["a"])
+    k = math.sin(abs(theta_star) / 2)
+    period = 4 * math.sqrt(p["L"] / ga) * float(sp.elliptic_k(k**2))
+    crossings = sim.t[1:][(np.diff(np.sign(sim.q[0] - theta_star)) > 0)]
+    assert np.diff(crossings).mean() == pytest.approx(period, rel=1e-4)
+
+
 # -- command line ---------------------------------------------------------------------------
-@pytest.mark.parametrize("name", ["satellite", "moon-probe", "foucault-pendulum"])
+@pytest.mark.parametrize("name", ["satellite", "moon-probe", "foucault-pendulum",
+                                  "wagon-pendulum"])
 def test_run_new_scenes(capsys, name):
     assert cli.main(["run", name, "--t-end", "1", "--no-progress"]) == 0
     out = capsys.readouterr().out

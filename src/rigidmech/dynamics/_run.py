@@ -331,7 +331,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         t_out, y_out = t_out[keep], y_out[:, keep]
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
                      t_stop=t_stop, status=status)
-    if fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1:
+    if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
+            and sim.time_dependence() is None):
         drift = sim.energy_drift()
         if not drift <= UNSTABLE_DRIFT:  # a conservative system: E should stay constant
             sim = Simulation(eqs, res, values, elapsed, (*notes, (

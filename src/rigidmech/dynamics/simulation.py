@@ -430,7 +430,19 @@ class Simulation:
         >>> sim = eqs.simulate(t=(0, 1), q0=[0.0], u0=[0.0])        # at rest, E = 0
         >>> sim.energy_drift()
         0.0
+
+        Raises
+        ------
+        ArgumentError
+            If the energy is not one that only the non-conservative actions change: the
+            bodies' motion or a potential depends on time explicitly (a prescribed motion, a
+            field that turns; see :meth:`time_dependence`). Use :meth:`energy_balance`.
         """
+        reason = self.time_dependence()
+        if reason is not None:
+            raise ArgumentError(
+                f"energy_drift() would misreport: {reason}, so T + V changes without any "
+                "error of the integration. Use energy_balance(), which accounts for it.")
         e = self.energy()
         delta = float(np.max(np.abs(e - e[0])))
         if scale is None:
@@ -442,6 +454,91 @@ class Simulation:
         if scale == 0.0:
             return 0.0 if delta == 0.0 else math.inf
         return delta / scale
+
+    def time_dependence(self):
+        """Why T + V changes along a correct motion even without non-conservative actions,
+        or None: the kinetic energy is not quadratic in the rates (a motion prescribed with
+        time) or T + V depends on time explicitly (a gravity field that turns, an attracting
+        body that moves). Decided on the equations' energy and kinetic energy.
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...     forcing=sp.ImmutableMatrix([[-x + sp.cos(rm.t)]]),
+        ...     energy=(x.diff(rm.t)**2 + x**2) / 2 - x * sp.cos(rm.t))
+        >>> eqs.simulate(t=(0, 1), q0=[0.0], n_output=3).time_dependence()
+        'the energy T + V depends on time explicitly (a prescribed motion or a field that varies)'
+        """
+        from .energy import time_dependence
+
+        eqs = self._need_equations("time_dependence()")
+        cache = eqs._cache   # decided once for the equations
+        if "time_dependence" not in cache:
+            _, u_s, _, _, rule = eqs._stand_ins()
+            cache["time_dependence"] = time_dependence(
+                getattr(eqs, "kinetic_energy", None), eqs.energy, u_s, rule)
+        return cache["time_dependence"]
+
+    def energy_balance(self):
+        """The energy balance along the motion, E(t) - E(0) - W(t), a time series that stays
+        near 0 for a correct run (theorem of power and energy, ch. 18.3): E is the mechanical
+        energy T + V of the actions with a potential and W(t) the work since t0 of the
+        others (dampers, given forces and inputs, inertial actions without potential).
+        When the bodies' motion or a potential depends on time explicitly, E is Painlevé's
+        energy function sum q' dT/dq' - T + V and W includes the work of the explicit time
+        dependence (:func:`rigidmech.dynamics.energy.energy_terms`).
+
+        The power is evaluated at the samples :attr:`t` and integrated by Simpson's rule
+        (trapezoids for fewer than 3 samples): the balance also carries that quadrature's
+        error, small when the samples are fine relative to the motion (ask for more with
+        ``n_output``).
+
+        Raises
+        ------
+        ArgumentError
+            Equations not derived by ``System.equations_of_motion()`` (the split of the
+            actions is unknown), or a system changed since.
+
+        Examples
+        --------
+        >>> import numpy as np, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> R0 = rm.Frame("R0"); P = R0.point("P", x, 0, 0)
+        >>> s = rm.System(galilean=R0)
+        >>> b = rm.Body("b", frame=R0.translated("R1", P), mass=1, centre=P); s.add(b)
+        >>> s.act(rm.Spring(4, 0, a=R0.origin, b=P, on_b=b))
+        >>> s.act(rm.actions.Damper(0.5, a=R0.origin, b=P, on_b=b))
+        >>> sim = s.equations_of_motion().simulate(t=(0, 5), q0=[1.0], n_output=2001,
+        ...                                         rtol=1e-10, atol=1e-12)
+        >>> bool(np.max(np.abs(sim.energy_balance())) < 1e-8)
+        True
+        """
+        from scipy.integrate import cumulative_simpson, cumulative_trapezoid
+
+        from .energy import energy_terms
+
+        eqs = self._need_equations("energy_balance()")
+        system = getattr(eqs, "system", None)
+        if system is None:
+            raise ArgumentError(
+                "energy_balance() needs equations derived by System.equations_of_motion(): "
+                "the work of the non-conservative actions is taken from the system.")
+        if system.equations_of_motion() is not eqs:
+            raise ArgumentError(
+                "the system has changed since these equations were derived: its energy "
+                "would not match this motion.")
+        E, P = energy_terms(system)
+        e = self.evaluate(E)
+        p = self.evaluate(P)
+        if self.t.size >= 3:
+            W = cumulative_simpson(p, x=self.t, initial=0.0)
+        elif self.t.size == 2:
+            W = cumulative_trapezoid(p, x=self.t, initial=0.0)
+        else:
+            W = np.zeros_like(self.t)
+        return e - e[0] - W
 
     # -- files --------------------------------------------------------------------------
     def _columns(self):

@@ -28,7 +28,7 @@ from functools import partial
 
 import sympy as sp
 
-from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, FrameError
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from .._core.symbolic import free_symbols_shared
 from ..actions import Action, Joint
 from ..kinetics import Body
@@ -40,6 +40,7 @@ from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 from .linked import LinkedParameters
+from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
 
@@ -114,30 +115,27 @@ def _body_coordinates(body):
     return _coordinates_in(exprs)
 
 
-def _check_fixed_reference(galilean):
-    """Refuse a Galilean reference that moves (with a coordinate or with time) relative to
-    the root frame of its tree: the equations are written relative to the root."""
-    moving = [e for e in _frame_exprs(galilean) if sp.sympify(e).has(t)]
-    if moving:
-        raise FrameError(
-            f"`galilean` frame {galilean.name} moves relative to the root frame "
-            f"{galilean.root.name} (its orientation or origin depends on {moving[0]}); the "
-            "Galilean reference must not move relative to the root frame. Use a frame fixed "
-            "in the root (non-Galilean references are not supported).")
-
-
 class System(LinkedParameters):
-    """A set of rigid bodies in a Galilean reference, their connections and actions.
+    """A set of rigid bodies in a reference, their connections and actions.
 
     Parameters
     ----------
     galilean : Frame
-        The Galilean reference R (ch. 18.1.2); bodies may be connected to it. It must not
-        move relative to the root frame of its tree (a frame rotating or translating with a
-        coordinate or with time is refused with :class:`~rigidmech.errors.FrameError`).
+        The Galilean reference R0 (ch. 18.1.2). It must not move relative to the root frame
+        of its tree (a frame rotating or translating with a coordinate or with time is
+        refused with :class:`~rigidmech.errors.FrameError`: pass it as ``reference``).
+        Optional when ``reference`` is an :class:`~rigidmech.kinetics.EarthReference`.
     coordinates : sequence of q(t), optional
         The parameters of situation, in the order of the equations. Default: those found in
         the bodies, in the order of :attr:`coordinates`.
+    reference : Frame or EarthReference, optional
+        A reference R whose motion relative to ``galilean`` is prescribed (it may depend on
+        time, not on the parameters of situation): a turntable, a wagon, the Earth
+        (:func:`~rigidmech.kinetics.earth_reference`). The system is then written relative
+        to R (ch. 19, 24): bodies are connected to R, velocities, kinetic energy, equations
+        of motion and connection actions are relative to R, and the inertial actions of
+        entrainment and Coriolis (:class:`~rigidmech.kinetics.InertialActions`) are among
+        its :attr:`actions`. Default: ``galilean`` itself.
 
     Notes
     -----
@@ -164,14 +162,16 @@ class System(LinkedParameters):
     Matrix([[0]])
     """
 
-    def __init__(self, galilean: Frame, coordinates=None, *, stabilization=(5.0, 5.0)):
-        if not isinstance(galilean, Frame):
-            raise ArgumentTypeError(
-                f"`galilean` must be a Frame; got {type(galilean).__name__}.")
-        _check_fixed_reference(galilean)
-        self._galilean = galilean
+    def __init__(self, galilean: Frame | None = None, coordinates=None, *, reference=None,
+                 stabilization=(5.0, 5.0)):
+        # the reference of the equations (the Galilean one unless `reference` is given),
+        # the inertial actions to add and the Galilean reference
+        frame, inertial, self._inertial_frame = resolve_reference(galilean, reference)
+        self._galilean = frame
         # the graph of bodies, connections and actions (validated there)
-        self._graph = Mechanism(galilean)
+        self._graph = Mechanism(frame)
+        if inertial is not None:
+            self._graph = self._graph.with_action(inertial)
         # coordinate owners (coordinate -> (body, owner)): a dynamics-specific check
         self._owners: dict = {}
         self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
@@ -433,15 +433,23 @@ class System(LinkedParameters):
         ------
         ConnectionError\\_
             If the action is already in the system, if it is a second gravity, or if it acts
-            on a body that is not in the system (connect the body first).
+            on a body that is not in the system (connect the body first), or inertial actions
+            given to a system whose ``reference`` already adds them.
         """
+        check_inertial_action(self, action)
         self._graph = self._graph.with_action(action)
         self._cache.clear()
 
     # -- read-only views ----------------------------------------------------------------
     @property
     def galilean(self) -> Frame:
-        """The Galilean reference."""
+        """The Galilean reference (ch. 18.1.2)."""
+        return self._inertial_frame
+
+    @property
+    def reference(self) -> Frame:
+        """The reference the equations are written in: :attr:`galilean` unless the system
+        was given a moving ``reference`` (ch. 19)."""
         return self._galilean
 
     @property
@@ -653,8 +661,9 @@ class System(LinkedParameters):
                                   tuple(self._bodies), tuple(self._actions))
 
     def kinetic_energy(self):
-        """Kinetic energy of the set of bodies relative to the Galilean reference (ch. 16.3.3),
-        in terms of q(t) and q'(t)."""
+        """Kinetic energy of the set of bodies relative to the reference of the equations
+        (:attr:`reference`, the Galilean one by default; ch. 16.3.3), in terms of q(t) and
+        q'(t)."""
         return sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
 
     def generalized_forces(self):
@@ -821,5 +830,7 @@ class System(LinkedParameters):
         return self._joints[child]
 
     def __repr__(self):
-        return (f"System(galilean={self._galilean.name}, bodies={[b.name for b in self._bodies]}, "
-                f"actions={len(self._actions)})")
+        moving = ("" if self._galilean is self._inertial_frame
+                  else f", reference={self._galilean.name}")
+        return (f"System(galilean={self._inertial_frame.name}{moving}, "
+                f"bodies={[b.name for b in self._bodies]}, actions={len(self._actions)})")

@@ -32,11 +32,13 @@ the integral of GM (GM . omega) dm = (tr J_G / 2) omega - J_G(omega).)
 
 from __future__ import annotations
 
+import sympy as sp
+
 from .._core.errors import ArgumentError, ArgumentTypeError, FrameError
 from ..actions import Action
 from ..kinematics import acceleration_composition
 from ..torsors import Torsor
-from ..vectors import Frame, Point, Vector
+from ..vectors import Frame, Point, Vector, t
 from .body import Body
 
 __all__ = ["entrainment_dynamic_torsor", "coriolis_dynamic_torsor",
@@ -220,6 +222,58 @@ class InertialActions(Action):
                 out.append((s, entrainment_inertial_torsor(s, **kw)
                             + coriolis_inertial_torsor(s, **kw)))
         return out
+
+    def _steady(self):
+        """(omega, a(O)) when R turns at a constant rotation vector and its origin O has an
+        acceleration of constant components in R's basis; None otherwise."""
+        R, R0 = self._reference, self._galilean
+        w = R.rotation_vector(R0)
+        a = R.origin.acceleration(R0)
+        comps = list(w.components(R)) + list(a.components(R))
+        if any(sp.simplify(c).has(t) for c in comps if c.has(t)):
+            return None
+        return w, a
+
+    def potential_energy(self, solids, frame):
+        """The potential energy of the inertial actions in a steady motion of the reference
+        (rotation vector omega constant, acceleration a(O) of its origin constant in its
+        basis: a turntable at a constant rate, a wagon at a constant acceleration, the Earth):
+
+        .. math:: E_p = \\sum_S m\\,\\mathbf{a}(O)\\cdot\\mathbf{OG}
+            - \\tfrac12 m\\,|\\boldsymbol{\\omega}\\wedge\\mathbf{OG}|^2
+            - \\tfrac12\\,\\boldsymbol{\\omega}\\cdot\\mathcal{J}_G(\\boldsymbol{\\omega}),
+
+        O the origin of the reference (ch. 19.1.1). The entrainment action derives from it
+        and the Coriolis action has zero power relative to the reference. None in any other
+        motion of the reference. ``frame`` must be the reference.
+
+        Examples
+        --------
+        A particle at distance r on a turntable turning at w: -m w^2 r^2 / 2.
+
+        >>> import rigidmech as rm
+        >>> r = rm.coordinates("r"); m, w = rm.constants("m w", positive=True)
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=w * rm.t)
+        >>> b = rm.Body("b", frame=R1.translated("Rb", R1.point("B", r, 0, 0)), mass=m)
+        >>> InertialActions(reference=R1, galilean=R0).potential_energy([b], R1)
+        -m*w**2*r(t)**2/2
+        """
+        if frame is not self._reference:
+            raise FrameError(
+                f"the potential energy of the inertial actions is relative to their reference "
+                f"{self._reference.name}; got `frame` {getattr(frame, 'name', frame)}.")
+        steady = self._steady()
+        if steady is None:
+            return None
+        w, a = steady
+        terms = []
+        for s in solids:
+            if isinstance(s, Body) and s.mass is not None and s.mass != 0:
+                OG = s.centre - self._reference.origin
+                wOG = w.cross(OG)
+                terms.append(s.mass * a.dot(OG) - s.mass * wOG.dot(wOG) / 2
+                             - w.dot(_apply(s, w)) / 2)
+        return sp.Add(*terms)
 
     def __repr__(self):
         return (f"InertialActions(reference={self._reference.name}, "

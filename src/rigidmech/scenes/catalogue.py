@@ -254,7 +254,7 @@ def names() -> tuple:
     --------
     >>> names()                                        # doctest: +NORMALIZE_WHITESPACE
     ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass', 'satellite',
-     'moon-probe', 'foucault-pendulum')
+     'moon-probe', 'foucault-pendulum', 'wagon-pendulum')
     """
     return tuple(_BY_NAME)
 
@@ -265,7 +265,7 @@ def catalogue() -> tuple:
     Examples
     --------
     >>> [s.dof for s in catalogue()]
-    [1, 2, 2, 1, 2, 2, 2]
+    [1, 2, 2, 1, 2, 2, 2, 1]
     """
     return _SCENES
 

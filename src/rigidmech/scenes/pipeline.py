@@ -94,7 +94,8 @@ class RunReport:
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
         ``max |E(t) - E(0)| / (T(0) + |V(0)|)`` along the motion (None without a potential
-        energy; see :meth:`Simulation.energy_drift`).
+        energy, or when T + V depends on time explicitly; see
+        :meth:`Simulation.energy_drift`).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
@@ -131,7 +132,8 @@ class RunReport:
         tol = (f"step={self.step:g}" if self.step is not None
                else f"rtol={self.rtol:g}, atol={self.atol:g}")
         ms = {k: 1e3 * v for k, v in self.timings.items()}
-        drift = "n/a (no potential energy)" if self.energy_drift is None else (
+        drift = "n/a (no potential energy, or one that depends on time)" if (
+            self.energy_drift is None) else (
             f"{self.energy_drift:.3e}")
         lines = [
             f"{sc.title} ({sc.name}, book {sc.section})",
@@ -396,7 +398,8 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
                        **({"max_steps": max_steps} if max_steps is not None else {}))
     timings["integrate"] = sim.elapsed
     start = time.perf_counter()
-    drift = sim.energy_drift() if eqs.energy is not None and sim.t.size else None
+    drift = (sim.energy_drift() if eqs.energy is not None and sim.t.size
+             and sim.time_dependence() is None else None)
     timings["energy"] = time.perf_counter() - start
     plot_path = None
     if plot is not None:

@@ -1,7 +1,8 @@
 """Scenes of the Earth and of space: a satellite, a probe between the Earth and the Moon, the
 Foucault pendulum (book, ch. 19, 24, 27).
 
-All three are written in a Galilean reference with :class:`~rigidmech.dynamics.System`:
+The first three are written in a Galilean reference with :class:`~rigidmech.dynamics.System`,
+the last in a non-Galilean one:
 
 * ``satellite`` (ch. 27, central motion ch. 8): a satellite S, a point mass, moves in the plane
   (i, j) of the geocentric frame R0 under the attraction of the Earth
@@ -31,10 +32,18 @@ All three are written in a Galilean reference with :class:`~rigidmech.dynamics.S
   hemisphere). Omega can be exaggerated (default 0.05 rad/s) for a short run. Gravity is given
   as a force: its direction turns, so the Galilean energy is not an invariant.
 
+* ``wagon-pendulum`` (ch. 19, 24): a pendulum (a bob of mass m on a massless rod of length L)
+  hung at the point O of a wagon whose acceleration a along i0 is constant, written in the
+  wagon's reference (``System(galilean=R0, reference=Rw)``: the inertial action of
+  entrainment, -m a i0, is added to the bob). theta is the angle of the rod from the downward
+  vertical, positive towards the front. The bob oscillates about its relative equilibrium
+  tan(theta*) = -a/g with the period 2 pi sqrt(L / sqrt(g^2 + a^2)); the energy relative to the
+  wagon, with the potential m a x of the inertial action, is conserved.
+
 Examples
 --------
 >>> [s.name for s in SPACE_SCENES]
-['satellite', 'moon-probe', 'foucault-pendulum']
+['satellite', 'moon-probe', 'foucault-pendulum', 'wagon-pendulum']
 >>> EARTH_MU_KM, round(EARTH_MOON_MU, 5)
 (398600.4418, 0.01215)
 >>> from rigidmech import scenes
@@ -49,7 +58,7 @@ import math
 
 import sympy as sp
 
-from ..actions import Force, Spherical, SphericalBodyAttraction, point_mass_attractor
+from ..actions import Force, Pivot, Spherical, SphericalBodyAttraction, gravity, point_mass_attractor
 from ..dynamics import System
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates, t
@@ -110,6 +119,19 @@ def _foucault_pendulum() -> Built:
     return Built(system, (bob,))
 
 
+def _wagon_pendulum() -> Built:
+    th = coordinates("theta")
+    m, L, g, a = constants("m L g a", positive=True)
+    R0 = Frame("R0")
+    Rw = R0.translated("Rw", R0.point("W", a * t**2 / 2, 0, 0))
+    Rp = Rw.rotated("Rp", about=Rw.k, angle=th)
+    bob = Body("bob", frame=Rp, mass=m, centre=Rw.origin.moved("P", -L * Rp.j))
+    system = System(galilean=R0, reference=Rw)
+    system.connect(Rw, bob, Pivot(at=Rw.origin, axis=Rw.k))
+    system.act(gravity(-g * R0.j))
+    return Built(system, (bob,))
+
+
 SPACE_SCENES = (
     Scene("satellite", "A satellite on its orbit about the Earth", "ch. 8.3, 27",
           coordinates=("x", "y"),
@@ -141,4 +163,13 @@ SPACE_SCENES = (
           q0=(0.05, 0.0), t_end=40.0, builder=_foucault_pendulum,
           notes="alpha, beta: angles of the pendulum relative to the Earth (the bob moves "
                 "north with alpha, west with beta); the swing plane turns at -Omega sin(lat)."),
+    Scene("wagon-pendulum", "Pendulum in an accelerating wagon (non-Galilean reference)",
+          "ch. 19, 24",
+          coordinates=("theta",),
+          parameters=(("m", 1.0, "mass of the bob"), ("L", 1.0, "length of the pendulum"),
+                      ("g", 9.81, "gravity"), ("a", 3.0, "acceleration of the wagon")),
+          q0=(0.0,), t_end=10.0, builder=_wagon_pendulum,
+          notes="theta: angle of the pendulum from the downward vertical, positive towards "
+                "the front of the wagon; written in the wagon's reference with the inertial "
+                "action. It swings about tan(theta*) = -a/g."),
 )
