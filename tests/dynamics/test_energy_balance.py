@@ -154,7 +154,7 @@ def test_moving_attractor_energy_drift_refused():
     P = R0.point("P", x, y, 0)
     s = rm.System(galilean=R0)
     s.add(rm.Body("probe", frame=R0.translated("Rp", P), mass=m, centre=P))
-    s.act(rm.actions.SphericalBodyAttraction(rm.actions.point_mass(mu, G=1), centre=C))
+    s.act(rm.actions.SphericalBodyAttraction(rm.actions.point_mass_attractor(mu, G=1), centre=C))
     sim = s.equations_of_motion().simulate(t=(0, 3), q0=[3.0, 0.0], u0=[0.0, 0.6], m=1.0,
                                            mu=1.0, Omega=1.0, **TIGHT)
     with pytest.raises(ArgumentError, match="depends on time explicitly"):
