@@ -28,7 +28,7 @@ import sympy as sp
 
 from .._core.errors import ConnectionError_
 from ..torsors import Torsor
-from ..vectors import Vector, t
+from ..vectors import Vector, t, time_derivative
 from ..vectors.points import check_point
 
 __all__ = ["closure_conditions", "closure_forces"]
@@ -37,16 +37,9 @@ _AXES = ("u", "v", "w")
 
 
 def _time_derivative(e):
-    """de/dt for e(q(t), t), differentiated with plain symbols in place of q(t) (cheaper
-    than sympy's chain rule through the functions)."""
-    qs = sorted(e.atoms(sp.core.function.AppliedUndef), key=str)
-    qs = [q for q in qs if q.args == (t,)]
-    dummies = [sp.Dummy(str(q.func), real=True) for q in qs]
-    es = e.xreplace(dict(zip(qs, dummies, strict=True)))
-    back = dict(zip(dummies, qs, strict=True))
-    out = es.diff(t).xreplace(back) if es.has(t) else sp.S.Zero
-    return out + sp.Add(*[es.diff(d).xreplace(back) * q.diff(t)
-                          for q, d in zip(qs, dummies, strict=True)])
+    """de/dt for e(q(t), t): the chain rule applied structurally
+    (:func:`~rigidmech.vectors.time_derivative`), cheaper than sympy's ``diff``."""
+    return time_derivative(e)
 
 
 def _gear_rows(link):
@@ -85,7 +78,8 @@ def _zero(e):
     for seed in (0.3711, 0.6173):
         rule = {a: sp.Float(seed + 0.1 * i) for i, a in enumerate(atoms)}
         try:
-            value = complex(e.xreplace(rule).subs(rule).evalf())
+            value = e.xreplace(rule)  # Floats everywhere: evaluated as it is rebuilt
+            value = complex(value if value.is_Number else value.subs(rule).evalf())
         except (TypeError, ValueError):
             break
         if abs(value) > 1e-9:
