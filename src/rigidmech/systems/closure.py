@@ -28,7 +28,7 @@ import sympy as sp
 
 from .._core.errors import ConnectionError_
 from ..torsors import Torsor
-from ..vectors import Vector, t, time_derivative
+from ..vectors import Frame, Vector, t, time_derivative
 from ..vectors.points import check_point
 
 __all__ = ["closure_conditions", "closure_forces"]
@@ -179,28 +179,19 @@ def _rows(link, meets):
         return [(f"{link.label}.{i + 1}", c.expression, None, None)
                 for i, c in enumerate(conn.velocity_constraints())]
     P1 = conn.at
-    P2 = P1 if meets is None else meets
-    check_point(P2, "meets")
-    if getattr(conn, "linked_motion", 0):
-        raise ConnectionError_(
-            f"{type(conn).__name__} at {P1.name} closes a loop between {link.first.name} and "
-            f"{link.second.name}: a loop closed by a joint with linked motions (helical) is not "
-            "supported yet; close the loop with another joint.")
+    P2, axes2 = _meeting(conn, meets)
     rows = []
     rotation = None
+    basis1 = conn.basis
+    free = [i for i in range(3) if i not in conn.blocked_motion]
     for i in conn.blocked_motion:
-        e = conn.basis[i % 3]
+        e = basis1[i % 3]
         if i < 3:
             if rotation is None:
                 rotation = second.frame.rotation_vector(first.frame)
-            w = sp.expand(rotation.dot(e))
-            if not _zero(w):
-                raise ConnectionError_(
-                    f"{type(conn).__name__} at {P1.name} closes a loop between {first.name} "
-                    f"and {second.name} and blocks the relative rotation about {e}, which the "
-                    f"frames do not block (omega . {_AXES[i]} = {w}): orientation closure of "
-                    "a loop is not supported yet. Close the loop with a joint that allows this "
-                    "rotation (a spherical joint), or build the frames so that it vanishes.")
+            if _zero(sp.expand(rotation.dot(e))):
+                continue  # the frames already block it
+            rows.append(_orientation_row(link, i, free, axes2, P2))
             continue
         phi = sp.expand((P2 - P1).dot(e))
         if _zero(phi):
@@ -214,4 +205,82 @@ def _rows(link, meets):
         rows.append((f"{link.label}.{_AXES[i - 3]}", _time_derivative(phi), phi,
                      [(second, Torsor(e, Vector.zero(), P2)),
                       (first, Torsor(-e, Vector.zero(), P1))]))
+    if getattr(conn, "linked_motion", 0):
+        rows.append(_helical_row(link, P2))
     return rows
+
+
+def _meeting(conn, meets):
+    """(P2, (u2, v2, w2) or None): the point of the second solid that meets the joint's
+    point, and its copy of the joint's basis when ``meets`` is a frame."""
+    if meets is None:
+        return conn.at, None
+    if isinstance(meets, Frame):
+        w = meets.basis[2]
+        return meets.origin, (meets.basis[0], meets.basis[1], w)
+    check_point(meets, "meets")
+    return meets, None
+
+
+def _fixed_in(vectors, solid, argument):
+    """Refuse basis vectors that turn relative to ``solid``: the position form of an
+    orientation closure needs vectors of each solid."""
+    frame = vectors[0].parts[0][0]
+    w = frame.rotation_vector(solid.frame)
+    if not all(_zero(sp.expand(w.dot(e))) for e in frame.basis):
+        raise ConnectionError_(
+            f"the {argument} of the joint closing a loop must be fixed in {solid.name} (its "
+            f"frame {frame.name} turns relative to {solid.frame.name}): build it on a frame "
+            f"of {solid.name}.")
+
+
+def _orientation_row(link, i, free, axes2, P2):
+    """The closure of the relative rotation about e_i (i in 0, 1, 2 for u, v, w) that the
+    joint blocks and the frames do not: with (i, j, k) cyclic, Φ = e_k(1) . e_j(2) (or
+    -e_j(1) . e_k(2) when the rotation about e_k is free), vectors of the first solid and
+    of the second (``meets``, a frame) that coincide when the loop is closed; dΦ/dt =
+    (omega2 - omega1) . C with C = e_j(2) ^ e_k(1) (or e_j(1) ^ e_k(2)), the couple a unit
+    multiplier stands for (C = e_i when closed)."""
+    conn, first, second = link.connection, link.first, link.second
+    if axes2 is None:
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {conn.at.name} closes a loop between {first.name} and "
+            f"{second.name} and blocks the relative rotation about {_AXES[i]}, which the "
+            "frames do not block: give `meets` as a frame of the second solid whose origin "
+            "meets the joint's point and whose axes (i, j, k) meet the joint's (u, v, w) "
+            "when the loop is closed (only k is used when the joint allows a rotation about "
+            "its axis).")
+    _fixed_in(conn.basis, first, "axis")
+    _fixed_in(axes2, second, "frame `meets`")
+    e1 = conn.basis
+    j, k = (i + 1) % 3, (i + 2) % 3
+    if k in free:
+        phi, couple = -e1[j].dot(axes2[k]), e1[j].cross(axes2[k])
+    else:
+        phi, couple = e1[k].dot(axes2[j]), axes2[j].cross(e1[k])
+    phi = sp.expand(phi)
+    if not phi.has(t):
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {conn.at.name} between {first.name} and {second.name}: "
+            f"the axes of the frame `meets` cannot meet the joint's (the closure of the "
+            f"rotation about {_AXES[i]} is the constant {sp.simplify(phi)}).")
+    return (f"{link.label}.r{_AXES[i]}", _time_derivative(phi), phi,
+            [(second, Torsor(Vector.zero(), couple, P2)),
+             (first, Torsor(Vector.zero(), -couple, conn.at))])
+
+
+def _helical_row(link, P2):
+    """The linked motion of a helical joint closing a loop, at the velocity level:
+    (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0 (no position form: its
+    constant is the initial configuration's); a unit multiplier stands for the force w and
+    the couple -h w on the second solid (the book's N = -h Z), their opposites on the
+    first."""
+    conn, first, second = link.connection, link.first, link.second
+    root = first.frame.root
+    w, h = conn.basis[2], conn.reduced_pitch
+    v2 = second.kinematic_torsor(relative_to=root, at=P2).velocity
+    v1 = first.kinematic_torsor(relative_to=root, at=conn.at).velocity
+    omega = second.frame.rotation_vector(first.frame)
+    c = sp.expand((v2 - v1).dot(w) - h * omega.dot(w))
+    return (f"{link.label}.h", c, None,
+            [(second, Torsor(w, -h * w, P2)), (first, Torsor(-w, h * w, conn.at))])
