@@ -35,6 +35,7 @@ from typing import NamedTuple
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.symbolic import nonzero_somewhere, simplifies_to_zero
 from ..vectors import Line, Plane, Point, Vector
 from ..vectors.points import check_point
 
@@ -68,8 +69,14 @@ def _unit(v):
 
 
 def _zero(x) -> bool:
+    """Exact decision: a value at a sample point proves a gap is not zero (cheap, where
+    ``simplify`` of a non-zero expression is slow); a zero is proved by algebra."""
     x = sp.sympify(x)
-    return x == 0 or sp.simplify(x) == 0
+    if x == 0:
+        return True
+    if nonzero_somewhere(x):
+        return False
+    return simplifies_to_zero(x)
 
 
 class Sphere:

@@ -27,6 +27,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ConnectionError_
+from .._core.symbolic import nonzero_somewhere
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, t, time_derivative
 from ..vectors.points import check_point
@@ -68,22 +69,13 @@ def _gear_rows(link):
 
 
 def _zero(e):
-    """Whether ``e`` vanishes identically: a non-zero value at a random point settles it
+    """Whether ``e`` vanishes identically: a non-zero value at a sample point settles it
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
     ``simplify`` decides."""
     if e == 0:
         return True
-    atoms = [*e.atoms(sp.Derivative), *e.atoms(sp.core.function.AppliedUndef),
-             *(x for x in e.free_symbols if x != t)]
-    for seed in (0.3711, 0.6173):
-        rule = {a: sp.Float(seed + 0.1 * i) for i, a in enumerate(atoms)}
-        try:
-            value = e.xreplace(rule)  # Floats everywhere: evaluated as it is rebuilt
-            value = complex(value if value.is_Number else value.subs(rule).evalf())
-        except (TypeError, ValueError):
-            break
-        if abs(value) > 1e-9:
-            return False
+    if nonzero_somewhere(e, skip=(t,)):
+        return False
     return sp.simplify(e) == 0
 
 
