@@ -10,7 +10,9 @@ sympy.physics.mechanics' KanesMethod on the same models, same run (book, ch. 13.
   configuration and velocity constraints;
 * disc rolling on a plane (contact point (x, y), heading, lean, spin; no slip): rigidmech with
   a RollingContact (velocity constraints, multipliers); KanesMethod with the speeds of x and y
-  dependent.
+  dependent. "rolling disc" gives rigidmech the contact point and normal; "disc, between"
+  has them found from the geometry (``Contact.between`` of the rim and the plane, contact
+  decided exactly); Kane is given them in both.
 
 Both sides build their model from the symbols and stop at their equations of motion, nothing
 simplified: rigidmech ``System.equations_of_motion()`` with its constraint block (Jacobian A,
@@ -26,6 +28,7 @@ Run::
 
     PYTHONPATH=src python benchmarks/derive_loops.py               # n = 1, 2, 4 and the disc
     PYTHONPATH=src python benchmarks/derive_loops.py --chains 1 2 4 8 --repeat 3
+    PYTHONPATH=src python benchmarks/derive_loops.py --phases 4    # where rigidmech's time goes
 """
 
 import argparse
@@ -42,6 +45,7 @@ import sympy.physics.mechanics as me
 import rigidmech as rm
 from rigidmech.dynamics import System
 from rigidmech.kinematics import Contact
+from rigidmech.kinematics.surfaces import Circle
 
 L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5
 #: coupler of the loops after the first (2.0 would make them parallelograms, whose
@@ -64,10 +68,24 @@ def _bar(name, F, L, O, m):
                    inertia=rm.inertia.rod(m, L, axis=F.i, centre=G))
 
 
-def chain_system(n, stabilization=(5.0, 5.0)):
+class _Clock:
+    """CPU time spent in named phases (``--phases``); a no-op without ``on``."""
+
+    def __init__(self, on=False):
+        self.on, self.spent, self._last = on, {}, time.process_time()
+
+    def mark(self, phase):
+        if self.on:
+            now = time.process_time()
+            self.spent[phase] = self.spent.get(phase, 0.0) + now - self._last
+            self._last = now
+
+
+def chain_system(n, stabilization=(5.0, 5.0), clock=None):
     """A chain of n four-bars as a rigidmech System (parameters q1, q2, q3, ...: the crank's
     absolute angle, then per loop the coupler's angle relative to its driver and the rocker's
     absolute angle)."""
+    clock = clock or _Clock()
     qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, 2 * n + 2)))
     qs = (qs,) if n == 0 else qs
     m, g = rm.constants("m g", positive=True)
@@ -76,7 +94,9 @@ def chain_system(n, stabilization=(5.0, 5.0)):
     s = System(galilean=R0, stabilization=stabilization)
     R1 = R0.rotated("R1", about=k, angle=qs[0])
     driver, driver_length = _bar("b1", R1, L1, R0.origin, m), L1
+    clock.mark("frames and bodies")
     s.connect(R0, driver, rm.joints.Pivot(at=R0.origin, axis=k))
+    clock.mark("tree joints (checked)")
     for j in range(1, n + 1):
         a, b = qs[2 * j - 1], qs[2 * j]
         B = driver.frame.origin.moved(f"B{j}", driver_length * driver.frame.i)
@@ -85,10 +105,13 @@ def chain_system(n, stabilization=(5.0, 5.0)):
         Rr = R0.rotated(f"R{2 * j + 1}", about=k, angle=b, origin=D)
         lc = L2 if j == 1 else L2B
         coupler, rocker = _bar(f"b{2 * j}", Rc, lc, B, m), _bar(f"b{2 * j + 1}", Rr, L3, D, m)
+        clock.mark("frames and bodies")
         s.connect(driver, coupler, rm.joints.Pivot(at=B, axis=k))
         s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))
+        clock.mark("tree joints (checked)")
         s.connect(coupler, rocker, rm.joints.Pivot(at=B.moved(f"C{j}", lc * Rc.i), axis=k),
                   meets=D.moved(f"E{j}", L3 * Rr.i))
+        clock.mark("closure conditions")
         driver, driver_length = rocker, L3
     s.act(rm.gravity(-g * R0.j))
     return s
@@ -96,6 +119,19 @@ def chain_system(n, stabilization=(5.0, 5.0)):
 
 def chain_rigidmech(n):
     return chain_system(n).equations_of_motion()
+
+
+def phases(n):
+    """Where rigidmech's derivation time goes for the chain of n four-bars (CPU seconds per
+    phase, one cold run)."""
+    clock = _Clock(on=True)
+    s = chain_system(n, clock=clock)
+    clock.mark("frames and bodies")
+    s.constraints()
+    clock.mark("constraints A, b (derivatives)")
+    s.equations_of_motion()
+    clock.mark("M, f and the equations' object")
+    return clock.spent
 
 
 def chain_kane(n):
@@ -152,7 +188,9 @@ def four_bar_kane():
     return chain_kane(1)
 
 
-def disc_rigidmech():
+def disc_rigidmech(between=False):
+    """The rolling disc; with ``between``, its contact point and normal found by
+    ``Contact.between`` from the disc's rim (a circle) and the plane."""
     x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
     m, g, r = rm.constants("m g r", positive=True)
     R0 = rm.Frame("R0")
@@ -164,7 +202,9 @@ def disc_rigidmech():
     disc = rm.Body("disc", frame=D, mass=m, centre=G,
                    inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
     s = System(galilean=R0)
-    s.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I0, normal=R0.k)))
+    contact = (Contact.between(D, Circle(G, r, normal=D.k), R0, rm.Plane(R0.origin, R0.k))
+               if between else Contact(D, R0, at=I0, normal=R0.k))
+    s.connect(R0, disc, rm.actions.RollingContact(contact))
     s.act(rm.gravity(-g * R0.k))
     return s.equations_of_motion()
 
@@ -198,9 +238,9 @@ def disc_kane():
 
 def _derive(case, side):
     """Build and derive one model; returns what the accelerations check needs."""
-    if case == "disc":
+    if case.startswith("disc"):
         if side == "rigidmech":
-            return disc_rigidmech()
+            return disc_rigidmech(between=case == "disc-between")
         kane = disc_kane()
         return kane, kane.mass_matrix, kane.forcing
     n = int(case)
@@ -212,6 +252,9 @@ def _derive(case, side):
 
 def _case_main(case, side):
     """Child process: one cold derivation, its CPU time as a JSON line."""
+    if case.startswith("phases"):
+        print(json.dumps(phases(int(case[6:]))), flush=True)
+        return
     t0 = time.process_time()
     _derive(case, side)
     print(json.dumps({"cpu": time.process_time() - t0}), flush=True)
@@ -274,21 +317,32 @@ def main():
     parser.add_argument("--chains", type=int, nargs="+", default=[1, 2, 4])
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--timeout", type=float, default=300.0)
+    parser.add_argument("--phases", type=int, metavar="N",
+                        help="print where the derivation of the chain of N four-bars goes")
     parser.add_argument("--case", nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.case:
         _case_main(*args.case)
         return
+    if args.phases:
+        cmd = [sys.executable, os.path.abspath(__file__), "--case", f"phases{args.phases}", "-"]
+        out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+        spent = json.loads(out.strip().splitlines()[-1])
+        total = sum(spent.values())
+        for phase, x in spent.items():
+            print(f"{phase:<34}{x:>8.3f} s {100 * x / total:>5.0f} %")
+        print(f"{'total':<34}{total:>8.3f} s")
+        return
     print(f"{'model':<16}{'rigidmech [s]':>15}{'KanesMethod [s]':>18}{'ratio':>8}"
           f"{'qdd gap':>10}")
     cases = [(str(n), f"{n} four-bar" + ("s" if n > 1 else "")) for n in args.chains]
-    for case, name in [*cases, ("disc", "rolling disc")]:
+    for case, name in [*cases, ("disc", "rolling disc"), ("disc-between", "disc, between")]:
         ours, theirs = [], []
         for _ in range(args.repeat):  # alternated
             ours.append(_run(case, "rigidmech", args.timeout))
             theirs.append(_run(case, "kane", args.timeout))
         a, b = min(ours), min(theirs)
-        gap = "" if case == "disc" else f"{accelerations_gap(int(case)):>10.1e}"
+        gap = "" if case.startswith("disc") else f"{accelerations_gap(int(case)):>10.1e}"
         print(f"{name:<16}{a:>15.3f}{b:>18.3f}{b / a:>8.1f}{gap}", flush=True)
 
 

@@ -162,7 +162,11 @@ def is_exactly_zero(x) -> bool:
     >>> is_exactly_zero(sp.sin(a)**2 + sp.cos(a)**2 - 1)
     False
     """
-    return x == 0 or (x.is_Number and x.is_zero)
+    if x is sp.S.Zero:
+        return True
+    if isinstance(x, sp.Basic):  # no sympify of 0 and comparison: a class attribute
+        return bool(x.is_Number and x.is_zero)
+    return x == 0
 
 
 def is_identically_zero(expr) -> bool:

@@ -10,11 +10,21 @@ row per condition, as ``(label, velocity, position)``:
   first solid) and the point P2 of the second solid that must coincide with it (``meets``,
   default the same point). For each translation the joint blocks, along e of its local basis
   (u, v, w), the geometric condition is Φ = P1P2 . e = 0 and the kinematic one its time
-  derivative. A rotation the joint blocks must already be blocked by the frames (the
-  relative rotation component vanishes identically, as in a planar mechanism or two coaxial
-  bearings); otherwise the orientation closure is refused (not supported yet). A condition
-  that vanishes identically is dropped; one that is a non-zero constant means the two points
-  cannot coincide and is refused;
+  derivative. A rotation the joint blocks about e_i is usually blocked by the frames already
+  (the relative rotation component vanishes identically, as in a planar mechanism or two
+  coaxial bearings): then it gives no condition. Otherwise (a spatial loop) ``meets`` must be
+  a frame of the second solid, its origin P2 and its axes (e_1(2), e_2(2), e_3(2)) meeting the
+  joint's basis (e_1(1), e_2(1), e_3(1)) = (u, v, w) when the loop is closed, the joint's axis
+  a vector of a frame fixed in the first solid; with (i, j, k) cyclic the condition is
+  Φ = e_k(1) . e_j(2) = 0 (or -e_j(1) . e_k(2) = 0 when the joint allows the rotation about
+  e_k: a pivot uses only w(2)), whose time derivative is (omega2 - omega1) . C with
+  C = e_j(2) ^ e_k(1) (resp. e_j(1) ^ e_k(2)), equal to e_i when closed: the multiplier is
+  the couple of the joint about e_i. A condition that vanishes identically is dropped; one
+  that is a non-zero constant means the two points (or axes) cannot coincide and is refused;
+* a **helical** joint closing a loop adds its linked motion, at the velocity level only:
+  (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its
+  position form would carry the relative angle, which the frames do not name); its
+  multiplier is the axial force Z, with the couple N = -h Z of a perfect helical joint;
 * a **rolling contact** or a **gear mesh**: its velocity constraints
   (:class:`~rigidmech.kinematics.constraints.VelocityConstraint`), with their position form
   when they are holonomic (a wheel on a line, gears) and without one when they are not (a
@@ -87,15 +97,18 @@ def closure_conditions(link, meets=None) -> list:
     Parameters
     ----------
     link : Link
-    meets : Point, optional
+    meets : Point or Frame, optional
         For a joint closing a loop, the point of ``link.second`` that coincides with the
-        joint's point (a point of ``link.first``); default the joint's point itself.
+        joint's point (a point of ``link.first``); default the joint's point itself. A frame
+        of ``link.second`` (origin and axes) for a joint that blocks a relative rotation the
+        frames do not.
 
     Raises
     ------
     ConnectionError\\_
-        If the two points cannot coincide (a constant distance along a blocked direction),
-        or the joint blocks a rotation the frames do not already block.
+        If the two points (or axes) cannot coincide (a constant distance along a blocked
+        direction), or the joint blocks a rotation the frames do not already block and
+        ``meets`` is not a frame of the second solid.
 
     Examples
     --------
@@ -114,6 +127,16 @@ def closure_conditions(link, meets=None) -> list:
     ...             rm.joints.Pivot(at=C2, axis=k), "C")
     >>> [label for label, _, _ in closure_conditions(link, meets=C3)]
     ['C.u', 'C.v']
+
+    A spatial loop: a rotor turning on a ball joint (yaw a, pitch b), its axis held along R0.k
+    by a pivot; ``meets`` is the rotor's frame, whose k is the pivot's axis when closed.
+
+    >>> a, b = rm.coordinates("a b")
+    >>> A = R0.rotated("A", about=k, angle=a); R = A.rotated("R", about=A.j, angle=b)
+    >>> link = Link(rm.Body("ground", frame=R0), rm.Body("rotor", frame=R),
+    ...             rm.joints.Pivot(at=R0.origin, axis=k), "P")
+    >>> [(label, phi) for label, _, phi in closure_conditions(link, meets=R)]
+    [('P.ru', -sin(a(t))*sin(b(t))), ('P.rv', sin(b(t))*cos(a(t)))]
     """
     return [row[:3] for row in _rows(link, meets)]
 
