@@ -19,7 +19,9 @@ row per condition, as ``(label, velocity, position)``:
   Φ = e_k(1) . e_j(2) = 0 (or -e_j(1) . e_k(2) = 0 when the joint allows the rotation about
   e_k: a pivot uses only w(2)), whose time derivative is (omega2 - omega1) . C with
   C = e_j(2) ^ e_k(1) (resp. e_j(1) ^ e_k(2)), equal to e_i when closed: the multiplier is
-  the couple of the joint about e_i. A condition that vanishes identically is dropped; one
+  the couple of the joint about e_i (these conditions also hold with an axis reversed,
+  w(2) = -w(1): assemble from values near the intended position). A condition that
+  vanishes identically is dropped; one
   that is a non-zero constant means the two points (or axes) cannot coincide and is refused;
 * a **helical** joint closing a loop adds its linked motion, at the velocity level only:
   (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its

@@ -42,7 +42,8 @@ from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation
 
 __all__ = [
     "Frame", "Point", "Vector", "t", "coordinates", "constants", "is_coordinate",
-    "time_derivative", "partial_derivative", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector",
+    "time_derivative", "partial_derivative", "dot", "cross", "mixed", "rotation_vector",
+    "partial_rotation_vector",
     "Basis", "double_cross", "linear_dependence", "linearly_independent",
     "Line", "Plane", "angle", "common_perpendicular", "distance", "intersection",
     "is_orthogonal", "is_parallel",
