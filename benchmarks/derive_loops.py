@@ -5,9 +5,9 @@ sympy.physics.mechanics' KanesMethod on the same models, same run (book, ch. 13.
   loop k a coupler (length L2, then L2B) pivoted at the tip of the previous driver (the crank,
   then rocker k - 1) and a rocker pivoted at D_k = (k L0, 0), the loop closed where the
   coupler's tip meets the rocker's; 2n + 1 parameters, 2n closure conditions, mobility 1.
-  rigidmech keeps every parameter with the 2n closure conditions (Lagrange multipliers, the loops closed with
-  ``meets=``); KanesMethod with the crank's speed independent, the 2n others dependent, the
-  configuration and velocity constraints;
+  rigidmech keeps every parameter with the 2n closure conditions (Lagrange multipliers, the
+  loops closed with ``meets=``); KanesMethod with the crank's speed independent, the 2n
+  others dependent, the configuration and velocity constraints;
 * disc rolling on a plane (contact point (x, y), heading, lean, spin; no slip): rigidmech with
   a RollingContact (velocity constraints, multipliers); KanesMethod with the speeds of x and y
   dependent. "rolling disc" gives rigidmech the contact point and normal; "disc, between"
