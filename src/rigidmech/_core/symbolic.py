@@ -164,8 +164,10 @@ def is_exactly_zero(x) -> bool:
     """
     if x is sp.S.Zero:
         return True
-    if isinstance(x, sp.Basic):  # no sympify of 0 and comparison: a class attribute
-        return bool(x.is_Number and x.is_zero)
+    if isinstance(x, sp.Basic):  # class attributes and the number's own value: no
+        if not x.is_Number:      # sympify, no assumption deduced for a new number
+            return False
+        return x.p == 0 if x.is_Rational else (not bool(x) if x.is_Float else bool(x.is_zero))
     return x == 0
 
 
