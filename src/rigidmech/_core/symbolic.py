@@ -267,10 +267,21 @@ def _complex_value(e, values, memo):
     return out
 
 
+def _sample(atom, value, i):
+    """A sample value that honours the atom's sign and integrality assumptions (an
+    expression that vanishes only under them must not be seen non-zero)."""
+    if getattr(atom, "is_integer", False):
+        value = float(1 + i % 3)
+    if atom.is_negative or atom.is_nonpositive:
+        value = -value
+    return value
+
+
 def nonzero_somewhere(expr, skip=()) -> bool:
     """Whether the scalar ``expr`` is shown not to vanish identically by its value at two
     sample points (every symbol, function q(t) and derivative q'(t) but those in ``skip``
-    given values in (0.37, 1.4)): a magnitude above 1e-9 at either point. False means only
+    given values in (0.37, 1.4), of the sign its assumptions give, integers for integer
+    symbols): a magnitude above 1e-9 at either point. False means only
     "not shown": decide then with algebra (``sympy.simplify``). Cheap, unlike ``simplify``
     of an expression that is not zero.
 
@@ -287,7 +298,7 @@ def nonzero_somewhere(expr, skip=()) -> bool:
              *sorted(expr.atoms(sp.core.function.AppliedUndef), key=str),
              *sorted((x for x in expr.free_symbols if x not in skip), key=str)]
     for seed in (0.3711, 0.6173):
-        values = {a: complex(seed + 0.1 * (i % 8)) for i, a in enumerate(atoms)}
+        values = {a: complex(_sample(a, seed + 0.1 * (i % 8), i)) for i, a in enumerate(atoms)}
         try:
             value = _complex_value(expr, values, {})
         except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
