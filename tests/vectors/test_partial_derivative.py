@@ -26,10 +26,19 @@ def expressions():
         max_leaves=8)
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=150, deadline=None, derandomize=True)
 @given(expressions(), st.sampled_from([q1, q2, q1.diff(t), a, t]))
 def test_partial_derivative_is_sympy_diff(expr, variable):
-    assert sp.expand(partial_derivative(expr, variable) - sp.diff(expr, variable)) == 0
+    ours, theirs = partial_derivative(expr, variable), sp.diff(expr, variable)
+    if sp.expand(ours - theirs) == 0:
+        return
+    # equal in another form (exp(x) / sqrt(exp(x)) against sqrt(exp(x))): compare values
+    leaves = [*sorted(ours.atoms(sp.Derivative) | theirs.atoms(sp.Derivative), key=str),
+              q1, q2, a, t]  # derivatives of any order first: xreplace matches whole trees
+    for seed in (0.3, 0.7):
+        rule = {x: seed + 0.1 * i for i, x in enumerate(leaves)}
+        x, y = complex(ours.xreplace(rule).evalf()), complex(theirs.xreplace(rule).evalf())
+        assert abs(x - y) <= 1e-9 * (1 + abs(y))
 
 
 def test_rates_and_coordinates_are_independent():

@@ -82,9 +82,9 @@ class Constraints:
         self._position = tuple(None if r[2] is None else sp.sympify(r[2]) for r in rows)
         # c is linear in q': A = dc/dq' and b = -dc/dt with q'' = 0, both taken
         # structurally on q(t) (no substitution of plain symbols, no sympy diff)
-        rates = [q.diff(t) for q in self._coordinates]
+        rates = [sp.Derivative(q, t) for q in self._coordinates]
         coords = set(self._coordinates)
-        no_acc = {q.diff(t, 2): 0 for q in self._coordinates}
+        no_acc = {sp.Derivative(q, (t, 2)): 0 for q in self._coordinates}
         A, b = [], []
         for label, c in zip(self._labels, self._velocity, strict=True):
             if any(d.variable_count != ((t, 1),) for d in c.atoms(sp.Derivative)):

@@ -533,7 +533,7 @@ class System(LinkedParameters):
             return self._cache["eom"]
         R = self._galilean
         n = len(self.coordinates)
-        no_acc = {q.diff(t, 2): 0 for q in self.coordinates}
+        no_acc = {sp.Derivative(q, (t, 2)): 0 for q in self.coordinates}  # no diff: cheap
         # Terms are collected in lists and summed once: adding to a growing sympy sum
         # re-sorts it at every step.
         M_terms = [[[] for _ in range(n)] for _ in range(n)]
