@@ -21,8 +21,8 @@ row per condition, as ``(label, velocity, position)``:
   C = e_j(2) ^ e_k(1) (resp. e_j(1) ^ e_k(2)), equal to e_i when closed: the multiplier is
   the couple of the joint about e_i (these conditions also hold with an axis reversed,
   w(2) = -w(1): assemble from values near the intended position). A condition that
-  vanishes identically is dropped; one
-  that is a non-zero constant means the two points (or axes) cannot coincide and is refused;
+  vanishes identically is dropped; one that is a non-zero constant means the two points (or
+  axes) cannot coincide and is refused;
 * a **helical** joint closing a loop adds its linked motion, at the velocity level only:
   (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its
   position form would carry the relative angle, which the frames do not name); its
@@ -130,15 +130,15 @@ def closure_conditions(link, meets=None) -> list:
     >>> [label for label, _, _ in closure_conditions(link, meets=C3)]
     ['C.u', 'C.v']
 
-    A spatial loop: a rotor turning on a ball joint (yaw a, pitch b), its axis held along R0.k
-    by a pivot; ``meets`` is the rotor's frame, whose k is the pivot's axis when closed.
+    A spatial loop: a body on a ball joint (pitch b, then roll c), its axis k held along R0.k
+    by a pivot; ``meets`` is the body's frame, whose k is the pivot's axis when closed.
 
-    >>> a, b = rm.coordinates("a b")
-    >>> A = R0.rotated("A", about=k, angle=a); R = A.rotated("R", about=A.j, angle=b)
-    >>> link = Link(rm.Body("ground", frame=R0), rm.Body("rotor", frame=R),
+    >>> b, c = rm.coordinates("b c")
+    >>> A = R0.rotated("A", about=R0.j, angle=b); R = A.rotated("R", about=A.i, angle=c)
+    >>> link = Link(rm.Body("ground", frame=R0), rm.Body("body", frame=R),
     ...             rm.joints.Pivot(at=R0.origin, axis=k), "P")
     >>> [(label, phi) for label, _, phi in closure_conditions(link, meets=R)]
-    [('P.ru', -sin(a(t))*sin(b(t))), ('P.rv', sin(b(t))*cos(a(t)))]
+    [('P.ru', sin(c(t))), ('P.rv', sin(b(t))*cos(c(t)))]
     """
     return [row[:3] for row in _rows(link, meets)]
 
@@ -233,8 +233,7 @@ def _meeting(conn, meets):
     if meets is None:
         return conn.at, None
     if isinstance(meets, Frame):
-        w = meets.basis[2]
-        return meets.origin, (meets.basis[0], meets.basis[1], w)
+        return meets.origin, tuple(meets.basis)
     check_point(meets, "meets")
     return meets, None
 
