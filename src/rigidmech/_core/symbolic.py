@@ -270,7 +270,9 @@ def _complex_value(e, values, memo):
 def _sample(atom, value, i):
     """A sample value that honours the atom's sign and integrality assumptions (an
     expression that vanishes only under them must not be seen non-zero)."""
-    if getattr(atom, "is_integer", False):
+    if not isinstance(atom, sp.Symbol):  # q(t), q'(t): real, no assumption to ask
+        return value
+    if atom.is_integer:
         value = float(1 + i % 3)
     if atom.is_negative or atom.is_nonpositive:
         value = -value
