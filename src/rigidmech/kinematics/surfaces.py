@@ -22,8 +22,8 @@ Planes and lines are :class:`~rigidmech.vectors.Plane` and :class:`~rigidmech.ve
 spheres, cylinders and circles are the value types of this module. Radii must be positive.
 Contact is decided exactly: a gap is shown non-zero by its value at sample points (cheap), and
 zero by algebra (a trigonometric canonical form, then ``sympy.simplify``); surfaces that are
-not provably in contact are refused, with the gap in the message. For a disc on a plane, d is written along a
-basis vector of the frames of the problem when it can be (d = lambda e, for example
+not provably in contact are refused, with the gap in the message. For a disc on a plane, d is
+written along a basis vector of the frames of the problem when it can be (d = lambda e, for example
 e = j of the frame after the precession and the nutation of Euler angles), so that no
 square root is needed; the normal is the plane's, turned towards the disc when the sign of the
 centre's height is known.
