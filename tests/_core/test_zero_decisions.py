@@ -43,3 +43,25 @@ def test_the_four_meanings_differ_where_they_should():
     assert zero_decision(positive + 1) is False
     assert zero_decision(sp.Integer(3)) is False
     assert zero_decision(a) is None
+
+
+def test_nonzero_somewhere_decides_cheaply_and_soundly():
+    from rigidmech._core.symbolic import nonzero_somewhere
+    from rigidmech.vectors import coordinates, t
+
+    q = coordinates("q")
+    a = sp.Symbol("a", positive=True)
+    # identities are never reported non-zero
+    assert not nonzero_somewhere(sp.sin(q) ** 2 + sp.cos(q) ** 2 - 1)
+    assert not nonzero_somewhere(sp.cos(2 * q) - 1 + 2 * sp.sin(q) ** 2)
+    assert not nonzero_somewhere(sp.sqrt(a**2) - a)
+    # what does not vanish is seen at a sample point, derivatives and t included
+    assert nonzero_somewhere(sp.sin(q) * q.diff(t) - a * q.diff(t))
+    assert nonzero_somewhere(sp.Abs(sp.cos(q)) + t)
+    # t can be kept out of the sample (then an expression in t only is not decided)
+    assert not nonzero_somewhere(t, skip=(t,))
+    # samples honour the assumptions: zero for every negative b, or every integer n
+    b = sp.Symbol("b", negative=True)
+    n = sp.Symbol("n", integer=True)
+    assert not nonzero_somewhere(sp.Abs(b) + b + sp.Max(b, 0))
+    assert not nonzero_somewhere(sp.Function("f")(n) * sp.sin(sp.pi * n))

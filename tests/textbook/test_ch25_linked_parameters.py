@@ -176,7 +176,9 @@ def test_orientation_closure_is_refused_clearly():
     body = rm.Body("b", frame=R0.rotated("R1", about=R0.i, angle=a))
     s = System(galilean=R0)
     s.connect(R0, body, rm.joints.Pivot(at=R0.origin, axis=R0.i))
-    with pytest.raises(ConnectionError_, match=r"orientation closure of a loop is not supported"):
+    with pytest.raises(ConnectionError_, match=r"blocks the relative rotation about u, which "
+                                               r"the frames do not block: give `meets` as a "
+                                               r"frame"):
         s.connect(R0, body, rm.joints.Pivot(at=R0.origin, axis=R0.k))
 
 

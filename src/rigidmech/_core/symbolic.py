@@ -22,9 +22,13 @@ function here (and only here):
 
 from __future__ import annotations
 
+import cmath
+import math
+
 import sympy as sp
 
 __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
+           "nonzero_somewhere",
            "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
 
@@ -158,7 +162,13 @@ def is_exactly_zero(x) -> bool:
     >>> is_exactly_zero(sp.sin(a)**2 + sp.cos(a)**2 - 1)
     False
     """
-    return x == 0 or (x.is_Number and x.is_zero)
+    if x is sp.S.Zero:
+        return True
+    if isinstance(x, sp.Basic):  # class attributes and the number's own value: no
+        if not x.is_Number:      # sympify, no assumption deduced for a new number
+            return False
+        return x.p == 0 if x.is_Rational else (not bool(x) if x.is_Float else bool(x.is_zero))
+    return x == 0
 
 
 def is_identically_zero(expr) -> bool:
@@ -225,3 +235,80 @@ def zero_decision(expr) -> bool | None:
     if z.is_zero is False or (z.is_number and z != 0):
         return False
     return None
+
+
+_CMATH = {sp.sin: cmath.sin, sp.cos: cmath.cos, sp.tan: cmath.tan, sp.exp: cmath.exp,
+          sp.log: cmath.log, sp.asin: cmath.asin, sp.acos: cmath.acos, sp.atan: cmath.atan,
+          sp.sinh: cmath.sinh, sp.cosh: cmath.cosh, sp.tanh: cmath.tanh}
+
+
+def _complex_value(e, values, memo):
+    """Value of ``e`` with the leaves in ``values`` (plain Python complex arithmetic); raises
+    KeyError or TypeError on what it does not know (then sympy evaluates)."""
+    if e in memo:
+        return memo[e]
+    if e in values:
+        out = values[e]
+    elif e.is_Number or e.is_NumberSymbol:
+        out = complex(e)
+    elif e.is_Add:
+        out = sum(_complex_value(a, values, memo) for a in e.args)
+    elif e.is_Mul:
+        out = 1
+        for a in e.args:
+            out *= _complex_value(a, values, memo)
+    elif e.is_Pow:
+        out = _complex_value(e.base, values, memo) ** _complex_value(e.exp, values, memo)
+    elif isinstance(e, sp.Abs):
+        out = abs(_complex_value(e.args[0], values, memo))
+    else:
+        out = _CMATH[e.func](_complex_value(e.args[0], values, memo))
+    memo[e] = out
+    return out
+
+
+def _sample(atom, value, i):
+    """A sample value that honours the atom's sign and integrality assumptions (an
+    expression that vanishes only under them must not be seen non-zero)."""
+    if not isinstance(atom, sp.Symbol):  # q(t), q'(t): real, no assumption to ask
+        return value
+    if atom.is_integer:
+        value = float(1 + i % 3)
+    if atom.is_negative or atom.is_nonpositive:
+        value = -value
+    return value
+
+
+def nonzero_somewhere(expr, skip=()) -> bool:
+    """Whether the scalar ``expr`` is shown not to vanish identically by its value at two
+    sample points (every symbol, function q(t) and derivative q'(t) but those in ``skip``
+    given values in (0.37, 1.4), of the sign its assumptions give, integers for integer
+    symbols): a magnitude above 1e-9 at either point. False means only
+    "not shown": decide then with algebra (``sympy.simplify``). Cheap, unlike ``simplify``
+    of an expression that is not zero.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> nonzero_somewhere(sp.sin(a)**2 + sp.cos(a)**2 - 1), nonzero_somewhere(sp.sin(a))
+    (False, True)
+    """
+    expr = sp.sympify(expr)
+    if expr == 0:
+        return False
+    atoms = [*sorted(expr.atoms(sp.Derivative), key=str),
+             *sorted(expr.atoms(sp.core.function.AppliedUndef), key=str),
+             *sorted((x for x in expr.free_symbols if x not in skip), key=str)]
+    for seed in (0.3711, 0.6173):
+        values = {a: complex(_sample(a, seed + 0.1 * (i % 8), i)) for i, a in enumerate(atoms)}
+        try:
+            value = _complex_value(expr, values, {})
+        except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
+            rule = {a: sp.Float(v.real) for a, v in values.items()}
+            try:
+                value = complex(expr.xreplace(rule).evalf())
+            except (TypeError, ValueError):
+                return False
+        if math.isfinite(abs(value)) and abs(value) > 1e-9:
+            return True
+    return False

@@ -39,7 +39,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError
-from ..vectors import t
+from ..vectors import partial_derivative, t, time_derivative
 
 __all__ = ["Constraints"]
 
@@ -72,7 +72,7 @@ class Constraints:
     """
 
     __slots__ = ("_coordinates", "_labels", "_velocity", "_position", "_A", "_b",
-                 "_stabilization")
+                 "_stabilization", "_stabilized")
 
     def __init__(self, coordinates, rows, stabilization=(5.0, 5.0)):
         self._coordinates = tuple(coordinates)
@@ -80,44 +80,37 @@ class Constraints:
         self._labels = tuple(str(r[0]) for r in rows)
         self._velocity = tuple(sp.sympify(r[1]) for r in rows)
         self._position = tuple(None if r[2] is None else sp.sympify(r[2]) for r in rows)
-        # with plain symbols for q and q' the derivatives are cheap:
-        # A = dc/dq', b = -(dc/dq . q' + dc/dt) (c is linear in q')
-        qs = [sp.Dummy(f"q{i}", real=True) for i in range(len(self._coordinates))]
-        us = [sp.Dummy(f"u{i}", real=True) for i in range(len(self._coordinates))]
-        rule, back = {}, {}
-        for q, qd, ud in zip(self._coordinates, qs, us, strict=True):
-            rule[q.diff(t)] = ud
-            rule[q] = qd
-            back[ud] = q.diff(t)
-            back[qd] = q
+        # c is linear in q': A = dc/dq' and b = -dc/dt with q'' = 0, both taken
+        # structurally on q(t) (no substitution of plain symbols, no sympy diff)
+        rates = [sp.Derivative(q, t) for q in self._coordinates]
+        coords = set(self._coordinates)
+        no_acc = {sp.Derivative(q, (t, 2)): 0 for q in self._coordinates}
         A, b = [], []
         for label, c in zip(self._labels, self._velocity, strict=True):
             if any(d.variable_count != ((t, 1),) for d in c.atoms(sp.Derivative)):
                 raise ArgumentError(
                     f"constraint {label}: the velocity form must hold first derivatives "
                     f"of the coordinates only; got {c}.")
-            cs = c.xreplace(rule)
-            stray = [f for f in cs.atoms(sp.core.function.AppliedUndef) if f.args == (t,)
-                     and f not in rule]
+            stray = [f for f in c.atoms(sp.core.function.AppliedUndef) if f.args == (t,)
+                     and f not in coords]
             if stray:
                 raise ArgumentError(
                     f"constraint {label} depends on {stray[0]}, which is not a coordinate of "
                     f"the system {tuple(self._coordinates)}: build the points of the "
                     "connection on the bodies' frames.")
-            row = [cs.diff(u) for u in us]
-            if any(a.has(*us) for a in row):
+            row = [partial_derivative(c, u) for u in rates]
+            if any(a.has(*rates) for a in row):
                 raise ArgumentError(
                     f"constraint {label}: the velocity form must be linear in the rates; got "
                     f"{c}.")
-            bias = -(sp.Add(*[cs.diff(qd) * ud for qd, ud in zip(qs, us, strict=True)])
-                     + cs.diff(t))
-            A.append([a.xreplace(back) for a in row])
-            b.append(bias.xreplace(back))
+            A.append(row)
+            b.append(-time_derivative(c).xreplace(no_acc))
         m, n = len(rows), len(self._coordinates)
         self._A = sp.ImmutableMatrix(m, n, [x for r in A for x in r])
         self._b = sp.ImmutableMatrix(m, 1, b)
         alpha, beta = stabilization
         self._stabilization = (float(alpha), float(beta))
+        self._stabilized = None
 
     @property
     def coordinates(self) -> tuple:
@@ -162,16 +155,20 @@ class Constraints:
     def stabilized_bias(self) -> sp.ImmutableMatrix:
         """b - 2 alpha c - beta^2 Φ (Φ = 0 for a nonholonomic row): what the compiled
         right-hand side uses."""
-        alpha, beta = (sp.Float(x) for x in self._stabilization)
-        out = []
-        for bi, ci, pi in zip(self._b, self._velocity, self._position, strict=True):
-            e = bi
-            if alpha:
-                e = e - 2 * alpha * ci
-            if pi is not None and beta:
-                e = e - beta**2 * pi
-            out.append(e)
-        return sp.ImmutableMatrix(len(out), 1, out)
+        if self._stabilized is None:
+            alpha, beta = self._stabilization
+            out = []
+            for bi, ci, pi in zip(self._b, self._velocity, self._position, strict=True):
+                # the Float coefficients kept in front of c and Φ (an evaluated
+                # Float * Add is distributed over every term: slow, and no gain)
+                terms = [bi]
+                if alpha:
+                    terms.append(sp.Mul(sp.Float(-2 * alpha), ci, evaluate=False))
+                if pi is not None and beta:
+                    terms.append(sp.Mul(sp.Float(-beta**2), pi, evaluate=False))
+                out.append(sp.Add(*terms, evaluate=False) if len(terms) > 1 else bi)
+            self._stabilized = sp.ImmutableMatrix(len(out), 1, out)
+        return self._stabilized
 
     def __len__(self):
         return len(self._labels)

@@ -301,8 +301,11 @@ class System(LinkedParameters):
         ----------
         parent, child : Body or the Galilean Frame (parent only)
         joint : a joint of ``rm.joints``, a RollingContact or a GearMesh
-        meets : Point, optional
-            For a joint closing a loop: the point of ``child`` that meets ``joint.at``.
+        meets : Point or Frame, optional
+            For a joint closing a loop: the point of ``child`` that meets ``joint.at``; or a
+            frame of ``child`` whose origin meets ``joint.at`` and whose axes (i, j, k) meet
+            the joint's basis (u, v, w) when the loop is closed, needed when the joint blocks
+            a relative rotation that the frames do not (a spatial loop).
         label : str, optional
             Name of the connection in the graph (suffix of its unknowns); default its rank.
 
@@ -577,7 +580,7 @@ class System(LinkedParameters):
             return self._cache["eom"]
         R = self._galilean
         n = len(self.coordinates)
-        no_acc = {q.diff(t, 2): 0 for q in self.coordinates}
+        no_acc = {sp.Derivative(q, (t, 2)): 0 for q in self.coordinates}  # no diff: cheap
         # Terms are collected in lists and summed once: adding to a growing sympy sum
         # re-sorts it at every step.
         M_terms = [[[] for _ in range(n)] for _ in range(n)]
@@ -773,6 +776,7 @@ class System(LinkedParameters):
                 "connection actions are not derived.")
         if not tree:
             P = self._meets.get(id(link))
+            P = P.origin if isinstance(P, Frame) else P
             if P is None:
                 P = next((T.point for _, forces in own for solid, T in forces
                           if solid is child), None) or link.connection.at

@@ -20,9 +20,10 @@ sphere / sphere   C1C2 = r1 + r2 or abs(r1 - r2)          as for circles
 
 Planes and lines are :class:`~rigidmech.vectors.Plane` and :class:`~rigidmech.vectors.Line`;
 spheres, cylinders and circles are the value types of this module. Radii must be positive.
-Contact is decided exactly (``sympy.simplify`` of the gap): surfaces that are not provably in
-contact are refused, with the gap in the message. For a disc on a plane, d is written along a
-basis vector of the frames of the problem when it can be (d = lambda e, for example
+Contact is decided exactly: a gap is shown non-zero by its value at sample points (cheap), and
+zero by algebra (a trigonometric canonical form, then ``sympy.simplify``); surfaces that are
+not provably in contact are refused, with the gap in the message. For a disc on a plane, d is
+written along a basis vector of the frames of the problem when it can be (d = lambda e, for example
 e = j of the frame after the precession and the nutation of Euler angles), so that no
 square root is needed; the normal is the plane's, turned towards the disc when the sign of the
 centre's height is known.
@@ -35,6 +36,7 @@ from typing import NamedTuple
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.symbolic import nonzero_somewhere, simplifies_to_zero
 from ..vectors import Line, Plane, Point, Vector
 from ..vectors.points import check_point
 
@@ -68,8 +70,14 @@ def _unit(v):
 
 
 def _zero(x) -> bool:
+    """Exact decision: a value at a sample point proves a gap is not zero (cheap, where
+    ``simplify`` of a non-zero expression is slow); a zero is proved by algebra."""
     x = sp.sympify(x)
-    return x == 0 or sp.simplify(x) == 0
+    if x == 0:
+        return True
+    if nonzero_somewhere(x):
+        return False
+    return simplifies_to_zero(x)
 
 
 class Sphere:

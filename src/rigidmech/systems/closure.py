@@ -10,11 +10,23 @@ row per condition, as ``(label, velocity, position)``:
   first solid) and the point P2 of the second solid that must coincide with it (``meets``,
   default the same point). For each translation the joint blocks, along e of its local basis
   (u, v, w), the geometric condition is Φ = P1P2 . e = 0 and the kinematic one its time
-  derivative. A rotation the joint blocks must already be blocked by the frames (the
-  relative rotation component vanishes identically, as in a planar mechanism or two coaxial
-  bearings); otherwise the orientation closure is refused (not supported yet). A condition
-  that vanishes identically is dropped; one that is a non-zero constant means the two points
-  cannot coincide and is refused;
+  derivative. A rotation the joint blocks about e_i is usually blocked by the frames already
+  (the relative rotation component vanishes identically, as in a planar mechanism or two
+  coaxial bearings): then it gives no condition. Otherwise (a spatial loop) ``meets`` must be
+  a frame of the second solid, its origin P2 and its axes (e_1(2), e_2(2), e_3(2)) meeting the
+  joint's basis (e_1(1), e_2(1), e_3(1)) = (u, v, w) when the loop is closed, the joint's axis
+  a vector of a frame fixed in the first solid; with (i, j, k) cyclic the condition is
+  Φ = e_k(1) . e_j(2) = 0 (or -e_j(1) . e_k(2) = 0 when the joint allows the rotation about
+  e_k: a pivot uses only w(2)), whose time derivative is (omega2 - omega1) . C with
+  C = e_j(2) ^ e_k(1) (resp. e_j(1) ^ e_k(2)), equal to e_i when closed: the multiplier is
+  the couple of the joint about e_i (these conditions also hold with an axis reversed,
+  w(2) = -w(1): assemble from values near the intended position). A condition that
+  vanishes identically is dropped; one that is a non-zero constant means the two points (or
+  axes) cannot coincide and is refused;
+* a **helical** joint closing a loop adds its linked motion, at the velocity level only:
+  (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its
+  position form would carry the relative angle, which the frames do not name); its
+  multiplier is the axial force Z, with the couple N = -h Z of a perfect helical joint;
 * a **rolling contact** or a **gear mesh**: its velocity constraints
   (:class:`~rigidmech.kinematics.constraints.VelocityConstraint`), with their position form
   when they are holonomic (a wheel on a line, gears) and without one when they are not (a
@@ -27,8 +39,9 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ConnectionError_
+from .._core.symbolic import nonzero_somewhere
 from ..torsors import Torsor
-from ..vectors import Vector, t
+from ..vectors import Frame, Vector, t, time_derivative
 from ..vectors.points import check_point
 
 __all__ = ["closure_conditions", "closure_forces"]
@@ -37,16 +50,9 @@ _AXES = ("u", "v", "w")
 
 
 def _time_derivative(e):
-    """de/dt for e(q(t), t), differentiated with plain symbols in place of q(t) (cheaper
-    than sympy's chain rule through the functions)."""
-    qs = sorted(e.atoms(sp.core.function.AppliedUndef), key=str)
-    qs = [q for q in qs if q.args == (t,)]
-    dummies = [sp.Dummy(str(q.func), real=True) for q in qs]
-    es = e.xreplace(dict(zip(qs, dummies, strict=True)))
-    back = dict(zip(dummies, qs, strict=True))
-    out = es.diff(t).xreplace(back) if es.has(t) else sp.S.Zero
-    return out + sp.Add(*[es.diff(d).xreplace(back) * q.diff(t)
-                          for q, d in zip(qs, dummies, strict=True)])
+    """de/dt for e(q(t), t): the chain rule applied structurally
+    (:func:`~rigidmech.vectors.time_derivative`), cheaper than sympy's ``diff``."""
+    return time_derivative(e)
 
 
 def _gear_rows(link):
@@ -75,21 +81,13 @@ def _gear_rows(link):
 
 
 def _zero(e):
-    """Whether ``e`` vanishes identically: a non-zero value at a random point settles it
+    """Whether ``e`` vanishes identically: a non-zero value at a sample point settles it
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
     ``simplify`` decides."""
     if e == 0:
         return True
-    atoms = [*e.atoms(sp.Derivative), *e.atoms(sp.core.function.AppliedUndef),
-             *(x for x in e.free_symbols if x != t)]
-    for seed in (0.3711, 0.6173):
-        rule = {a: sp.Float(seed + 0.1 * i) for i, a in enumerate(atoms)}
-        try:
-            value = complex(e.xreplace(rule).subs(rule).evalf())
-        except (TypeError, ValueError):
-            break
-        if abs(value) > 1e-9:
-            return False
+    if nonzero_somewhere(e, skip=(t,)):
+        return False
     return sp.simplify(e) == 0
 
 
@@ -101,15 +99,18 @@ def closure_conditions(link, meets=None) -> list:
     Parameters
     ----------
     link : Link
-    meets : Point, optional
+    meets : Point or Frame, optional
         For a joint closing a loop, the point of ``link.second`` that coincides with the
-        joint's point (a point of ``link.first``); default the joint's point itself.
+        joint's point (a point of ``link.first``); default the joint's point itself. A frame
+        of ``link.second`` (origin and axes) for a joint that blocks a relative rotation the
+        frames do not.
 
     Raises
     ------
     ConnectionError\\_
-        If the two points cannot coincide (a constant distance along a blocked direction),
-        or the joint blocks a rotation the frames do not already block.
+        If the two points (or axes) cannot coincide (a constant distance along a blocked
+        direction), or the joint blocks a rotation the frames do not already block and
+        ``meets`` is not a frame of the second solid.
 
     Examples
     --------
@@ -128,6 +129,16 @@ def closure_conditions(link, meets=None) -> list:
     ...             rm.joints.Pivot(at=C2, axis=k), "C")
     >>> [label for label, _, _ in closure_conditions(link, meets=C3)]
     ['C.u', 'C.v']
+
+    A spatial loop: a body on a ball joint (pitch b, then roll c), its axis k held along R0.k
+    by a pivot; ``meets`` is the body's frame, whose k is the pivot's axis when closed.
+
+    >>> b, c = rm.coordinates("b c")
+    >>> A = R0.rotated("A", about=R0.j, angle=b); R = A.rotated("R", about=A.i, angle=c)
+    >>> link = Link(rm.Body("ground", frame=R0), rm.Body("body", frame=R),
+    ...             rm.joints.Pivot(at=R0.origin, axis=k), "P")
+    >>> [(label, phi) for label, _, phi in closure_conditions(link, meets=R)]
+    [('P.ru', sin(c(t))), ('P.rv', sin(b(t))*cos(c(t)))]
     """
     return [row[:3] for row in _rows(link, meets)]
 
@@ -185,28 +196,19 @@ def _rows(link, meets):
         return [(f"{link.label}.{i + 1}", c.expression, None, None)
                 for i, c in enumerate(conn.velocity_constraints())]
     P1 = conn.at
-    P2 = P1 if meets is None else meets
-    check_point(P2, "meets")
-    if getattr(conn, "linked_motion", 0):
-        raise ConnectionError_(
-            f"{type(conn).__name__} at {P1.name} closes a loop between {link.first.name} and "
-            f"{link.second.name}: a loop closed by a joint with linked motions (helical) is not "
-            "supported yet; close the loop with another joint.")
+    P2, axes2 = _meeting(conn, meets)
     rows = []
     rotation = None
+    basis1 = conn.basis
+    free = [i for i in range(3) if i not in conn.blocked_motion]
     for i in conn.blocked_motion:
-        e = conn.basis[i % 3]
+        e = basis1[i % 3]
         if i < 3:
             if rotation is None:
                 rotation = second.frame.rotation_vector(first.frame)
-            w = sp.expand(rotation.dot(e))
-            if not _zero(w):
-                raise ConnectionError_(
-                    f"{type(conn).__name__} at {P1.name} closes a loop between {first.name} "
-                    f"and {second.name} and blocks the relative rotation about {e}, which the "
-                    f"frames do not block (omega . {_AXES[i]} = {w}): orientation closure of "
-                    "a loop is not supported yet. Close the loop with a joint that allows this "
-                    "rotation (a spherical joint), or build the frames so that it vanishes.")
+            if _zero(sp.expand(rotation.dot(e))):
+                continue  # the frames already block it
+            rows.append(_orientation_row(link, i, free, axes2, P2))
             continue
         phi = sp.expand((P2 - P1).dot(e))
         if _zero(phi):
@@ -220,4 +222,81 @@ def _rows(link, meets):
         rows.append((f"{link.label}.{_AXES[i - 3]}", _time_derivative(phi), phi,
                      [(second, Torsor(e, Vector.zero(), P2)),
                       (first, Torsor(-e, Vector.zero(), P1))]))
+    if getattr(conn, "linked_motion", 0):
+        rows.append(_helical_row(link, P2))
     return rows
+
+
+def _meeting(conn, meets):
+    """(P2, (u2, v2, w2) or None): the point of the second solid that meets the joint's
+    point, and its copy of the joint's basis when ``meets`` is a frame."""
+    if meets is None:
+        return conn.at, None
+    if isinstance(meets, Frame):
+        return meets.origin, tuple(meets.basis)
+    check_point(meets, "meets")
+    return meets, None
+
+
+def _fixed_in(vectors, solid, argument):
+    """Refuse basis vectors that turn relative to ``solid``: the position form of an
+    orientation closure needs vectors of each solid."""
+    frame = vectors[0].parts[0][0]
+    w = frame.rotation_vector(solid.frame)
+    if not all(_zero(sp.expand(w.dot(e))) for e in frame.basis):
+        raise ConnectionError_(
+            f"the {argument} of the joint closing a loop must be fixed in {solid.name} (its "
+            f"frame {frame.name} turns relative to {solid.frame.name}): build it on a frame "
+            f"of {solid.name}.")
+
+
+def _orientation_row(link, i, free, axes2, P2):
+    """The closure of the relative rotation about e_i (i in 0, 1, 2 for u, v, w) that the
+    joint blocks and the frames do not: with (i, j, k) cyclic, Φ = e_k(1) . e_j(2) (or
+    -e_j(1) . e_k(2) when the rotation about e_k is free), vectors of the first solid and
+    of the second (``meets``, a frame) that coincide when the loop is closed; dΦ/dt =
+    (omega2 - omega1) . C with C = e_j(2) ^ e_k(1) (or e_j(1) ^ e_k(2)), the couple a unit
+    multiplier stands for (C = e_i when closed)."""
+    conn, first, second = link.connection, link.first, link.second
+    if axes2 is None:
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {conn.at.name} closes a loop between {first.name} and "
+            f"{second.name} and blocks the relative rotation about {_AXES[i]}, which the "
+            "frames do not block: give `meets` as a frame of the second solid whose origin "
+            "meets the joint's point and whose axes (i, j, k) meet the joint's (u, v, w) "
+            "when the loop is closed (only k is used when the joint allows a rotation about "
+            "its axis).")
+    _fixed_in(conn.basis, first, "axis")
+    _fixed_in(axes2, second, "frame `meets`")
+    e1 = conn.basis
+    j, k = (i + 1) % 3, (i + 2) % 3
+    if k in free:
+        phi, couple = -e1[j].dot(axes2[k]), e1[j].cross(axes2[k])
+    else:
+        phi, couple = e1[k].dot(axes2[j]), axes2[j].cross(e1[k])
+    phi = sp.expand(phi)
+    if not phi.has(t):
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {conn.at.name} between {first.name} and {second.name}: "
+            f"the axes of the frame `meets` cannot meet the joint's (the closure of the "
+            f"rotation about {_AXES[i]} is the constant {sp.simplify(phi)}).")
+    return (f"{link.label}.r{_AXES[i]}", _time_derivative(phi), phi,
+            [(second, Torsor(Vector.zero(), couple, P2)),
+             (first, Torsor(Vector.zero(), -couple, conn.at))])
+
+
+def _helical_row(link, P2):
+    """The linked motion of a helical joint closing a loop, at the velocity level:
+    (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0 (no position form: its
+    constant is the initial configuration's); a unit multiplier stands for the force w and
+    the couple -h w on the second solid (the book's N = -h Z), their opposites on the
+    first."""
+    conn, first, second = link.connection, link.first, link.second
+    root = first.frame.root
+    w, h = conn.basis[2], conn.reduced_pitch
+    v2 = second.kinematic_torsor(relative_to=root, at=P2).velocity
+    v1 = first.kinematic_torsor(relative_to=root, at=conn.at).velocity
+    omega = second.frame.rotation_vector(first.frame)
+    c = sp.expand((v2 - v1).dot(w) - h * omega.dot(w))
+    return (f"{link.label}.h", c, None,
+            [(second, Torsor(w, -h * w, P2)), (first, Torsor(-w, h * w, conn.at))])

@@ -29,12 +29,21 @@ from .reference_change import (
     common_origin_map,
 )
 from .singularities import OrientationSingularity, orientation_singularity
-from .symbols import constants, coordinates, declared_order, is_coordinate, t, time_derivative
+from .symbols import (
+    constants,
+    coordinates,
+    declared_order,
+    is_coordinate,
+    partial_derivative,
+    t,
+    time_derivative,
+)
 from .vector import Vector, cross, dot, mixed, partial_rotation_vector, rotation_vector
 
 __all__ = [
     "Frame", "Point", "Vector", "t", "coordinates", "constants", "is_coordinate",
-    "time_derivative", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector",
+    "time_derivative", "partial_derivative", "dot", "cross", "mixed", "rotation_vector",
+    "partial_rotation_vector",
     "Basis", "double_cross", "linear_dependence", "linearly_independent",
     "Line", "Plane", "angle", "common_perpendicular", "distance", "intersection",
     "is_orthogonal", "is_parallel",

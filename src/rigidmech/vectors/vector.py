@@ -32,7 +32,7 @@ from ._rotations import (
     path_to_ancestor,
     transpose,
 )
-from .symbols import time_derivative
+from .symbols import _is_rate, partial_derivative, time_derivative
 
 __all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector"]
 
@@ -58,6 +58,13 @@ def _check_scalar(given, s):
     if (isinstance(given, complex | np.complexfloating) or s is sp.I
             or (s.is_Number and s.is_finite is not True)):
         raise ArgumentError(f"`scalar` must be a finite real number; got {given}.")
+
+
+def _partial(x, variable):
+    """dx/d(variable): structural for a symbol, a q(t) or a q'(t), sympy's diff otherwise."""
+    if isinstance(variable, sp.Symbol) or _is_rate(variable):
+        return partial_derivative(x, variable)
+    return sp.diff(x, variable)
 
 
 def _any_nonzero(c):
@@ -446,7 +453,7 @@ class Vector:
         variable = sp.sympify(variable)
         out = Vector.zero()
         for f, c in self._parts:
-            d = tuple(sp.diff(x, variable) if x.has(variable) else ZERO for x in c)
+            d = tuple(_partial(x, variable) if x.has(variable) else ZERO for x in c)
             if _any_nonzero(d):
                 out = out + Vector._from_parts(((f, d),))
             if frame is None:
@@ -772,7 +779,7 @@ def _own_rotation(f, variable=None):
 
     def rate(x):
         return time_derivative(x) if variable is None else (
-            sp.diff(x, variable) if x.has(variable) else ZERO)
+            _partial(x, variable) if x.has(variable) else ZERO)
 
     if f._axis is not None:
         r = rate(f._angle)
