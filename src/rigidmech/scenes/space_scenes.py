@@ -58,7 +58,14 @@ import math
 
 import sympy as sp
 
-from ..actions import Force, Pivot, Spherical, SphericalBodyAttraction, gravity, point_mass_attractor
+from ..actions import (
+    Force,
+    Pivot,
+    Spherical,
+    SphericalBodyAttraction,
+    gravity,
+    point_mass_attractor,
+)
 from ..dynamics import System
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates, t
