@@ -271,7 +271,8 @@ def _input_symbols(inputs, eqs):
 
 
 def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
-              parameters=None, check=True, tol=1e-9, simplify=None) -> LinearSystem:
+              parameters=None, check=True, tol=1e-9, simplify=None,
+              independent=None) -> LinearSystem:
     """Linearise equations of motion about an equilibrium or a steady motion (ch. 25.4).
 
     Parameters
@@ -298,6 +299,14 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
+    independent : sequence of coordinates (q(t) or names), optional
+        For equations with constraints (closed loops, rolling): the parameters whose rates
+        are the independent speeds (default: see
+        :func:`rigidmech.dynamics.reduce_equations`). The equations are reduced to them,
+        then linearised (:mod:`rigidmech.vibrations.constrained`): the LinearSystem's
+        coordinates are these parameters; ``about`` gives every coordinate (on the
+        constraints), ``velocities`` every rate or only the independent ones (the others
+        follow from the constraints).
 
     Returns
     -------
@@ -307,7 +316,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ------
     ArgumentError
         If the state is not an equilibrium / steady motion: the message gives the residual
-        ``f(q*, q'*)``.
+        ``f(q*, q'*)``; with constraints, if it violates them (the residual Φ(q*) or
+        A q'* + a), or if the reduced equations are not steady along it.
     SingularMassMatrixError
         If ``M(q*)`` is singular.
 
@@ -348,6 +358,12 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
             raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                                 f"{sorted(by_name)}.")
         point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
+    if eqs.constraints is not None and len(eqs.constraints):
+        return _constrained(eqs, about, velocities, w, w_star, point, check=check, tol=tol,
+                            simplify=simplify, independent=independent)
+    if independent is not None:
+        raise ArgumentError("`independent` applies to equations with constraints only; "
+                            "these have none.")
     variables = list(norm.q) + list(norm.u) + w
     f_values, jac = values_and_jacobian(list(norm.f), point, variables)
     M0 = sp.ImmutableMatrix(n, n, values_and_jacobian(list(norm.M), point, [])[0])
@@ -376,6 +392,25 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     B = sp.ImmutableMatrix(n, len(w), lambda i, j: post(jac[i][2 * n + j]))
     M = M0.applyfunc(post)
     return LinearSystem(eqs.coordinates, about_named, vel_named, M, C, K, B, w)
+
+
+def _constrained(eqs, about, velocities, w, w_star, point, *, check, tol, simplify,
+                 independent):
+    from .constrained import linearize_constrained
+
+    norm = normalise(eqs)
+    extra = {k: v for k, v in point.items() if k in set(eqs.parameters)}
+    red, M0, C, K, B, about_named, vel_named = linearize_constrained(
+        eqs, about, velocities, w, w_star, extra, check=check, tol=tol,
+        independent=independent, values_of=_values, normalise=lambda e: norm)
+    if check:
+        _check_mass(M0, about_named)
+    k = M0.shape[0]
+    if simplify is None:
+        simplify = k <= 4
+    post = sp.simplify if simplify else (lambda x: x)
+    M, C, K, B = (sp.ImmutableMatrix(X).applyfunc(post) for X in (M0, C, K, B))
+    return LinearSystem(red.independent, about_named, vel_named, M, C, K, B, w)
 
 
 def _check_mass(M0, about):
