@@ -37,7 +37,7 @@ from .._core.errors import ArgumentError
 from .._core.symbolic import xreplace_shared
 from ..vectors import t as _t
 
-__all__ = ["ReducedEquations", "reduce_equations"]
+__all__ = ["ReducedEquations", "plain_constraints", "reduce_equations", "split_coordinates"]
 
 
 def _index(eqs, coordinate):
@@ -215,6 +215,49 @@ class ReducedEquations:
                 f"dependent={list(self.dependent)})")
 
 
+def plain_constraints(eqs):
+    """(A, b, c) of the constraints of ``eqs`` written with the stand-in symbols of its
+    compiled world (q, q' plain symbols): A q'' = b, c = A q' + a."""
+    c = eqs.constraints
+    if c is None or len(c) == 0:
+        raise ArgumentError(
+            "the equations have no constraints: there is nothing to reduce (they are "
+            "already M q'' = f on independent parameters).")
+    q_s, u_s, w_s, rule, _, _ = eqs._symbolic()
+    n, m = len(q_s), len(c)
+    memo = {}
+    A = sp.Matrix(m, n, xreplace_shared(list(c.jacobian), rule, memo))
+    b = sp.Matrix(m, 1, xreplace_shared(list(c.bias), rule, memo))
+    vel = sp.Matrix(m, 1, xreplace_shared(list(c.velocity), rule, memo))
+    return A, b, vel
+
+
+def split_coordinates(eqs, independent, A=None):
+    """(indices of the independent parameters, of the dependent ones) for ``independent``
+    (default: see :func:`reduce_equations`), checked against the constraint Jacobian A."""
+    if A is None:
+        A = plain_constraints(eqs)[0]
+    m, n = A.shape
+    if independent is None:
+        dep = _choose_dependent(eqs, A, sorted(A.free_symbols, key=str))
+        ind = [j for j in range(n) if j not in dep]
+    else:
+        ind = [_index(eqs, x) for x in independent]
+        if len(set(ind)) != len(ind) or len(ind) != n - m:
+            raise ArgumentError(
+                f"`independent` must name {n - m} distinct coordinates (n = {n} parameters, "
+                f"m = {m} constraints); got {list(independent)!r}.")
+        dep = [j for j in range(n) if j not in ind]
+    AD = A[:, dep]
+    ADn = _generic_jacobian(AD, sorted(AD.free_symbols, key=str))
+    if np.linalg.matrix_rank(ADn, tol=1e-9 * max(1.0, np.abs(ADn).max())) < m:
+        names = [eqs.names[j] for j in dep]
+        raise ArgumentError(
+            f"the constraints cannot be solved for the rates of {names} (their Jacobian "
+            f"block is singular at a generic point): choose other `independent` coordinates.")
+    return ind, dep
+
+
 def reduce_equations(eqs, independent=None) -> ReducedEquations:
     """The equations ``eqs`` (with constraints) reduced to the independent speeds (ch. 25.3).
 
@@ -236,35 +279,13 @@ def reduce_equations(eqs, independent=None) -> ReducedEquations:
         No constraints, a wrong number of independent parameters, or a choice for which the
         constraints cannot be solved for the dependent rates (A_D singular).
     """
-    c = eqs.constraints
-    if c is None or len(c) == 0:
-        raise ArgumentError(
-            "the equations have no constraints: there is nothing to reduce (they are "
-            "already M q'' = f on independent parameters).")
     q_s, u_s, w_s, rule, M, f = eqs._symbolic()
-    n, m = len(q_s), len(c)
-    memo = {}
-    A = sp.Matrix(m, n, xreplace_shared(list(c.jacobian), rule, memo))
-    b = sp.Matrix(m, 1, xreplace_shared(list(c.bias), rule, memo))
-    vel = sp.Matrix(m, 1, xreplace_shared(list(c.velocity), rule, memo))
+    n = len(q_s)
+    A, b, vel = plain_constraints(eqs)
+    m = A.shape[0]
     a = vel.xreplace({u: 0 for u in u_s})
-    if independent is None:
-        dep = _choose_dependent(eqs, A, sorted(A.free_symbols, key=str))
-        ind = [j for j in range(n) if j not in dep]
-    else:
-        ind = [_index(eqs, x) for x in independent]
-        if len(set(ind)) != len(ind) or len(ind) != n - m:
-            raise ArgumentError(
-                f"`independent` must name {n - m} distinct coordinates (n = {n} parameters, "
-                f"m = {m} constraints); got {list(independent)!r}.")
-        dep = [j for j in range(n) if j not in ind]
+    ind, dep = split_coordinates(eqs, independent, A)
     AD, AI = A[:, dep], A[:, ind]
-    ADn = _generic_jacobian(AD, sorted(AD.free_symbols, key=str))
-    if np.linalg.matrix_rank(ADn, tol=1e-9 * max(1.0, np.abs(ADn).max())) < m:
-        names = [eqs.names[j] for j in dep]
-        raise ArgumentError(
-            f"the constraints cannot be solved for the rates of {names} (their Jacobian "
-            f"block is singular at a generic point): choose other `independent` coordinates.")
     k = n - m
     uI = [u_s[j] for j in ind]
     sol = AD.LUsolve(sp.Matrix.hstack(-AI, -a, b))      # one factorisation for all columns

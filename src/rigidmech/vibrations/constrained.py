@@ -29,6 +29,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError
 from .._core.symbolic import is_identically_zero, xreplace_shared
+from ..dynamics.reduced import plain_constraints, split_coordinates
 from ._jet import values_and_jacobian
 
 __all__ = ["linearize_constrained"]
@@ -41,8 +42,8 @@ def _vanishes(x, tol):
     return is_identically_zero(x)
 
 
-def _rates(velocities, eqs, red, norm):
-    """(given rates by index): a dict by coordinate or a full sequence of n values, or a
+def _rates(velocities, eqs, ind, norm):
+    """The rates given, by index: a dict by coordinate, a full sequence of n values, or a
     sequence of the n - m independent rates."""
     n = len(eqs.coordinates)
     if velocities is None:
@@ -53,13 +54,12 @@ def _rates(velocities, eqs, red, norm):
         else [velocities]
     if len(values) == n:
         return {k: sp.sympify(v) for k, v in enumerate(values)}
-    if len(values) == len(red.independent):
-        return {eqs.coordinates.index(c): sp.sympify(v)
-                for c, v in zip(red.independent, values, strict=True)}
+    if len(values) == len(ind):
+        return {j: sp.sympify(v) for j, v in zip(ind, values, strict=True)}
     raise ArgumentError(
-        f"`velocities` must give {n} rates (or the {len(red.independent)} independent ones "
-        f"{[str(c) for c in red.independent]}, or a dict by coordinate); got "
-        f"{len(values)}: {velocities!r}.")
+        f"`velocities` must give {n} rates (or the {len(ind)} independent ones "
+        f"{[eqs.names[j] for j in ind]}, or a dict by coordinate); got {len(values)}: "
+        f"{velocities!r}.")
 
 
 def _holonomic_split(phi_q, dep):
@@ -68,11 +68,9 @@ def _holonomic_split(phi_q, dep):
     p = phi_q.shape[0]
     if p == 0:
         return []
-    if p == len(dep):
-        return list(dep)
+    symbols = sorted(phi_q.free_symbols, key=str)
     rng = np.random.default_rng(7)
-    sub = {s: sp.Float(v) for s, v in zip(sorted(phi_q.free_symbols, key=str),
-                                          rng.uniform(0.3, 1.3, len(phi_q.free_symbols)),
+    sub = {s: sp.Float(v) for s, v in zip(symbols, rng.uniform(0.3, 1.3, len(symbols)),
                                           strict=True)}
     num = np.array(phi_q.xreplace(sub).evalf().tolist(), dtype=complex).real
     chosen = []
@@ -87,113 +85,198 @@ def _holonomic_split(phi_q, dep):
         "configuration of the loop.")
 
 
-def _reference(eqs, red, norm, about, velocities, values_of):
-    """q*, the rates q'* (dependent ones computed from the constraints) and the velocity
-    residual of the rates the user gave for dependent parameters."""
-    n = len(eqs.coordinates)
-    q_s, uI, uD, _, _, _ = red.plain
+def _invertible(X):
+    if all(sp.sympify(x).is_number for x in X):
+        s = np.linalg.svd(np.array(X.evalf().tolist(), dtype=complex), compute_uv=False)
+        return s[-1] > 1e-12 * max(s[0], 1e-300)
+    return not is_identically_zero(X.det())
+
+
+class _Point:
+    """Values and first derivatives, at the reference state, of the pieces of the
+    multiplier form: M, f, A, b, c = A q' + a and the holonomic Φ."""
+
+    def __init__(self, eqs, point, variables, phi):
+        _, _, _, _, M, f = eqs._symbolic()
+        A, b, vel = plain_constraints(eqs)
+        self.n, self.m = A.shape[1], A.shape[0]
+        n, m = self.n, self.m
+        blocks = [list(M), list(f), list(A), list(b), list(vel), list(phi)]
+        flat = [e for blk in blocks for e in blk]
+        vals, jac = values_and_jacobian(flat, point, variables)
+        out, k = [], 0
+        for blk in blocks:
+            out.append((vals[k:k + len(blk)], jac[k:k + len(blk)]))
+            k += len(blk)
+        (self.M, self.dM), (self.f, self.df), (self.A, self.dA) = out[:3]
+        (self.b, self.db), (self.c, self.dc), (self.phi, self.dphi) = out[3:]
+        self.M = sp.Matrix(n, n, self.M)
+        self.A = sp.Matrix(m, n, self.A)
+
+    def grad(self, entries, weights, columns):
+        """sum_j weights[j] * d entries[j] / d variables[columns], a row."""
+        return [sp.Add(*[w * entries[j][c] for j, w in enumerate(weights) if w != 0])
+                for c in columns]
+
+
+def _reference(eqs, norm, about, velocities, values_of, point, ind, dep):
+    """q*, the rates q'* (the dependent ones from the constraints) and the rates given."""
+    q_s, u_s, _, _, _, _ = eqs._symbolic()
+    A, _, vel = plain_constraints(eqs)
     q_star = values_of(about, norm, "about")
-    given = _rates(velocities, eqs, red, norm)
-    ind = [eqs.coordinates.index(c) for c in red.independent]
-    dep = [eqs.coordinates.index(c) for c in red.dependent]
-    u_star = {uI[r]: given.get(j, sp.S.Zero) for r, j in enumerate(ind)}
-    point = dict(zip(q_s, q_star, strict=True)) | u_star
+    given = _rates(velocities, eqs, ind, norm)
+    at = point | dict(zip(q_s, q_star, strict=True))
+    a_vec = vel.xreplace({u: 0 for u in u_s})
+    vals, _ = values_and_jacobian(list(A) + list(a_vec), at, [])
+    n, m = len(q_s), A.shape[0]
+    A0 = sp.Matrix(m, n, vals[:m * n])
+    a0 = sp.Matrix(vals[m * n:])
+    if not _invertible(A0[:, dep]):
+        raise ArgumentError(
+            f"the constraints cannot be solved for the rates of "
+            f"{[eqs.names[j] for j in dep]} at the reference state (their Jacobian block is "
+            f"singular there): choose other `independent` coordinates.")
+    vI = sp.Matrix([given.get(j, sp.S.Zero) for j in ind])
+    vD = A0[:, dep].LUsolve(-(A0[:, ind] * vI + a0))
     rates = [None] * n
     for r, j in enumerate(ind):
-        rates[j] = u_star[uI[r]]
+        rates[j] = vI[r]
     for r, j in enumerate(dep):
-        rates[j] = uD[r].xreplace(point)
-    return q_star, rates, given, point, ind, dep
+        rates[j] = vD[r]
+    return q_star, rates, given, at | dict(zip(u_s, rates, strict=True))
 
 
-def _check_constraints(eqs, red, point, rates, given, tol):
-    c = eqs.constraints
-    q_s, u_s, _, rule, _, _ = eqs._symbolic()
-    memo = {}
+def _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind):
     names = eqs.names
-    pos = [p for p in c.position]
-    phi_rows = [k for k, p in enumerate(pos) if p is not None]
-    phi = xreplace_shared([pos[k] for k in phi_rows], rule, memo)
-    phi_val = [sp.sympify(e).xreplace(point) for e in phi]
-    bad = [(c.labels[k], v) for k, v in zip(phi_rows, phi_val, strict=True)
+    q_s = eqs._symbolic()[0]
+    about = {names[j]: at[q] for j, q in enumerate(q_s)}
+    labels = eqs.constraints.labels
+    bad = [(labels[k], v) for k, v in zip(phi_rows, P.phi, strict=True)
            if not _vanishes(v, tol)]
-    about = {names[j]: point[q] for j, q in enumerate(q_s)}
     if bad:
         raise ArgumentError(
             f"`about` violates the constraints: the residual Φ(q*) = "
             f"{', '.join(f'{lab}: {v}' for lab, v in bad)} is not 0 at q* = {about}. Give "
             "a configuration on the loop (solve its closure for the dependent parameters).")
-    wrong = []
-    for j, v in given.items():
-        if not _vanishes(sp.sympify(v) - rates[j], tol):
-            wrong.append(f"{names[j]}' = {v} (the constraints give {rates[j]})")
+    wrong = [f"{names[j]}' = {v} (the constraints give {rates[j]})"
+             for j, v in given.items() if not _vanishes(sp.sympify(v) - rates[j], tol)]
     if wrong:
-        vel = xreplace_shared(list(c.velocity), rule, {})
-        full = point | dict(zip(u_s, [sp.sympify(given.get(j, rates[j]))
-                                      for j in range(len(q_s))], strict=True))
-        res = [sp.sympify(e).xreplace(full) for e in vel]
+        v = sp.Matrix([given.get(j, rates[j]) for j in range(len(rates))])
+        res = list(P.A * (v - sp.Matrix(rates)))
         raise ArgumentError(
             f"`velocities` violate the constraints: residual A q'* + a = {res} "
             f"({'; '.join(wrong)}) at q* = {about}. Give only the independent rates "
-            f"{[str(x) for x in red.independent]}: the others follow.")
-    return phi, phi_rows
+            f"{[names[j] for j in ind]}: the others follow.")
+    return about
 
 
 def linearize_constrained(eqs, about, velocities, w, w_star, extra, *, check, tol,
                           independent, values_of, normalise):
     """Linearise constrained equations (see the module); arguments as
-    :func:`rigidmech.vibrations.linearize`. Returns the pieces of the LinearSystem."""
-    red = eqs.reduced(independent)
+    :func:`rigidmech.vibrations.linearize`. Returns (independent coordinates, M, C, K, B,
+    q* by name, q'* by name)."""
     norm = normalise(eqs)
-    q_s, uI, uD, _, Mr, fr = red.plain
-    n, k = len(q_s), len(uI)
-    q_star, rates, given, point, ind, dep = _reference(eqs, red, norm, about, velocities,
-                                                      values_of)
-    point |= dict(zip(w, w_star, strict=True)) | extra
-    phi, phi_rows = _check_constraints(eqs, red, point, rates, given, tol) if check else \
-        (None, None)
-    if phi is None:
-        c = eqs.constraints
-        rule = eqs._symbolic()[3]
-        phi = xreplace_shared([p for p in c.position if p is not None], rule, {})
-    variables = list(q_s) + list(uI) + list(w)
-    vals, jac = values_and_jacobian(list(fr) + list(phi), point, variables)
-    f_val, J = vals[:k], sp.Matrix(jac[:k])
-    phi_q = sp.Matrix(len(phi), n, lambda i, j: jac[k + i][j]) if phi else sp.zeros(0, n)
-    M0 = sp.ImmutableMatrix(k, k, values_and_jacobian(list(Mr), point, [])[0])
+    q_s, u_s, _, rule, _, _ = eqs._symbolic()
+    A = plain_constraints(eqs)[0]
+    ind, dep = split_coordinates(eqs, independent, A)
+    n, m = A.shape[1], A.shape[0]
+    k = n - m
+    base = dict(zip(w, w_star, strict=True)) | extra
+    q_star, rates, given, at = _reference(eqs, norm, about, velocities, values_of, base,
+                                          ind, dep)
+    c = eqs.constraints
+    phi_rows = [r for r, p in enumerate(c.position) if p is not None]
+    phi = xreplace_shared([c.position[r] for r in phi_rows], rule, {})
+    nq, nu = list(range(n)), list(range(n, 2 * n))
+    nw = list(range(2 * n, 2 * n + len(w)))
+    P = _Point(eqs, at, list(q_s) + list(u_s) + list(w), phi)
     names = eqs.names
     about_named = dict(zip(names, q_star, strict=True))
     vel_named = dict(zip(names, rates, strict=True))
     if check:
-        drift = J[:, :n] * sp.Matrix(rates)
-        res = [sp.simplify(r) if not sp.sympify(r).is_number else r for r in f_val]
-        res_rate = [sp.simplify(r) if not r.is_number else r for r in drift]
-        if not all(_vanishes(r, tol) for r in res + res_rate):
+        _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind)
+    AD = P.A[:, dep]
+
+    def dep_solve(X):
+        """E A_D^-1 X: the rows of the dependent parameters."""
+        Y = AD.LUsolve(sp.Matrix(X))
+        out = sp.zeros(n, Y.shape[1])
+        for r, j in enumerate(dep):
+            out[j, :] = Y[r, :]
+        return out
+
+    T = sp.zeros(n, k)
+    for r, j in enumerate(ind):
+        T[j, r] = 1
+    TD = AD.LUsolve(-P.A[:, ind])
+    for r, j in enumerate(dep):
+        T[j, :] = TD[r, :]
+    acc = dep_solve(sp.Matrix(P.b))                       # q''* (u'* = 0)
+    R0 = P.M * acc - sp.Matrix(P.f)                       # = A^T lambda*
+    lam = AD.T.LUsolve(sp.Matrix([R0[j] for j in dep]))
+    rows_M = [[P.dM[i * n + j] for j in range(n)] for i in range(n)]
+    rows_A = [[P.dA[r * n + i] for r in range(m)] for i in range(n)]   # A^T entries
+
+    def R_d(cols):
+        return sp.Matrix([[a - b - c for a, b, c in zip(
+            P.grad(rows_M[i], list(acc), cols), [P.df[i][x] for x in cols],
+            P.grad(rows_A[i], list(lam), cols), strict=True)] for i in range(n)])
+
+    def g_d(cols):
+        return sp.Matrix([[a - b for a, b in zip(
+            P.grad([P.dA[r * n + j] for j in range(n)], list(acc), cols),
+            [P.db[r][x] for x in cols], strict=True)] for r in range(m)])
+
+    Rq, Rv, Rw = R_d(nq), R_d(nu), R_d(nw)
+    gq, gv, gw = g_d(nq), g_d(nu), g_d(nw)
+    cq = sp.Matrix([[P.dc[r][x] for x in nq] for r in range(m)])
+    Vq = -dep_solve(cq)
+    Mlin = T.T * P.M * T
+    Clin = T.T * (Rv - P.M * dep_solve(gv)) * T
+    Kfull = T.T * (Rq + Rv * Vq - P.M * dep_solve(gq + gv * Vq))
+    Blin = -T.T * (Rw - P.M * dep_solve(gw)) if w else sp.zeros(k, 0)
+    if check:
+        res = [_simple(x) for x in T.T * R0]
+        rate = [_simple(x) for x in Kfull * sp.Matrix(rates)]
+        if not all(_vanishes(r, tol) for r in res + rate):
             moving = any(not _vanishes(r, 0.0) for r in rates)
             kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(
                 f"`about` is not {kind} of the reduced equations (u'* = 0 needs f_r = 0 "
-                f"and d f_r/dt = 0 along the motion): residual f_r(q*, u*) = {res}, its rate "
-                f"(df_r/dq) q'* = {res_rate}, at q* = {about_named}, q'* = {vel_named}.")
+                f"and d f_r/dt = 0 along the motion): residual f_r(q*, u*) = "
+                f"{[-x for x in res]}, its rate (df_r/dq) q'* = {[-x for x in rate]}, at "
+                f"q* = {about_named}, q'* = {vel_named}.")
+    K = _on_independent(eqs, Kfull, P, phi_rows, ind, dep, tol)
+    independent = tuple(eqs.coordinates[j] for j in ind)
+    return independent, Mlin, Clin, K, Blin, about_named, vel_named
+
+
+def _simple(x):
+    x = sp.sympify(x)
+    return x if x.is_number else sp.simplify(x)
+
+
+def _on_independent(eqs, Kfull, P, phi_rows, ind, dep, tol):
+    """K on the independent parameters: the holonomic dependent ones follow them (δq_H =
+    G δq_I), the nonholonomic dependent ones must not enter."""
+    n = len(eqs.coordinates)
+    k = Kfull.shape[0]
+    phi_q = sp.Matrix([[P.dphi[r][j] for j in range(n)] for r in range(len(phi_rows))]) \
+        if phi_rows else sp.zeros(0, n)
     hol = _holonomic_split(phi_q, dep)
     rest = [j for j in range(n) if j not in hol]
-    Jq = J[:, :n]
     if hol:
         G = -phi_q[:, hol].LUsolve(phi_q[:, rest])
-        Kq = Jq[:, rest] + Jq[:, hol] * G
+        Kq = Kfull[:, rest] + Kfull[:, hol] * G
     else:
-        Kq = Jq[:, rest]
-    free = [j for j in rest if j not in ind]
+        Kq = Kfull[:, rest]
+    names = eqs.names
     for col, j in enumerate(rest):
-        if j in free and not all(_vanishes(Kq[i, col], tol) for i in range(k)):
+        if j not in ind and not all(_vanishes(_simple(Kq[i, col]), tol) for i in range(k)):
             raise ArgumentError(
                 f"the reduced equations depend on {names[j]} at the reference state, a "
                 f"parameter whose rate is fixed by a nonholonomic constraint: it cannot be "
                 f"left out of the linear system on the independent parameters "
-                f"{[str(c) for c in red.independent]}. Linearise about a state where they "
-                "are invariant under its change, or choose other `independent` ones.")
-    order = [rest.index(j) for j in ind]
-    K = -Kq[:, order]
-    C = -J[:, n:n + k]
-    B = J[:, n + k:]
-    return red, M0, C, K, B, about_named, vel_named
+                f"{[names[i] for i in ind]}. Linearise about a state where they are "
+                "invariant under its change, or choose other `independent` ones.")
+    return Kq[:, [rest.index(j) for j in ind]]

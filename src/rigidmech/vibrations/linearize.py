@@ -400,7 +400,7 @@ def _constrained(eqs, about, velocities, w, w_star, point, *, check, tol, simpli
 
     norm = normalise(eqs)
     extra = {k: v for k, v in point.items() if k in set(eqs.parameters)}
-    red, M0, C, K, B, about_named, vel_named = linearize_constrained(
+    independent, M0, C, K, B, about_named, vel_named = linearize_constrained(
         eqs, about, velocities, w, w_star, extra, check=check, tol=tol,
         independent=independent, values_of=_values, normalise=lambda e: norm)
     if check:
@@ -410,7 +410,7 @@ def _constrained(eqs, about, velocities, w, w_star, point, *, check, tol, simpli
         simplify = k <= 4
     post = sp.simplify if simplify else (lambda x: x)
     M, C, K, B = (sp.ImmutableMatrix(X).applyfunc(post) for X in (M0, C, K, B))
-    return LinearSystem(red.independent, about_named, vel_named, M, C, K, B, w)
+    return LinearSystem(independent, about_named, vel_named, M, C, K, B, w)
 
 
 def _check_mass(M0, about):
