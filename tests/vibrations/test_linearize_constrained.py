@@ -76,9 +76,11 @@ def test_reduced_rolling_disc_matches_the_multiplier_form_and_kanes_method(disc)
     reduced = red.rhs(m=M_, g=G_, r=R_)
     full = eqs.rhs(m=M_, g=G_, r=R_)
     rng = np.random.default_rng(5)
-    for _ in range(10):
+    for trial in range(11):
         qv = rng.uniform(-3, 3, 5)
         qv[3] = rng.uniform(0.2, np.pi - 0.2)
+        if trial == 10:                                 # upright, heading along x
+            qv = np.array([0.0, 0.0, 0.0, np.pi / 2, 0.0])
         w = rng.uniform(-3, 3, 3)                       # psi', theta', phi'
         y = reduced(0.0, np.concatenate([qv, w]))
         qd, acc = y[:5], y[5:]

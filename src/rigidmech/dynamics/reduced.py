@@ -32,8 +32,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from .._core.compile import compile_linear_solve
-from .._core.errors import ArgumentError
+from .._core.errors import ArgumentError, SingularMassMatrixError
 from .._core.symbolic import xreplace_shared
 from ..vectors import t as _t
 
@@ -132,22 +131,15 @@ class ReducedEquations:
         parameter, u_I for the independent rates (for the analyses built on this form)."""
         return self._plain
 
-    def _speeds(self):
-        """q' as expressions of the plain q and u_I: independent rates, then the dependent
-        rates in their places."""
-        q_s, uI_s, uD, _, _, _ = self._plain
-        rates = [None] * len(q_s)
-        for k, c in enumerate(self.coordinates):
-            if c in self.independent:
-                rates[k] = uI_s[self.independent.index(c)]
-            else:
-                rates[k] = uD[self.dependent.index(c)]
-        return rates
-
     def rhs(self, **params):
         """First-order right-hand side ``f(t, y)``, y = (q (n values), u (n - m independent
-        rates)) -> (q', u'), compiled once. ``params``: values of the parameters of the
+        rates)) -> (q', u'), for one state. ``params``: values of the parameters of the
         equations (numbers) and of their inputs (numbers or callables of t).
+
+        M, f, A, a and b are compiled once; each evaluation solves the constraints for the
+        dependent rates and accelerations and forms M_r and f_r numerically (the symbolic
+        :attr:`mass_matrix` and :attr:`forcing` may have removable 0/0 at special states,
+        the numbers do not); a block A_D singular at the state is reported.
 
         Examples
         --------
@@ -176,39 +168,57 @@ class ReducedEquations:
         """
         eqs = self.equations
         values, inputs, notes = eqs._values(params)
-        solve = self._solver()
-        rates = self._rates_function()
+        geometry, dynamics = self._compiled()
         n = len(self.coordinates)
-        vals = list(values)
+        ind = [self.coordinates.index(c) for c in self.independent]
+        dep = [self.coordinates.index(c) for c in self.dependent]
+        m = len(dep)
 
         def fun(t, y):
             w = [v(t) if callable(v) else v for v in inputs]
-            q, u = y[:n], y[n:]
-            acc = solve(t, q, u, *vals, *w)
-            return np.concatenate((rates(t, q, u, *vals, *w), acc), axis=0)
+            q, u = np.asarray(y[:n], dtype=float), np.asarray(y[n:], dtype=float)
+            A, a = geometry(t, q, *values, *w)
+            A = np.asarray(A, dtype=float).reshape(m, n)
+            AD = A[:, dep]
+            try:
+                sol = np.linalg.solve(AD, np.column_stack(
+                    [-A[:, ind], -(A[:, ind] @ u + np.asarray(a, dtype=float).ravel())]))
+            except np.linalg.LinAlgError:
+                raise SingularMassMatrixError(
+                    f"the constraints cannot be solved for the rates of "
+                    f"{[str(c) for c in self.dependent]} at t = {t}, q = {q.tolist()}: "
+                    "their Jacobian block is singular there.") from None
+            v = np.empty(n)
+            v[ind], v[dep] = u, sol[:, -1]
+            M, f, b = dynamics(t, q, v, *values, *w)
+            M = np.asarray(M, dtype=float).reshape(n, n)
+            T = np.zeros((n, len(ind)))
+            T[ind, range(len(ind))] = 1.0
+            T[dep] = sol[:, :-1]
+            cD = np.linalg.solve(AD, np.asarray(b, dtype=float).ravel())
+            Mr = T.T @ M @ T
+            fr = T.T @ (np.asarray(f, dtype=float).ravel() - M[:, dep] @ cD)
+            return np.concatenate((v, np.linalg.solve(Mr, fr)))
 
         fun.notes = notes
         return fun
 
-    def _args(self):
-        q_s, uI_s, _, _, _, _ = self._plain
-        w_s = self.equations._stand_ins()[3]
-        return [_t, list(q_s), list(uI_s), *self.equations.parameters, *w_s]
-
-    def _solver(self):
-        if "solver" not in self._cache:
-            _, _, _, _, Mr, fr = self._plain
-            self._cache["solver"] = compile_linear_solve(
-                Mr, fr, self._args(), symmetric=True, name="reduced_accelerations")
-        return self._cache["solver"]
-
-    def _rates_function(self):
-        if "rates" not in self._cache:
+    def _compiled(self):
+        if "compiled" not in self._cache:
             from .._core.compile import compile_expressions
 
-            f = compile_expressions(self._speeds(), self._args(), name="rates")
-            self._cache["rates"] = lambda *a: np.asarray(f(*a), dtype=float).reshape(-1)
-        return self._cache["rates"]
+            eqs = self.equations
+            q_s, u_s, w_s, _, M, f = eqs._symbolic()
+            A, b, vel = plain_constraints(eqs)
+            a = vel.xreplace({u: 0 for u in u_s})
+            params = [*eqs.parameters, *w_s]
+            geometry = compile_expressions((list(A), list(a)), [_t, list(q_s), *params],
+                                           name="constraint_jacobian")
+            dynamics = compile_expressions((list(M), list(f), list(b)),
+                                           [_t, list(q_s), list(u_s), *params],
+                                           name="mass_forcing_bias")
+            self._cache["compiled"] = (geometry, dynamics)
+        return self._cache["compiled"]
 
     def __repr__(self):
         return (f"ReducedEquations(independent={list(self.independent)}, "

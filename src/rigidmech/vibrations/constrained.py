@@ -1,25 +1,68 @@
 """Linearisation of constrained equations of motion: closed loops and rolling (book, ch. 25.3,
 25.4).
 
-The equations M q'' = f + A^T λ, A q'' = b are first reduced to the independent speeds
-u = q'_I, :math:`M_r u' = f_r(q, u)` (:mod:`rigidmech.dynamics.reduced`: multipliers and
-dependent rates eliminated), then linearised about a reference state (q*, u*) with u'* = 0:
+The equations :math:`M q'' = f + A^T \\lambda`, :math:`A q'' = b` (velocity constraints
+:math:`c = A q' + a = 0`) are linearised on the **independent speeds** u = q'_I (the reduced
+form :math:`T^T (M q'' - f) = 0` of :mod:`rigidmech.dynamics.reduced`, T the partial
+velocities), about a reference state (q*, u*) with u'* = 0. Everything is taken at the point,
+from the values and first derivatives of M, f, A, b and c there (one pass over the
+expressions), never from the symbolic reduction (whose expressions can have removable 0/0 at
+special states):
 
-* the dependent parameters of the **holonomic** constraints follow the independent ones to
-  first order, :math:`\\Phi_q\\,\\delta q = 0`, so
-  :math:`\\delta q_H = G\\,\\delta q_I,\\ G = -\\Phi_{q_H}^{-1}\\Phi_{q_I}`, and
-  :math:`K = -(\\partial f_r/\\partial q_I + \\partial f_r/\\partial q_H\\, G)`;
-* the dependent parameters of the **nonholonomic** constraints (the position of a rolling
-  disc's contact point) are not functions of the others; the reduced equations must not
-  depend on them at the reference state (they do not when the system is invariant under
-  their change, as a disc on a horizontal plane under a translation) and they leave the
-  linear system;
-* :math:`C = -\\partial f_r/\\partial u`, :math:`B = \\partial f_r/\\partial w`, M = M_r(q*).
+* the multipliers of the reference state, :math:`A^T \\lambda^* = M q''^* - f`, where
+  :math:`q''^*` has :math:`q''_I = 0` and :math:`q''_D = A_D^{-1} b`; the derivative of T
+  enters only through them, since :math:`\\delta T^T A^T \\lambda^* =
+  -T^T \\delta A^T \\lambda^*` (from A T = 0);
+* the dependent rates and accelerations follow the constraints to first order:
+  :math:`A\\,\\delta q' = -c_q\\,\\delta q` and
+  :math:`A\\,\\delta q'' = \\delta b - \\delta A\\, q''^*`;
+* the dependent parameters of the **holonomic** constraints follow the independent ones,
+  :math:`\\Phi_q\\,\\delta q = 0`; those of the **nonholonomic** ones (the position of a
+  rolling disc's contact point) are not functions of the others: the equations must not depend
+  on them at the reference state (they do not when the system is invariant under their change,
+  as a disc on a horizontal plane under a translation) and they leave the linear system.
 
-The result is M δq_I'' + C δq_I' + K δq_I = B δw on the independent parameters. The reference
-state must satisfy the constraints (Φ(q*) = 0, A q'* + a = 0) and be an equilibrium or a
-steady motion: f_r(q*, u*) = 0 and, the coordinates moving at the rates q'*, the rate of
-change of f_r along the motion, :math:`(\\partial f_r/\\partial q)\\, q'^*`, is zero too.
+The result is :math:`M\\,\\delta q_I'' + C\\,\\delta q_I' + K\\,\\delta q_I = B\\,\\delta w`
+on the independent parameters, M = T^T M T. The reference state must satisfy the constraints
+(Φ(q*) = 0, and the rates given for dependent parameters must be the ones the constraints
+give) and be an equilibrium or a steady motion: the reduced residual
+:math:`T^T (M q''^* - f)` vanishes, and so does its rate along the motion (the coordinates
+moving at q'*).
+
+Examples
+--------
+A thin disc rolling upright (θ = π/2) at the spin rate Ω: the gyroscopic terms in C, the
+gravity in K (heading ψ, lean θ, spin φ; the contact point's x, y eliminated):
+
+>>> import sympy as sp
+>>> import rigidmech as rm
+>>> from rigidmech.kinematics import Contact
+>>> from rigidmech.vibrations import linearize
+>>> x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
+>>> m, g, r = rm.constants("m g r", positive=True)
+>>> R0 = rm.Frame("R0"); A = R0.rotated("A", about=R0.k, angle=psi)
+>>> B = A.rotated("B", about=A.i, angle=th); I = R0.point("I", x, y, 0)
+>>> G = I.moved("G", r * B.j); D = B.rotated("D", about=B.k, angle=phi, origin=G)
+>>> disc = rm.Body("disc", frame=D, mass=m, centre=G,
+...                inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
+>>> s = rm.System(galilean=R0)
+>>> s.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I, normal=R0.k)))
+>>> s.act(rm.gravity(-g * R0.k))
+>>> Om = sp.Symbol("Omega")
+>>> lin = linearize(s.equations_of_motion(), about={"theta": sp.pi / 2},
+...                 velocities={"phi": Om})
+>>> lin.coordinates
+(psi(t), theta(t), phi(t))
+>>> lin.C
+Matrix([
+[                0, -Omega*m*r**2/2, 0],
+[3*Omega*m*r**2/2,               0, 0],
+[                0,               0, 0]])
+>>> lin.K
+Matrix([
+[0,      0, 0],
+[0, -g*m*r, 0],
+[0,      0, 0]])
 """
 
 from __future__ import annotations

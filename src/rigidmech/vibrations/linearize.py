@@ -16,8 +16,9 @@ first-order form for x = (δq, δq') is :math:`\\dot x = A x + B_1 w` with
 
 The derivatives are taken at the point in one pass over the expression DAG (values and
 gradients together), so M, C, K, B come out symbolic in the parameters without differentiating
-the full expressions. Equations with rolling (nonholonomic) constraints must have them
-eliminated first: this module linearises M(q) q'' = f(q, q', t) as given.
+the full expressions. Equations with constraints (closed loops, rolling, gears: M q'' = f +
+A^T λ) are linearised on their independent speeds, the multipliers and the dependent
+parameters eliminated (:mod:`rigidmech.vibrations.constrained`).
 """
 
 from __future__ import annotations
