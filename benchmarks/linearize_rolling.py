@@ -32,7 +32,6 @@ VALUES = {"m": 1.3, "g": 9.81, "r": 0.7, "Omega": -3.0}
 
 
 def case_ours():
-    import numpy as np
     import sympy as sp
 
     import rigidmech as rm

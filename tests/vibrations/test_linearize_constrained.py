@@ -158,6 +158,11 @@ def test_rolling_disc_upright_steady_motion_matrices(disc):
     assert lin.K == sp.diag(0, -m * g * r, 0)
     # the rolling speed follows from the constraints: x' = -r Omega
     assert lin.velocities["x"] == -r * Om and lin.velocities["y"] == 0
+    # the independent rates alone, as a sequence (psi', theta', phi'): the same system
+    again = linearize(eqs, about={"theta": sp.pi / 2}, velocities=[0, 0, Om])
+    assert (again.M, again.C, again.K) == (lin.M, lin.C, lin.K)
+    with pytest.raises(ArgumentError, match=r"`velocities` must give 5 rates \(or the 3"):
+        linearize(eqs, about={"theta": sp.pi / 2}, velocities=[0, Om])
 
 
 @pytest.mark.parametrize("v", [0.3, 1.2, 1.5, 1.52, 1.54, 2.0, 5.0])

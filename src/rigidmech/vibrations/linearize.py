@@ -345,7 +345,9 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     norm = normalise(eqs)
     n = len(norm.q)
     q_star = _values(about, norm, "about")
-    u_star = _values(velocities, norm, "velocities")
+    constrained = eqs.constraints is not None and len(eqs.constraints) > 0
+    # with constraints, the rates may be the independent ones only (checked there)
+    u_star = _values(None if constrained else velocities, norm, "velocities")
     w = _input_symbols(inputs, eqs)
     w_star = [sp.sympify((input_values or {}).get(s.name, (input_values or {}).get(s, 0)))
               for s in w]
@@ -359,9 +361,9 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
             raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                                 f"{sorted(by_name)}.")
         point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
-    if eqs.constraints is not None and len(eqs.constraints):
-        return _constrained(eqs, about, velocities, w, w_star, point, check=check, tol=tol,
-                            simplify=simplify, independent=independent)
+    if constrained:
+        return _constrained(eqs, norm, about, velocities, w, w_star, point, check=check,
+                            tol=tol, simplify=simplify, independent=independent)
     if independent is not None:
         raise ArgumentError("`independent` applies to equations with constraints only; "
                             "these have none.")
@@ -395,11 +397,10 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     return LinearSystem(eqs.coordinates, about_named, vel_named, M, C, K, B, w)
 
 
-def _constrained(eqs, about, velocities, w, w_star, point, *, check, tol, simplify,
+def _constrained(eqs, norm, about, velocities, w, w_star, point, *, check, tol, simplify,
                  independent):
     from .constrained import linearize_constrained
 
-    norm = normalise(eqs)
     extra = {k: v for k, v in point.items() if k in set(eqs.parameters)}
     independent, M0, C, K, B, about_named, vel_named = linearize_constrained(
         eqs, about, velocities, w, w_star, extra, check=check, tol=tol,
