@@ -49,11 +49,14 @@ class LinearSystem:
     Attributes
     ----------
     coordinates : tuple
-        The parameters of situation q(t) of the equations, in order.
+        The parameters of situation q(t) of the equations, in order; for equations with
+        constraints, the independent ones (the rows of M, C, K).
     about : dict
-        Name of each coordinate -> its value ``q*`` at the reference state.
+        Name of each coordinate (every one, dependent ones included) -> its value ``q*`` at
+        the reference state.
     velocities : dict
-        Name -> ``q'*`` (zero for an equilibrium).
+        Name -> ``q'*`` (zero for an equilibrium; for equations with constraints the
+        dependent rates are the ones the constraints give).
     M, C, K : sympy.ImmutableMatrix (n, n)
     B : sympy.ImmutableMatrix (n, p)
         One column per input.
