@@ -4,9 +4,9 @@
 The equations :math:`M q'' = f + A^T \\lambda`, :math:`A q'' = b` (velocity constraints
 :math:`c = A q' + a = 0`) are linearised on the **independent speeds** u = q'_I (the reduced
 form :math:`T^T (M q'' - f) = 0` of :mod:`rigidmech.dynamics.reduced`, T the partial
-velocities), about a reference state (q*, u*) with u'* = 0. Everything is taken at the point,
-from the values and first derivatives of M, f, A, b and c there (one pass over the
-expressions), never from the symbolic reduction (whose expressions can have removable 0/0 at
+velocities), about a reference state ``(q*, u*)`` with ``u'* = 0``. Everything is taken
+at the point, from the values and first derivatives of M, f, A, b and c there (one pass over
+the expressions), never from the symbolic reduction (whose expressions can have removable 0/0 at
 special states):
 
 * the multipliers of the reference state, :math:`A^T \\lambda^* = M q''^* - f`, where
@@ -24,10 +24,10 @@ special states):
 
 The result is :math:`M\\,\\delta q_I'' + C\\,\\delta q_I' + K\\,\\delta q_I = B\\,\\delta w`
 on the independent parameters, M = T^T M T. The reference state must satisfy the constraints
-(Φ(q*) = 0, and the rates given for dependent parameters must be the ones the constraints
+(``Φ(q*) = 0``, and the rates given for dependent parameters must be the ones the constraints
 give) and be an equilibrium or a steady motion: the reduced residual
 :math:`T^T (M q''^* - f)` vanishes, and so does its rate along the motion (the coordinates
-moving at q'*).
+moving at ``q'*``).
 
 Examples
 --------
