@@ -260,3 +260,34 @@ def test_wrong_independent_coordinates_are_refused(disc, bar4):
         sleeping_top().reduced()
     with pytest.raises(ArgumentError, match=r"`independent` applies to equations with"):
         linearize(sleeping_top(), independent=["alpha"])
+
+
+def test_gear_pair_turning_freely_is_a_steady_motion_with_the_reduced_inertia():
+    """Two gears in mesh (ratio lambda = -z1/z2 = -1/2), no torque: turning at any constant
+    rate is a steady motion; the linear system on q1 has the reduced inertia J1 + lambda^2 J2
+    (power theorem) and no stiffness."""
+    from rigidmech.kinematics import Gear, GearPair
+
+    q1, q2 = rm.coordinates("q1 q2")
+    J1, J2 = rm.constants("J1 J2", positive=True)
+    R0 = rm.Frame("R0")
+    G1 = R0.rotated("G1", about=R0.k, angle=q1)
+    G2 = R0.rotated("G2", about=R0.k, angle=q2, origin=R0.point("O2", 60, 0, 0))
+    b1 = rm.Body("g1", frame=G1, mass=1,
+                 inertia=rm.inertia.disk(1, sp.sqrt(2 * J1), axis=G1.k, centre=G1.origin))
+    b2 = rm.Body("g2", frame=G2, mass=1,
+                 inertia=rm.inertia.disk(1, sp.sqrt(2 * J2), axis=G2.k, centre=G2.origin))
+    s = rm.System(galilean=R0)
+    s.connect(R0, b1, rm.joints.Pivot(at=G1.origin, axis=R0.k))
+    s.connect(R0, b2, rm.joints.Pivot(at=G2.origin, axis=R0.k))
+    pair = GearPair(Gear(20, 2), Gear(40, 2))
+    s.connect(b1, b2, rm.actions.GearMesh(pair, b1, b2, carrier=R0, axis=R0.k))
+    eqs = s.equations_of_motion()
+    w = sp.Symbol("w")
+    lin = linearize(eqs, velocities={"q1": w}, independent=[q1])
+    lam = pair.ratio
+    assert sp.simplify(lin.M[0] - (J1 + lam**2 * J2)) == 0
+    assert lin.K == sp.zeros(1, 1) and lin.C == sp.zeros(1, 1)
+    assert sp.simplify(lin.velocities["q2"] - lam * w) == 0
+    with pytest.raises(ArgumentError, match=r"`velocities` violate the constraints: residual"):
+        linearize(eqs, velocities={"q1": 1, "q2": 1}, independent=[q1])
