@@ -12,3 +12,6 @@ from .assembly import assemble  # noqa: E402
 from .constraints import Constraints  # noqa: E402
 
 __all__ += ["Constraints", "assemble"]
+from .reduced import ReducedEquations, reduce_equations  # noqa: E402
+
+__all__ += ["ReducedEquations", "reduce_equations"]

@@ -415,6 +415,17 @@ class EquationsOfMotion:
         """The constraints between the coordinates (:class:`Constraints`), or None."""
         return self._constraints
 
+    def reduced(self, independent=None):
+        """The equations reduced to the independent speeds, M_r u' = f_r, constraint actions
+        and dependent rates eliminated (:func:`rigidmech.dynamics.reduced.reduce_equations`,
+        ch. 25.3): ``independent`` names the n - m coordinates whose rates are free."""
+        from .reduced import reduce_equations
+
+        key = ("reduced", None if independent is None else tuple(map(str, independent)))
+        if key not in self._cache:
+            self._cache[key] = reduce_equations(self, independent)
+        return self._cache[key]
+
     def _augmented(self):
         """The augmented matrix [[M, A^T], [A, 0]] and right-hand side [f; b_stabilized],
         with the stand-in symbols."""

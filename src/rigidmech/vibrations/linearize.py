@@ -16,8 +16,9 @@ first-order form for x = (δq, δq') is :math:`\\dot x = A x + B_1 w` with
 
 The derivatives are taken at the point in one pass over the expression DAG (values and
 gradients together), so M, C, K, B come out symbolic in the parameters without differentiating
-the full expressions. Equations with rolling (nonholonomic) constraints must have them
-eliminated first: this module linearises M(q) q'' = f(q, q', t) as given.
+the full expressions. Equations with constraints (closed loops, rolling, gears: M q'' = f +
+A^T λ) are linearised on their independent speeds, the multipliers and the dependent
+parameters eliminated (:mod:`rigidmech.vibrations.constrained`).
 """
 
 from __future__ import annotations
@@ -48,11 +49,14 @@ class LinearSystem:
     Attributes
     ----------
     coordinates : tuple
-        The parameters of situation q(t) of the equations, in order.
+        The parameters of situation q(t) of the equations, in order; for equations with
+        constraints, the independent ones (the rows of M, C, K).
     about : dict
-        Name of each coordinate -> its value ``q*`` at the reference state.
+        Name of each coordinate (every one, dependent ones included) -> its value ``q*`` at
+        the reference state.
     velocities : dict
-        Name -> ``q'*`` (zero for an equilibrium).
+        Name -> ``q'*`` (zero for an equilibrium; for equations with constraints the
+        dependent rates are the ones the constraints give).
     M, C, K : sympy.ImmutableMatrix (n, n)
     B : sympy.ImmutableMatrix (n, p)
         One column per input.
@@ -271,7 +275,8 @@ def _input_symbols(inputs, eqs):
 
 
 def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
-              parameters=None, check=True, tol=1e-9, simplify=None) -> LinearSystem:
+              parameters=None, check=True, tol=1e-9, simplify=None,
+              independent=None) -> LinearSystem:
     """Linearise equations of motion about an equilibrium or a steady motion (ch. 25.4).
 
     Parameters
@@ -298,6 +303,14 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
+    independent : sequence of coordinates (q(t) or names), optional
+        For equations with constraints (closed loops, rolling): the parameters whose rates
+        are the independent speeds (default: see
+        :func:`rigidmech.dynamics.reduce_equations`). The equations are reduced to them,
+        then linearised (:mod:`rigidmech.vibrations.constrained`): the LinearSystem's
+        coordinates are these parameters; ``about`` gives every coordinate (on the
+        constraints), ``velocities`` every rate or only the independent ones (the others
+        follow from the constraints).
 
     Returns
     -------
@@ -307,7 +320,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ------
     ArgumentError
         If the state is not an equilibrium / steady motion: the message gives the residual
-        ``f(q*, q'*)``.
+        ``f(q*, q'*)``; with constraints, if it violates them (the residual Φ(q*) or
+        A q'* + a), or if the reduced equations are not steady along it.
     SingularMassMatrixError
         If ``M(q*)`` is singular.
 
@@ -334,7 +348,9 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     norm = normalise(eqs)
     n = len(norm.q)
     q_star = _values(about, norm, "about")
-    u_star = _values(velocities, norm, "velocities")
+    constrained = eqs.constraints is not None and len(eqs.constraints) > 0
+    # with constraints, the rates may be the independent ones only (checked there)
+    u_star = _values(None if constrained else velocities, norm, "velocities")
     w = _input_symbols(inputs, eqs)
     w_star = [sp.sympify((input_values or {}).get(s.name, (input_values or {}).get(s, 0)))
               for s in w]
@@ -348,6 +364,12 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
             raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                                 f"{sorted(by_name)}.")
         point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
+    if constrained:
+        return _constrained(eqs, norm, about, velocities, w, w_star, point, check=check,
+                            tol=tol, simplify=simplify, independent=independent)
+    if independent is not None:
+        raise ArgumentError("`independent` applies to equations with constraints only; "
+                            "these have none.")
     variables = list(norm.q) + list(norm.u) + w
     f_values, jac = values_and_jacobian(list(norm.f), point, variables)
     M0 = sp.ImmutableMatrix(n, n, values_and_jacobian(list(norm.M), point, [])[0])
@@ -376,6 +398,24 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     B = sp.ImmutableMatrix(n, len(w), lambda i, j: post(jac[i][2 * n + j]))
     M = M0.applyfunc(post)
     return LinearSystem(eqs.coordinates, about_named, vel_named, M, C, K, B, w)
+
+
+def _constrained(eqs, norm, about, velocities, w, w_star, point, *, check, tol, simplify,
+                 independent):
+    from .constrained import linearize_constrained
+
+    extra = {k: v for k, v in point.items() if k in set(eqs.parameters)}
+    independent, M0, C, K, B, about_named, vel_named = linearize_constrained(
+        eqs, about, velocities, w, w_star, extra, check=check, tol=tol,
+        independent=independent, values_of=_values, normalise=lambda e: norm)
+    if check:
+        _check_mass(M0, about_named)
+    k = M0.shape[0]
+    if simplify is None:
+        simplify = k <= 4
+    post = sp.simplify if simplify else (lambda x: x)
+    M, C, K, B = (sp.ImmutableMatrix(X).applyfunc(post) for X in (M0, C, K, B))
+    return LinearSystem(independent, about_named, vel_named, M, C, K, B, w)
 
 
 def _check_mass(M0, about):

@@ -1,0 +1,128 @@
+"""The Whipple bicycle benchmark (Meijaard, Papadopoulos, Ruina and Schwab 2007, Proc. R. Soc.
+A 463): a rear frame, a front frame (fork and handlebar) on a tilted steer axis, two knife-edge
+wheels rolling without slipping on a horizontal plane. Linearised about the straight upright
+run at speed v, the equations on (roll phi, steer delta) are
+M q'' + v C1 q' + (g K0 + v^2 K2) q = 0 with the matrices published in the paper (its
+benchmark parameters, g = 9.81 m/s^2). Posed here with a System: eight parameters (rear
+contact x, y, yaw psi, roll phi, pitch theta, steer delta, wheel angles theta_R, theta_F),
+four rolling conditions and the front contact (a loop closed by a point contact), reduced to
+the independent speeds (phi', delta', theta_R') and linearised with the pitch eliminated.
+
+Conventions: x forward, y to the left, z up (the paper: y right, z down). The roll angle has
+the same sense, the steer angle the opposite one (its axis points up here), so the paper's
+matrices compare after S = diag(1, -1): M = S M_paper S.
+"""
+
+import numpy as np
+import pytest
+import scipy.optimize
+import sympy as sp
+
+import rigidmech as rm
+from rigidmech.kinematics import Contact
+from rigidmech.vibrations import linearize
+
+# Meijaard et al. (2007), benchmark matrices (eq. (A 3)-(A 5) values of the paper)
+M_PAPER = np.array([[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]])
+C1_PAPER = np.array([[0.0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]])
+K0_PAPER = np.array([[-80.95, -2.59951685249872], [-2.59951685249872, -0.80329488458618]])
+K2_PAPER = np.array([[0.0, 76.59734589573222], [0.0, 2.65431523794604]])
+S = np.diag([1.0, -1.0])
+G = 9.81
+
+
+def Q(x):
+    return sp.Rational(str(x))
+
+
+def whipple_bicycle():
+    x, y, psi, phi, th, dl, thr, thf = rm.coordinates(
+        "x y psi phi theta delta theta_R theta_F")
+    g = rm.constants("g", positive=True)
+    w, c, lam = Q(1.02), Q(0.08), sp.pi / 10               # wheelbase, trail, steer tilt
+    rR, mR, IRxx, IRyy = Q(0.3), Q(2), Q(0.0603), Q(0.12)
+    rF, mF, IFxx, IFyy = Q(0.35), Q(3), Q(0.1405), Q(0.28)
+    R0 = rm.Frame("R0")
+    A = R0.rotated("A", about=R0.k, angle=psi)              # yaw
+    Bf = A.rotated("Bf", about=A.i, angle=phi)              # roll
+    P = R0.point("P", x, y, 0)                               # rear contact
+    Cr = P.moved("Cr", rR * Bf.k)
+    E = Bf.rotated("E", about=Bf.j, angle=th, origin=Cr)    # pitch: the rear frame
+    RW = Bf.rotated("RW", about=Bf.j, angle=thr, origin=Cr)
+    S0 = Cr.moved("S0", (w + c) * E.i - rR * E.k)           # steer axis meets the ground
+    E2 = E.rotated("E2", about=E.j, angle=-lam, origin=S0)  # E2.k along the steer axis
+    H = E2.rotated("H", about=E2.k, angle=dl, origin=S0)    # steer
+    HE = H.rotated("HE", about=H.j, angle=lam, origin=S0)   # the front frame, E's basis at 0
+    Cf = S0.moved("Cf", -c * HE.i + rF * HE.k)
+    FW = HE.rotated("FW", about=HE.j, angle=thf, origin=Cf)
+    GB = Cr.moved("GB", Q(0.3) * E.i + Q(0.6) * E.k)
+    GH = S0.moved("GH", (Q(0.9) - w - c) * HE.i + Q(0.7) * HE.k)
+    axle = HE.j
+    down = axle.cross(R0.k.cross(axle))
+    PF = Cf.moved("PF", -rF * down / sp.sqrt(1 - axle.dot(R0.k) ** 2))   # front contact
+    op = rm.InertiaOperator.from_products
+    rear = rm.Body("rear_wheel", frame=RW, mass=mR, centre=Cr, inertia=op(IRxx, IRyy, IRxx,
+                                                                          frame=RW))
+    front = rm.Body("front_wheel", frame=FW, mass=mF, centre=Cf, inertia=op(IFxx, IFyy, IFxx,
+                                                                            frame=FW))
+    # products: the paper's I_xz in (x, y right, z down) is -int x z; z up flips its sign
+    body = rm.Body("rear_frame", frame=E, mass=85, centre=GB,
+                   inertia=op(Q(9.2), 11, Q(2.8), 0, Q(2.4), 0, frame=E, at=GB))
+    fork = rm.Body("front_frame", frame=HE, mass=4, centre=GH,
+                   inertia=op(Q(0.05892), Q(0.06), Q(0.00708), 0, -Q(0.00756), 0, frame=HE,
+                              at=GH))
+    s = rm.System(galilean=R0)
+    s.connect(R0, rear, rm.actions.RollingContact(Contact(RW, R0, at=P, normal=R0.k)))
+    s.connect(rear, body, rm.joints.Pivot(at=Cr, axis=E.j))
+    s.connect(body, fork, rm.joints.Pivot(at=S0, axis=E2.k))
+    s.connect(fork, front, rm.joints.Pivot(at=Cf, axis=HE.j))
+    s.connect(R0, front, rm.actions.RollingContact(Contact(FW, R0, at=PF, normal=R0.k)))
+    s.connect(R0, front, rm.joints.PointContact(at=R0.origin, normal=R0.k), meets=PF)
+    s.act(rm.gravity(-g * R0.k))
+    return s.equations_of_motion(), rR
+
+
+def _critical_speeds(M, C1, K0, K2):
+    def eig(v):
+        Mi = np.linalg.inv(M)
+        A = np.block([[np.zeros((2, 2)), np.eye(2)], [-Mi @ (G * K0 + v**2 * K2), -v * Mi @ C1]])
+        return np.linalg.eigvals(A)
+
+    def weave(v):
+        ev = eig(v)
+        return ev[np.abs(ev.imag) > 1e-6].real.max()
+
+    def capsize(v):
+        ev = eig(v)
+        return ev[np.abs(ev.imag) < 1e-9].real.max()
+
+    return (scipy.optimize.brentq(weave, 4.0, 4.5, xtol=1e-14),
+            scipy.optimize.brentq(capsize, 5.5, 6.5, xtol=1e-14))
+
+
+@pytest.mark.slow
+def test_whipple_bicycle_benchmark_matrices_and_critical_speeds():
+    eqs, rR = whipple_bicycle()
+    assert len(eqs.constraints) == 5 and not eqs.constraints.holonomic
+    v = sp.Symbol("v")
+    lin = linearize(eqs, velocities={"theta_R": v / rR}, parameters={"g": G},
+                    independent=["phi", "delta", "theta_R"], simplify=False)
+    assert lin.velocities["x"] == v and lin.velocities["theta"] == 0
+    num = {k: np.array(X.xreplace({v: 1}).evalf().tolist(), dtype=float)
+           for k, X in (("M", lin.M), ("C", lin.C))}
+    K0 = np.array(lin.K.xreplace({v: 0}).evalf().tolist(), dtype=float)
+    K2 = np.array(lin.K.xreplace({v: 1}).evalf().tolist(), dtype=float) - K0
+    ours = [num["M"][:2, :2], num["C"][:2, :2], K0[:2, :2] / G, K2[:2, :2]]
+    for X, Y in zip(ours, (M_PAPER, C1_PAPER, K0_PAPER, K2_PAPER), strict=True):
+        np.testing.assert_allclose(X, S @ Y @ S, rtol=1e-11, atol=1e-11)
+    # the rear wheel's speed decouples: its equation is free of roll and steer
+    assert num["M"][2, 0] == num["M"][2, 1] == 0 and not np.any(num["C"][2]) and not np.any(K2[2])
+    weave, capsize = _critical_speeds(*ours)
+    paper_weave, paper_capsize = _critical_speeds(M_PAPER, C1_PAPER, K0_PAPER, K2_PAPER)
+    assert weave == pytest.approx(paper_weave, rel=1e-10)
+    assert capsize == pytest.approx(paper_capsize, rel=1e-10)
+    assert weave == pytest.approx(4.292, abs=5e-4) and capsize == pytest.approx(6.024, abs=5e-4)
+    # through the library's own eigenvalues: unstable weave just below, stable just above
+    assert lin.eigenvalues(v=weave - 0.01).real.max() > 1e-4
+    assert lin.eigenvalues(v=0.5 * (weave + capsize)).real.max() < 1e-9
+    assert lin.eigenvalues(v=capsize + 0.01).real.max() > 1e-5
