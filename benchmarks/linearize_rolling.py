@@ -35,7 +35,7 @@ def case_ours():
     import sympy as sp
 
     import rigidmech as rm
-    from rigidmech.kinematics import Contact
+    from rigidmech.kinematics import ContactKinematics
     from rigidmech.vibrations import linearize
 
     start = time.process_time()
@@ -50,7 +50,7 @@ def case_ours():
     disc = rm.Body("disc", frame=D, mass=m, centre=G,
                    inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
     s = rm.System(galilean=R0)
-    s.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I0, normal=R0.k)))
+    s.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I0, normal=R0.k)))
     s.act(rm.gravity(-g * R0.k))
     lin = linearize(s.equations_of_motion(), about={"theta": sp.pi / 2},
                     velocities={"phi": sp.Symbol("Omega")})

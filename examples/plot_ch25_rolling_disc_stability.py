@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech.kinematics import Contact
+from rigidmech.kinematics import ContactKinematics
 from rigidmech.vibrations import linearize
 
 x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
@@ -36,7 +36,7 @@ D = B.rotated("D", about=B.k, angle=phi, origin=G)     # spin
 disc = rm.Body("disc", frame=D, mass=m, centre=G,
                inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
 system = rm.System(galilean=R0)
-system.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I, normal=R0.k)))
+system.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I, normal=R0.k)))
 system.act(rm.gravity(-g * R0.k))
 eqs = system.equations_of_motion()
 

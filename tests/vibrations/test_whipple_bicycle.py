@@ -19,7 +19,7 @@ import scipy.optimize
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech.kinematics import Contact
+from rigidmech.kinematics import ContactKinematics
 from rigidmech.vibrations import linearize
 
 # Meijaard et al. (2007), benchmark matrices (eq. (A 3)-(A 5) values of the paper)
@@ -72,11 +72,11 @@ def whipple_bicycle():
                    inertia=op(Q(0.05892), Q(0.06), Q(0.00708), 0, -Q(0.00756), 0, frame=HE,
                               at=GH))
     s = rm.System(galilean=R0)
-    s.connect(R0, rear, rm.actions.RollingContact(Contact(RW, R0, at=P, normal=R0.k)))
+    s.connect(R0, rear, rm.actions.RollingContact(ContactKinematics(RW, R0, at=P, normal=R0.k)))
     s.connect(rear, body, rm.joints.Pivot(at=Cr, axis=E.j))
     s.connect(body, fork, rm.joints.Pivot(at=S0, axis=E2.k))
     s.connect(fork, front, rm.joints.Pivot(at=Cf, axis=HE.j))
-    s.connect(R0, front, rm.actions.RollingContact(Contact(FW, R0, at=PF, normal=R0.k)))
+    s.connect(R0, front, rm.actions.RollingContact(ContactKinematics(FW, R0, at=PF, normal=R0.k)))
     s.connect(R0, front, rm.joints.PointContact(at=R0.origin, normal=R0.k), meets=PF)
     s.act(rm.gravity(-g * R0.k))
     return s.equations_of_motion(), rR

@@ -36,7 +36,7 @@ gravity in K (heading ψ, lean θ, spin φ; the contact point's x, y eliminated)
 
 >>> import sympy as sp
 >>> import rigidmech as rm
->>> from rigidmech.kinematics import Contact
+>>> from rigidmech.kinematics import ContactKinematics
 >>> from rigidmech.vibrations import linearize
 >>> x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
 >>> m, g, r = rm.constants("m g r", positive=True)
@@ -46,7 +46,7 @@ gravity in K (heading ψ, lean θ, spin φ; the contact point's x, y eliminated)
 >>> disc = rm.Body("disc", frame=D, mass=m, centre=G,
 ...                inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
 >>> s = rm.System(galilean=R0)
->>> s.connect(R0, disc, rm.actions.RollingContact(Contact(D, R0, at=I, normal=R0.k)))
+>>> s.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I, normal=R0.k)))
 >>> s.act(rm.gravity(-g * R0.k))
 >>> Om = sp.Symbol("Omega")
 >>> lin = linearize(s.equations_of_motion(), about={"theta": sp.pi / 2},
