@@ -59,6 +59,9 @@ __all__ += ["Helical", "SphericalWithFinger", "PlanarSupport", "LinearAnnular",
 from .contacts import FrictionContact, GearMesh, RollingContact  # noqa: E402
 
 __all__ += ["RollingContact", "GearMesh", "FrictionContact"]
+from .knife_edge import KnifeEdge  # noqa: E402
+
+__all__ += ["KnifeEdge"]
 __all__ += ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
 
 from .._core.deprecation import deprecated_aliases  # noqa: E402

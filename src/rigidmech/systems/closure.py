@@ -27,7 +27,7 @@ row per condition, as ``(label, velocity, position)``:
   (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its
   position form would carry the relative angle, which the frames do not name); its
   multiplier is the axial force Z, with the couple N = -h Z of a perfect helical joint;
-* a **rolling contact** or a **gear mesh**: its velocity constraints
+* a **rolling contact**, a **gear mesh** or a **knife edge**: its velocity constraints
   (:class:`~rigidmech.kinematics.constraints.VelocityConstraint`), with their position form
   when they are holonomic (a wheel on a line, gears) and without one when they are not (a
   disc on a plane); the position form is only reported (its constant depends on the initial
@@ -192,6 +192,12 @@ def _rows(link, meets):
         return rows
     if hasattr(conn, "pitch_point"):
         return _gear_rows(link)
+    if callable(getattr(conn, "constraint_torsors", None)):
+        # a connection that gives, for each constraint, the action on the second solid a
+        # unit multiplier stands for (a knife edge): its opposite acts on the first
+        return [(f"{link.label}.{i + 1}", c.expression, None, [(second, T), (first, -T)])
+                for i, (c, T) in enumerate(zip(conn.velocity_constraints(),
+                                               conn.constraint_torsors(), strict=True))]
     if callable(getattr(conn, "velocity_constraints", None)):
         return [(f"{link.label}.{i + 1}", c.expression, None, None)
                 for i, c in enumerate(conn.velocity_constraints())]

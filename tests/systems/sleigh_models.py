@@ -1,0 +1,56 @@
+"""The Chaplygin sleigh shared by the tests: a body moving on a horizontal plane, its blade
+at the point P = G - a i1 along its axis i1 (G the mass centre), built with rigidmech and
+with sympy.physics.mechanics."""
+
+import sympy as sp
+import sympy.physics.mechanics as me
+
+import rigidmech as rm
+from rigidmech.dynamics import System
+
+
+def sleigh(a=None, *, gravity=True):
+    """Coordinates (x, y) of G and heading theta; a uniform disc of mass m and radius r in
+    the plane (moment of inertia J = m r^2 / 2 about the vertical through G); the blade at a
+    distance a behind G (a symbol unless given)."""
+    x, y, th = rm.coordinates("x y theta")
+    m, r, g = rm.constants("m r g", positive=True)
+    if a is None:
+        a = sp.Symbol("a", real=True)
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=th, origin=G)
+    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
+                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
+    s = System(galilean=R0)
+    knife = rm.actions.KnifeEdge(body, R0, at=G.moved("P", -a * R1.i), direction=R1.i,
+                                 normal=R0.k)
+    s.connect(R0, body, knife)
+    if gravity:
+        s.act(rm.gravity(-g * R0.k))
+    return s, (x, y, th), (m, r, g, a), knife
+
+
+def sleigh_kane():
+    """The same sleigh with KanesMethod: u_i = q_i' for (x, y, theta), the speed of y
+    dependent, the lateral condition as the velocity constraint."""
+    q = me.dynamicsymbols("x y theta")
+    u = me.dynamicsymbols("ux uy utheta")
+    x, y, th = q
+    m, r, g = sp.symbols("m r g", positive=True)
+    a = sp.Symbol("a", real=True)
+    N = me.ReferenceFrame("N")
+    B = N.orientnew("B", "Axis", (th, N.z))
+    B.set_ang_vel(N, u[2] * N.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", x * N.x + y * N.y)
+    G.set_vel(N, u[0] * N.x + u[1] * N.y)
+    P = G.locatenew("P", -a * B.x)
+    P.v2pt_theory(G, N, B)
+    body = me.RigidBody("sleigh", G, B, m, (me.inertia(B, m * r**2 / 4, m * r**2 / 4, m * r**2 / 2), G))
+    kane = me.KanesMethod(N, q_ind=list(q), u_ind=[u[0], u[2]], u_dependent=[u[1]],
+                          kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u, strict=True)],
+                          velocity_constraints=[P.vel(N).dot(B.y)])
+    kane.kanes_equations([body], [(G, -m * g * N.z)])
+    return kane, q, u, (m, r, g, a)
