@@ -48,7 +48,8 @@ def sleigh_kane():
     G.set_vel(N, u[0] * N.x + u[1] * N.y)
     P = G.locatenew("P", -a * B.x)
     P.v2pt_theory(G, N, B)
-    body = me.RigidBody("sleigh", G, B, m, (me.inertia(B, m * r**2 / 4, m * r**2 / 4, m * r**2 / 2), G))
+    inertia = me.inertia(B, m * r**2 / 4, m * r**2 / 4, m * r**2 / 2)
+    body = me.RigidBody("sleigh", G, B, m, (inertia, G))
     kane = me.KanesMethod(N, q_ind=list(q), u_ind=[u[0], u[2]], u_dependent=[u[1]],
                           kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u, strict=True)],
                           velocity_constraints=[P.vel(N).dot(B.y)])

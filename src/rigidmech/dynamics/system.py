@@ -288,9 +288,9 @@ class System(LinkedParameters):
           of ``parent`` and the point ``meets`` of ``child`` (default: the same point) must
           coincide along the directions the joint blocks. The equations of motion then carry
           Lagrange multipliers (:mod:`rigidmech.dynamics.constraints`).
-        * A :class:`~rigidmech.actions.RollingContact` or :class:`~rigidmech.actions.GearMesh`
-          adds its velocity constraints (holonomic or not) the same way; if ``child`` is new
-          its coordinates become this connection's.
+        * A :class:`~rigidmech.actions.RollingContact`, :class:`~rigidmech.actions.GearMesh`
+          or :class:`~rigidmech.actions.KnifeEdge` adds its velocity constraints (holonomic or
+          not) the same way; if ``child`` is new its coordinates become this connection's.
 
         Each parameter of situation belongs to one connection: the coordinates of the
         child's frame and mass centre that are not its parent's are those of this connection,
