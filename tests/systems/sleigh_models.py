@@ -55,3 +55,49 @@ def sleigh_kane():
                           velocity_constraints=[P.vel(N).dot(B.y)])
     kane.kanes_equations([body], [(G, -m * g * N.z)])
     return kane, q, u, (m, r, g, a)
+
+
+def sleigh_on_incline(beta):
+    """The sleigh on a plane inclined by beta about R0.i (normal Ri.k), gravity -g R0.k:
+    G = (x, y) in the plane's axes (Ri.i, Ri.j), heading theta about Ri.k, the blade a
+    behind G and b to its left (P = G - a i1 + b j1)."""
+    x, y, th = rm.coordinates("x y theta")
+    m, r, g = rm.constants("m r g", positive=True)
+    a, b = sp.symbols("a b", real=True)
+    R0 = rm.Frame("R0")
+    Ri = R0.rotated("Ri", about=R0.i, angle=beta)
+    G = R0.origin.moved("G", x * Ri.i + y * Ri.j)
+    R1 = Ri.rotated("R1", about=Ri.k, angle=th, origin=G)
+    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
+                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
+    s = System(galilean=R0)
+    s.connect(R0, body, rm.actions.KnifeEdge(body, R0, at=G.moved("P", -a * R1.i + b * R1.j),
+                                             direction=R1.i, normal=Ri.k))
+    s.act(rm.gravity(-g * R0.k))
+    return s, (x, y, th), (m, r, g, a, b)
+
+
+def sleigh_on_incline_kane(beta):
+    """The same with KanesMethod (u = q', the speed of y dependent)."""
+    q = me.dynamicsymbols("x y theta")
+    u = me.dynamicsymbols("ux uy utheta")
+    x, y, th = q
+    m, r, g = sp.symbols("m r g", positive=True)
+    a, b = sp.symbols("a b", real=True)
+    N = me.ReferenceFrame("N")
+    Ni = N.orientnew("Ni", "Axis", (beta, N.x))
+    B = Ni.orientnew("B", "Axis", (th, Ni.z))
+    B.set_ang_vel(N, u[2] * Ni.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", x * Ni.x + y * Ni.y)
+    G.set_vel(N, u[0] * Ni.x + u[1] * Ni.y)
+    P = G.locatenew("P", -a * B.x + b * B.y)
+    P.v2pt_theory(G, N, B)
+    inertia = me.inertia(B, m * r**2 / 4, m * r**2 / 4, m * r**2 / 2)
+    body = me.RigidBody("sleigh", G, B, m, (inertia, G))
+    kane = me.KanesMethod(N, q_ind=list(q), u_ind=[u[0], u[2]], u_dependent=[u[1]],
+                          kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u, strict=True)],
+                          velocity_constraints=[P.vel(N).dot(B.y)])
+    kane.kanes_equations([body], [(G, -m * g * N.z)])
+    return kane, q, u, (m, r, g, a, b)

@@ -23,7 +23,7 @@ omega = theta' its rate of turn; the condition v(P) . j1 = 0 gives v(G) . j1 = a
 import numpy as np
 import pytest
 import sympy as sp
-from sleigh_models import sleigh, sleigh_kane
+from sleigh_models import sleigh, sleigh_kane, sleigh_on_incline, sleigh_on_incline_kane
 
 import rigidmech as rm
 from rigidmech.errors import ArgumentError, ArgumentTypeError, ConnectionError_
@@ -64,6 +64,43 @@ def test_sleigh_matches_kanes_method(a):
                                    atol=1e-10)
         reduced = red(0.0, np.array([*qv, ux, w]))[3:]
         np.testing.assert_allclose(reduced, theirs[:2], rtol=1e-10, atol=1e-10)
+
+
+def test_sleigh_on_an_incline_matches_kanes_method():
+    # the plane's normal is not the vertical, gravity works, the blade's point is off the
+    # axis by b along l: b drops out of the condition (omega ^ b j1 is along the blade)
+    beta = 0.4
+    s, _, _ = sleigh_on_incline(beta)
+    assert [p.name for p in s.equations_of_motion().parameters] == ["a", "g", "m", "r"]
+    rhs = s.equations_of_motion().rhs(m=M, r=R, g=G_, a=A)
+    kane, q, u, (mk, rk, gk, ak, bk) = sleigh_on_incline_kane(beta)
+    sub = {mk: M, rk: R, gk: G_, ak: A, bk: 0.15}
+    MM = sp.lambdify(list(q) + list(u), kane.mass_matrix_full.subs(sub), "numpy")
+    FF = sp.lambdify(list(q) + list(u), kane.forcing_full.subs(sub), "numpy")
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        qv = rng.uniform(-2, 2, 3)
+        qv[2] = rng.uniform(-1.2, 1.2)
+        ux, w = rng.uniform(-3, 3, 2)
+        # v(P) . j1 = 0 with v(P) = v(G) + w k ^ (-a i1 + b j1) = v(G) - a w j1 - b w i1
+        uy = (A * w + np.sin(qv[2]) * ux) / np.cos(qv[2])
+        ours = rhs(0.0, np.array([*qv, ux, uy, w]))[3:]
+        theirs = np.linalg.solve(MM(*qv, ux, uy, w), FF(*qv, ux, uy, w)).ravel()[3:]
+        np.testing.assert_allclose(ours, [theirs[0], theirs[2], theirs[1]], rtol=1e-10,
+                                   atol=1e-10)
+
+
+def test_sleigh_on_an_incline_conserves_energy():
+    s, _, _ = sleigh_on_incline(0.4)
+    eqs = s.equations_of_motion()
+    th0, ux, w = 0.2, 1.0, 1.5
+    uy = (A * w + np.sin(th0) * ux) / np.cos(th0)
+    sim = eqs.simulate(t=(0, 4), q0={"x": 0.0, "y": 0.0, "theta": th0},
+                       u0={"x": ux, "y": uy, "theta": w}, m=M, r=R, g=G_, a=A,
+                       rtol=1e-11, atol=1e-12, n_output=201)
+    e = sim.energy()
+    assert np.ptp(e) < 1e-8 * np.max(np.abs(e))
+    assert np.ptp(sim.q[1]) > 0.5                    # it does slide down the slope
 
 
 def _forward_speed_and_rate(sim):
@@ -136,6 +173,9 @@ def test_lateral_action_is_mass_times_lateral_acceleration_of_the_centre():
     a_lat = -np.sin(th) * ax + np.cos(th) * ay
     np.testing.assert_allclose(lateral_action[5:-5], M * a_lat[5:-5], rtol=1e-5, atol=1e-6)
     assert np.max(np.abs(lateral_action)) > 0.1          # a real sideways force
+    # the same along the motion in one call, components in the sleigh's axes
+    comps = sim.connection_action(s.galilean, body, basis=R1)
+    np.testing.assert_allclose(comps["Y"], lateral_action, rtol=1e-12, atol=1e-12)
     # the blade transmits no couple about the vertical through P, nothing along the blade
     np.testing.assert_allclose(sim.evaluate(T.moment.dot(R1.k)), 0.0, atol=1e-9)
     np.testing.assert_allclose(sim.evaluate(T.resultant.dot(R1.i)), 0.0, atol=1e-9)

@@ -367,8 +367,7 @@ class Simulation:
                 raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
                                         f"{type(basis).__name__}.")
             torsor = system.connection_action(parent, child)
-            point = system.joint(child)[1].at
-            moment = torsor.moment_at(point)
+            moment = torsor.moment_at(torsor.point)   # at the connection's point
             keys = ["X", "Y", "Z", "L", "M", "N"]
             exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
         values = self.evaluate(sp.ImmutableMatrix(len(exprs), 1, exprs))
