@@ -101,3 +101,55 @@ def sleigh_on_incline_kane(beta):
                           velocity_constraints=[P.vel(N).dot(B.y)])
     kane.kanes_equations([body], [(G, -m * g * N.z)])
     return kane, q, u, (m, r, g, a, b)
+
+
+def sleigh_on_turntable():
+    """The sleigh on a turntable (a disc of mass M and radius R pivoted about R0.k, angle phi):
+    G = (x, y) in the table's axes, heading theta relative to the table, the blade a behind
+    G; the knife edge joins the table (a body) and the sleigh."""
+    phi, x, y, th = rm.coordinates("phi x y theta")
+    m, r, M, R = rm.constants("m r M R", positive=True)
+    a = sp.Symbol("a", real=True)
+    R0 = rm.Frame("R0")
+    Rt = R0.rotated("Rt", about=R0.k, angle=phi)
+    table = rm.Body("table", frame=Rt, mass=M, centre=Rt.origin,
+                    inertia=rm.inertia.disk(M, R, axis=Rt.k, centre=Rt.origin))
+    G = Rt.origin.moved("G", x * Rt.i + y * Rt.j)
+    R1 = Rt.rotated("R1", about=Rt.k, angle=th, origin=G)
+    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
+                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
+    s = System(galilean=R0)
+    s.connect(R0, table, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(table, body, rm.actions.KnifeEdge(body, table, at=G.moved("P", -a * R1.i),
+                                                direction=R1.i, normal=Rt.k))
+    return s, (phi, x, y, th), (m, r, M, R, a)
+
+
+def sleigh_on_turntable_kane():
+    """The same with KanesMethod: u = q' for (phi, x, y, theta), the speed of y dependent."""
+    q = me.dynamicsymbols("phi x y theta")
+    u = me.dynamicsymbols("uphi ux uy utheta")
+    phi, x, y, th = q
+    m, r, M, R = sp.symbols("m r M R", positive=True)
+    a = sp.Symbol("a", real=True)
+    kd = {qi.diff(): ui for qi, ui in zip(q, u, strict=True)}
+    N = me.ReferenceFrame("N")
+    T = N.orientnew("T", "Axis", (phi, N.z))
+    T.set_ang_vel(N, u[0] * N.z)
+    B = T.orientnew("B", "Axis", (th, T.z))
+    B.set_ang_vel(T, u[3] * T.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    G = O.locatenew("G", x * T.x + y * T.y)
+    G.set_vel(N, G.pos_from(O).dt(N).subs(kd))
+    # v(P in B/T) = v(G/T) + omega(B/T) ^ GP
+    vP_T = G.pos_from(O).dt(T).subs(kd) + (u[3] * T.z).cross(-a * B.x)
+    table = me.RigidBody("table", O, T, M, (me.inertia(T, M * R**2 / 4, M * R**2 / 4,
+                                                      M * R**2 / 2), O))
+    sleigh = me.RigidBody("sleigh", G, B, m, (me.inertia(B, m * r**2 / 4, m * r**2 / 4,
+                                                        m * r**2 / 2), G))
+    kane = me.KanesMethod(N, q_ind=list(q), u_ind=[u[0], u[1], u[3]], u_dependent=[u[2]],
+                          kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u, strict=True)],
+                          velocity_constraints=[vP_T.dot(B.y)])
+    kane.kanes_equations([table, sleigh], [])
+    return kane, q, u, (m, r, M, R, a)

@@ -17,13 +17,23 @@ omega = theta' its rate of turn; the condition v(P) . j1 = 0 gives v(G) . j1 = a
 
   (the sleigh ends moving straight ahead at the speed V). For a = 0 (blade at G): v and
   omega are constant, G runs on a circle of radius v0 / omega0 at constant speed;
-* Newton on the centre: T = m a(G) . j1 (only the blade pushes sideways).
+* Newton on the centre: T = m a(G) . j1 (only the blade pushes sideways);
+* the sleigh on an incline (gravity works, the plane's normal is not vertical) and on a
+  turntable pivoted about the vertical (the support is a body): KanesMethod again; on the
+  turntable the angular momentum about the axis and the kinetic energy are conserved.
 """
 
 import numpy as np
 import pytest
 import sympy as sp
-from sleigh_models import sleigh, sleigh_kane, sleigh_on_incline, sleigh_on_incline_kane
+from sleigh_models import (
+    sleigh,
+    sleigh_kane,
+    sleigh_on_incline,
+    sleigh_on_incline_kane,
+    sleigh_on_turntable,
+    sleigh_on_turntable_kane,
+)
 
 import rigidmech as rm
 from rigidmech.errors import ArgumentError, ArgumentTypeError, ConnectionError_
@@ -101,6 +111,56 @@ def test_sleigh_on_an_incline_conserves_energy():
     e = sim.energy()
     assert np.ptp(e) < 1e-8 * np.max(np.abs(e))
     assert np.ptp(sim.q[1]) > 0.5                    # it does slide down the slope
+
+
+def test_sleigh_on_a_turntable_matches_kanes_method():
+    # the support is a body: the condition is on the velocity relative to the table, and the
+    # multiplier's force acts on both (T l on the sleigh, -T l on the table)
+    s, _, _ = sleigh_on_turntable()
+    vals = {"m": M, "r": R, "M": 3.0, "R": 2.0, "a": A}
+    eqs = s.equations_of_motion()
+    rhs = eqs.rhs(**vals)
+    kane, q, u, (mk, rk, Mk, Rk, ak) = sleigh_on_turntable_kane()
+    sub = {mk: M, rk: R, Mk: 3.0, Rk: 2.0, ak: A}
+    MM = sp.lambdify(list(q) + list(u), kane.mass_matrix_full.subs(sub), "numpy")
+    FF = sp.lambdify(list(q) + list(u), kane.forcing_full.subs(sub), "numpy")
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        qv = rng.uniform(-2, 2, 4)
+        qv[3] = rng.uniform(-1.2, 1.2)
+        wt, ux, w = rng.uniform(-3, 3, 3)
+        uy = (A * w + np.sin(qv[3]) * ux) / np.cos(qv[3])  # relative to the table
+        ours = rhs(0.0, np.array([*qv, wt, ux, uy, w]))[4:]
+        theirs = np.linalg.solve(MM(*qv, wt, ux, uy, w), FF(*qv, wt, ux, uy, w)).ravel()[4:]
+        # Kane's rows: (uphi, ux, utheta) independent, then uy
+        np.testing.assert_allclose(ours, [theirs[0], theirs[1], theirs[3], theirs[2]],
+                                   rtol=1e-10, atol=1e-10)
+
+
+def test_turntable_and_sleigh_conserve_angular_momentum():
+    # no external moment about the vertical through O: sigma_O . k is constant; the pivot and
+    # the blade do no work: the kinetic energy is constant
+    s, (phi, x, y, th), _ = sleigh_on_turntable()
+    table, body = s.bodies
+    R0 = s.galilean
+    sigma = sum((b.kinetic_torsor(R0, at=R0.origin).moment.dot(R0.k) for b in (table, body)),
+                sp.S(0))
+    eqs = s.equations_of_motion()
+    th0, ux, w = 0.3, 0.8, -1.2
+    uy = (A * w + np.sin(th0) * ux) / np.cos(th0)
+    sim = eqs.simulate(t=(0, 5), q0={"phi": 0.0, "x": 0.5, "y": -0.3, "theta": th0},
+                       u0={"phi": 0.7, "x": ux, "y": uy, "theta": w}, m=M, r=R, M=3.0,
+                       R=2.0, a=A, rtol=1e-11, atol=1e-12, n_output=101)
+    h = sim.evaluate(sigma)
+    np.testing.assert_allclose(h, h[0], rtol=1e-8)
+    e = sim.energy()
+    np.testing.assert_allclose(e, e[0], rtol=1e-8)
+    assert np.ptp(sim.u[0]) > 1e-2                       # the table's rate does change
+    # the action of the table on the sleigh: its lateral component is the multiplier
+    lateral = sim.evaluate(s.connection_action(table, body).resultant.dot(body.frame.j))
+    lam = [s.multipliers(sim.q[:, i], sim.u[:, i], m=M, r=R, M=3.0, R=2.0, a=A)[0]
+           for i in range(0, 101, 20)]
+    np.testing.assert_allclose(lam, lateral[::20], rtol=1e-9, atol=1e-12)
 
 
 def _forward_speed_and_rate(sim):
