@@ -235,47 +235,89 @@ class _Model:
             return states[0]
         return "; ".join(f"{c.name}: {s}" for c, s in zip(self.contacts, states, strict=True))
 
-    def solve(self, t, y, states, vals=None):
-        """(q'', multipliers, row layout) of the regime ``states`` at (t, y)."""
-        n = self.n
-        vals = self.values(t, y) if vals is None else vals
-        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
-        f = np.asarray(vals[1], dtype=float).reshape(-1)
-        A, G, b, layout = [], [], [], []
+    # -- contacts whose tangential rows coincide ----------------------------------------
+    def coincide(self, vals, j, k) -> bool:
+        """Whether contacts j and k have the same tangential rows (J and h): the same
+        sliding velocity as a function of q', e.g. two corners of a body on a plane."""
+        cj, ck = self.contacts[j], self.contacts[k]
+        if len(cj.tangents) != len(ck.tangents):
+            return False
+        for rj, rk in zip(cj.tangents, ck.tangents, strict=True):
+            Jj = np.asarray(vals[rj.J], dtype=float).reshape(-1)
+            Jk = np.asarray(vals[rk.J], dtype=float).reshape(-1)
+            hj, hk = float(vals[rj.h]), float(vals[rk.h])
+            scale = max(1.0, float(np.abs(Jj).max()), float(np.abs(Jk).max()))
+            if float(np.abs(Jj - Jk).max()) > 1e-9 * scale or \
+                    abs(hj - hk) > 1e-9 * max(1.0, abs(hj), abs(hk)):
+                return False
+        return True
+
+    def group_of(self, vals, states, k, among=("stick",)) -> list:
+        """Contact k and the contacts in a state of ``among`` whose tangential rows coincide
+        with k's (they stick or slip together)."""
+        return [j for j in range(len(self.contacts))
+                if j == k or (states[j] in among and self.coincide(vals, j, k))]
+
+    def leads(self, vals, states) -> dict:
+        """For each sticking contact, the first sticking contact of its group: the one whose
+        tangential rows stand for the group (their multipliers are the group's total)."""
+        lead = {}
+        sticking = [k for k, s in enumerate(states) if s == "stick"]
+        for k in sticking:
+            lead[k] = next((lead[j] for j in sticking if j < k and self.coincide(vals, j, k)),
+                           k)
+        return lead
+
+    def rows(self, vals, states, lead=None):
+        """The conditions of the regime ``states``: [(kind, key, row, force row)]."""
+        lead = self.leads(vals, states) if lead is None else lead
+        out = []
         for r in self.closures:
             J = np.asarray(vals[r.J], dtype=float).reshape(-1)
-            A.append(J), G.append(J), b.append(-float(vals[r.h]))
-            layout.append(("closure", None))
+            out.append(("closure", None, r, J))
         for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
             if s == "open":
                 continue
             Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
-            Jt = [np.asarray(vals[r.J], dtype=float).reshape(-1) for r in c.tangents]
             force = Jn.copy()
             if s.startswith("slip"):
                 direction = self._slip_direction(s, c.sliding(vals))
-                for d, J in zip(direction, Jt, strict=True):
-                    force -= c.fk * d * J
-            A.append(Jn), G.append(force), b.append(-float(vals[c.normal.h]))
-            layout.append(("N", k))
-            if s == "stick":
-                for i, (J, r) in enumerate(zip(Jt, c.tangents, strict=True)):
-                    A.append(J), G.append(J), b.append(-float(vals[r.h]))
-                    layout.append(("T", (k, i)))
-        m = len(A)
+                for d, r in zip(direction, c.tangents, strict=True):
+                    force -= c.fk * d * np.asarray(vals[r.J], dtype=float).reshape(-1)
+            out.append(("N", k, c.normal, force))
+            if s == "stick" and lead[k] == k:      # the group's total, once
+                for i, r in enumerate(c.tangents):
+                    J = np.asarray(vals[r.J], dtype=float).reshape(-1)
+                    out.append(("T", (k, i), r, J))
+        return out
+
+    def solve(self, t, y, states, vals=None):
+        """(q'', multipliers, row layout) of the regime ``states`` at (t, y).
+
+        Contacts that stick with coincident tangential rows (a body on a plane at two
+        points) share one set of tangential conditions: its multipliers are the total of
+        their tangential forces, which is determined while its split is not.
+        """
+        n = self.n
+        vals = self.values(t, y) if vals is None else vals
+        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
+        f = np.asarray(vals[1], dtype=float).reshape(-1)
+        rows = self.rows(vals, states)
+        layout = [(kind, key) for kind, key, _, _ in rows]
+        m = len(rows)
         if m == 0:
             return np.linalg.solve(M, f), np.zeros(0), layout
+        A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for _, _, r, _ in rows])
         K = np.zeros((n + m, n + m))
         K[:n, :n] = M
-        K[:n, n:] = -np.array(G).T
-        K[n:, :n] = np.array(A)
-        rhs = np.concatenate([f, b])
-        rows = np.array(A)
-        if np.linalg.matrix_rank(rows, tol=1e-10 * max(1.0, float(np.abs(rows).max()))) < m:
+        K[:n, n:] = -np.array([g for _, _, _, g in rows]).T
+        K[n:, :n] = A
+        rhs = np.concatenate([f, [-float(vals[r.h]) for _, _, r, _ in rows]])
+        if np.linalg.matrix_rank(A, tol=1e-10 * max(1.0, float(np.abs(A).max()))) < m:
             raise NumericalError(
                 f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
                 "conditions are not independent, so their multipliers (the contact forces) "
-                "are not determined (e.g. a body sticking on a floor at two points).")
+                "are not determined (e.g. a table standing on four legs: its normal forces).")
         x = np.linalg.solve(K, rhs)
         return x[:n], x[n:], layout
 
@@ -289,18 +331,31 @@ class _Model:
         return vs / norm if norm > 0 else np.zeros_like(vs)
 
     def contact_forces(self, t, y, states, lam, layout):
-        """[(N, T components on the tangents)] for each contact."""
+        """[(N, T components on the tangents)] for each contact.
+
+        The total tangential force of contacts sticking together (see :meth:`solve`) is
+        split in proportion to their limits f_s N: each then uses the same fraction of its
+        friction cone, so each leaves its cone exactly when the total leaves the sum of the
+        limits.
+        """
         vals = self.values(t, y)
+        lead = self.leads(vals, states)
+        Ns = []
+        for k, s in enumerate(states):
+            Ns.append(0.0 if s == "open" else next(
+                float(lam[i]) for i, (kind, key) in enumerate(layout)
+                if kind == "N" and key == k))
         out = []
         for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
-            if s == "open":
-                out.append((0.0, np.zeros(len(c.tangents))))
-                continue
-            N = next(float(lam[i]) for i, (kind, key) in enumerate(layout)
-                     if kind == "N" and key == k)
+            N = Ns[k]
             if s == "stick":
-                T = np.array([lam[i] for i, (kind, key) in enumerate(layout)
-                              if kind == "T" and key[0] == k], dtype=float)
+                total = np.array([lam[i] for i, (kind, key) in enumerate(layout)
+                                  if kind == "T" and key[0] == lead[k]], dtype=float)
+                members = [j for j in lead if lead[j] == lead[k]]
+                limits = [self.contacts[j].fs * max(Ns[j], 0.0) for j in members]
+                share = (c.fs * max(N, 0.0) / sum(limits) if sum(limits) > 0
+                         else 1.0 / len(members))
+                T = share * total
             elif s.startswith("slip"):
                 T = -c.fk * N * self._slip_direction(s, c.sliding(vals))
             else:
@@ -313,13 +368,7 @@ class _Model:
         n = self.n
         vals = self.values(t, y)
         M = np.atleast_2d(np.asarray(vals[0], dtype=float))
-        rows = [r for r in self.closures]
-        for c, s in zip(self.contacts, states, strict=True):
-            if s == "open":
-                continue
-            rows.append(c.normal)
-            if s == "stick":
-                rows.extend(c.tangents)
+        rows = [r for _, _, r, _ in self.rows(vals, states)]
         if not rows:
             return np.array(y, dtype=float)
         A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for r in rows])
@@ -370,15 +419,36 @@ class _Rules:
     def _with(self, states, k, state):
         return tuple(state if i == k else s for i, s in enumerate(states))
 
+    def _with_all(self, states, ks, state):
+        return tuple(state if i in ks else s for i, s in enumerate(states))
+
+    def _slip_all(self, states, group, T):
+        """``states`` with every contact of ``group`` slipping against the total T."""
+        new = self.slip_state(group[0], T)
+        for j in group[1:]:
+            if group[0] in self.directions:
+                self.directions[j] = self.directions[group[0]]
+        return self._with_all(states, group, new)
+
+    def stop_group(self, t, y, states, k):
+        """Contact k and those that stick or slip with it (coincident tangential rows)."""
+        among = ("stick",) if states[k] == "open" else ("stick", states[k])
+        return self.m.group_of(self.m.values(t, y), states, k, among)
+
     def after_stop(self, t, y, states, k):
-        """The state of contact k where its sliding velocity vanishes."""
-        c = self.m.contacts[k]
-        stick = self._with(states, k, "stick")
+        """The states where the sliding velocity of contact k vanishes: k (and the contacts
+        that slide with it) stick if the friction needed lies inside the cone, i.e. within
+        the sum of the limits f_s N for contacts that stick together (ch. 13.1.2)."""
+        group = self.stop_group(t, y, states, k)
+        stick = self._with_all(states, group, "stick")
         yp = self.m.project(t, y, stick)
-        N, T = self.forces(t, yp, stick)[k]
-        if N >= 0 and float(np.linalg.norm(T)) <= c.fs * N * (1 + 1e-12) + 1e-300:
-            return "stick"
-        return self.slip_state(k, T)
+        forces = self.forces(t, yp, stick)
+        Ns = [forces[j][0] for j in group]
+        T = sum(forces[j][1] for j in group)
+        limit = sum(self.m.contacts[j].fs * forces[j][0] for j in group)
+        if min(Ns) >= 0 and float(np.linalg.norm(T)) <= limit * (1 + 1e-12) + 1e-300:
+            return stick
+        return self._slip_all(states, group, T)
 
     def slip_state(self, k, T):
         """The slip that a needed friction T cannot hold: opposite to T."""
@@ -415,13 +485,16 @@ class _Rules:
         opened = None if c.gap is None else name(self._with(states, k, "open"))
         out = [Guard(f"{c.name} lifts off", normal, target=opened, direction=-1)]
         if s == "stick":
-            def cone(t, y):
-                N, T = self.forces(t, y, states)[k]
-                return c.fs * N - float(np.linalg.norm(T))
+            def cone(t, y):            # of the contacts that stick with k, see after_stop
+                group = m.group_of(m.values(t, y), states, k)
+                forces = self.forces(t, y, states)
+                return sum(m.contacts[j].fs * forces[j][0] for j in group) - float(
+                    np.linalg.norm(sum(forces[j][1] for j in group)))
 
             def to_slip(t, y):
-                return name(self._with(states, k, self.slip_state(k, self.forces(t, y,
-                                                                                 states)[k][1])))
+                group = m.group_of(m.values(t, y), states, k)
+                forces = self.forces(t, y, states)
+                return name(self._slip_all(states, group, sum(forces[j][1] for j in group)))
             out.append(Guard(f"{c.name} starts slipping", cone, target=to_slip, direction=-1))
         elif s in ("slip+", "slip-"):
             sign = 1.0 if s == "slip+" else -1.0
@@ -430,9 +503,9 @@ class _Rules:
             def speed(t, y):
                 return sign * float(m.values(t, y)[row.c])
             out.append(Guard(f"{c.name} stops slipping", speed, direction=-1,
-                             target=lambda t, y: name(self._with(
-                                 states, k, self.after_stop(t, y, states, k))),
-                             reset=lambda t, y: m.project(t, y, self._with(states, k, "stick"))))
+                             target=lambda t, y: name(self.after_stop(t, y, states, k)),
+                             reset=lambda t, y: m.project(t, y, self._with_all(
+                                 states, self.stop_group(t, y, states, k), "stick"))))
         elif s == "slip":
             out.append(self._slip2_guard(states, k))
         return out
@@ -450,12 +523,13 @@ class _Rules:
 
         def target(t, y):
             if stopped(t, y):
-                return m.regime_name(self._with(states, k, self.after_stop(t, y, states, k)))
+                return m.regime_name(self.after_stop(t, y, states, k))
             return m.regime_name(states)
 
         def reset(t, y):
             if stopped(t, y):
-                return m.project(t, y, self._with(states, k, "stick"))
+                return m.project(t, y, self._with_all(states, self.stop_group(t, y, states, k),
+                                                      "stick"))
             vs = c.sliding(m.values(t, y))
             self.directions[k] = vs / float(np.linalg.norm(vs))
             return y
@@ -471,27 +545,25 @@ class _Rules:
             return float(m.values(t, y)[c.gap])
 
         def target(t, y):
-            return m.regime_name(self._with(states, k, self.closing_state(
-                t, m.project(t, y, impact), states, k)))
+            return m.regime_name(self.closing_state(t, m.project(t, y, impact), states, k))
 
         def reset(t, y):
             after = m.project(t, y, impact)
-            return m.project(t, after, self._with(states, k, self.closing_state(
-                t, after, states, k)))
+            return m.project(t, after, self.closing_state(t, after, states, k))
 
         return Guard(f"{c.name} lands", gap, target=target, direction=-1, reset=reset)
 
     def closing_state(self, t, y, states, k):
-        """The state of contact k as it closes at (t, y) (normal velocity zero)."""
+        """The states as contact k closes at (t, y) (normal velocity zero)."""
         c = self.m.contacts[k]
         if c.law is None:
-            return "contact"
+            return self._with(states, k, "contact")
         vs = c.sliding(self.m.values(t, y))
         if float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
             if len(c.tangents) == 1:
-                return "slip+" if vs[0] > 0 else "slip-"
+                return self._with(states, k, "slip+" if vs[0] > 0 else "slip-")
             self.directions[k] = vs / float(np.linalg.norm(vs))
-            return "slip"
+            return self._with(states, k, "slip")
         return self.after_stop(t, y, states, k)
 
     def start(self, t, y):
@@ -522,7 +594,8 @@ class _Rules:
                     f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
                     "it opens at once; start the bodies where the contact presses.")
             if states[k] == "stick" and float(np.linalg.norm(T)) > c.fs * N:
-                states = self._with(states, k, self.slip_state(k, T))
+                group = self.m.group_of(self.m.values(t, y), states, k)
+                states = self._slip_all(states, group, sum(forces[j][1] for j in group))
         return self.m.regime_name(states)
 
 
