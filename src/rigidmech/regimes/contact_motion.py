@@ -90,6 +90,40 @@ class ContactMotion(PhasedMotion):
             out[c.name] = (N, T, c.sliding(self._model.values(time, y)))
         return out
 
+    def rolling_couples(self, time) -> dict:
+        """The rolling couple of each contact with a rolling resistance at ``time``:
+        ``{name: (N, M_r, omega_r)}``, M_r and omega_r the components of the couple and of the
+        rolling rotation on the rolling axis (the tangent along which omega_r lies); while
+        it rolls ``M_r = -delta N sign(omega_r)``, while it does not ``|M_r| <= delta N``.
+        At a switching instant the phase that ends there is used."""
+        time = float(time)
+        ends = np.array([p.end for p in self.phases])
+        k = min(int(np.searchsorted(ends, time, side="left")), len(self.phases) - 1)
+        phase = self.phases[k]
+        y = phase.solution.sol(time)
+        model = self._model
+        states = model.states_of(phase.regime)
+        _, lam, rows = model.solve(time, y, states)
+        forces = model.contact_forces(time, y, states, lam, rows)
+        vals = model.values(time, y)
+        return {c.name: (forces[i][0],
+                         model.rolling_couple(time, y, states, lam, rows, i, forces[i][0]),
+                         float(vals[c.roll.c]))
+                for i, c in enumerate(model.contacts) if c.roll is not None}
+
+
+ROLLING = ("rolls+", "rolls-", "locked")
+
+
+def _slide(state):
+    """The sliding part of a contact's state ("stick, rolls+" -> "stick")."""
+    return state.split(", ", 1)[0]
+
+
+def _roll(state):
+    """The rolling part of a contact's state, or None."""
+    return state.split(", ", 1)[1] if ", " in state else None
+
 
 class _Row:
     """One constraint velocity c(q, q', t) = J(q, t) q' + ..., numerically."""
@@ -103,11 +137,12 @@ class _Row:
 class _Contact:
     """A contact's numeric rows: the normal one and 1 or 2 tangential ones."""
 
-    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap")
+    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap", "roll", "delta")
 
-    def __init__(self, name, law, normal, tangents, gap=None):
+    def __init__(self, name, law, normal, tangents, gap=None, roll=None, delta=0.0):
         self.name, self.law, self.normal, self.tangents = name, law, normal, tangents
         self.gap = gap                        # index of the gap in the evaluated list
+        self.roll, self.delta = roll, delta   # the rolling row and delta, with a rolling law
         if law is not None:
             try:
                 self.fs, self.fk = float(law.static), float(law.kinetic)
@@ -124,6 +159,8 @@ class _Contact:
             out = ("contact",)
         else:
             out = ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
+        if self.roll is not None:
+            out = tuple(f"{a}, {b}" for a in out for b in ROLLING)
         return out + (("open",) if self.gap is not None else ())
 
     def sliding(self, vals):
@@ -175,18 +212,42 @@ class _Model:
                     "no sliding velocity, so friction has no regime to switch between.")
             normal = row(v.dot(kin.normal))
             tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
+            roll, delta = None, 0.0
+            if getattr(contact, "rolling", None) is not None:
+                roll, delta = self._rolling_row(row, kin, contact, name, child, rule)
             gap = None
             if contact.gap is not None:
                 gaps.append(contact.gap.xreplace(rule))
                 gap = len(gaps) - 1
-            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap))
+            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap, roll,
+                                          delta))
         self._compile(exprs, rows, q_sym, u_sym, params, gaps)
         for c in self.contacts:
             c.normal = self._rows[c.normal]
             c.tangents = [self._rows[i] for i in c.tangents]
+            if c.roll is not None:
+                c.roll = self._rows[c.roll]
             if c.gap is not None:                 # gaps come after the rows
                 c.gap = 2 + 3 * len(rows) + c.gap
         self.closures = [self._rows[i] for i in self.closures]
+
+    @staticmethod
+    def _rolling_row(row, kin, contact, name, child, rule):
+        """The row of the rolling rotation (one tangential component) and delta."""
+        w = kin.rolling
+        comps = [(e, sp.simplify(w.dot(e).xreplace(rule))) for e in kin.tangents()]
+        comps = [(e, c) for e, c in comps if c != 0]
+        if len(comps) != 1:
+            raise ConnectionError_(
+                f"the rolling resistance of contact {name} of {child.name} needs a planar "
+                f"rolling, the rolling rotation along one tangent; got {len(comps)} "
+                "tangential components of the rolling rotation.")
+        try:
+            delta = float(contact.rolling.coefficient)
+        except TypeError:
+            raise ArgumentError(f"the rolling-resistance coefficient of contact {name} must "
+                                f"be a number to integrate; got {contact.rolling!r}.") from None
+        return row(w.dot(comps[0][0])), delta
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
         flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)], *gaps]
@@ -256,13 +317,13 @@ class _Model:
         """Contact k and the contacts in a state of ``among`` whose tangential rows coincide
         with k's (they stick or slip together)."""
         return [j for j in range(len(self.contacts))
-                if j == k or (states[j] in among and self.coincide(vals, j, k))]
+                if j == k or (_slide(states[j]) in among and self.coincide(vals, j, k))]
 
     def leads(self, vals, states) -> dict:
         """For each sticking contact, the first sticking contact of its group: the one whose
         tangential rows stand for the group (their multipliers are the group's total)."""
         lead = {}
-        sticking = [k for k, s in enumerate(states) if s == "stick"]
+        sticking = [k for k, s in enumerate(states) if _slide(s) == "stick"]
         for k in sticking:
             lead[k] = next((lead[j] for j in sticking if j < k and self.coincide(vals, j, k)),
                            k)
@@ -275,11 +336,15 @@ class _Model:
         for r in self.closures:
             J = np.asarray(vals[r.J], dtype=float).reshape(-1)
             out.append(("closure", None, r, J))
-        for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
+        for k, (c, full) in enumerate(zip(self.contacts, states, strict=True)):
+            s, rolling = _slide(full), _roll(full)
             if s == "open":
                 continue
             Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
             force = Jn.copy()
+            if rolling in ("rolls+", "rolls-"):      # the couple -delta N sign(omega_r)
+                sign = 1.0 if rolling == "rolls+" else -1.0
+                force -= c.delta * sign * np.asarray(vals[c.roll.J], dtype=float).reshape(-1)
             if s.startswith("slip"):
                 direction = self._slip_direction(s, c.sliding(vals))
                 for d, r in zip(direction, c.tangents, strict=True):
@@ -289,6 +354,8 @@ class _Model:
                 for i, r in enumerate(c.tangents):
                     J = np.asarray(vals[r.J], dtype=float).reshape(-1)
                     out.append(("T", (k, i), r, J))
+            if rolling == "locked":
+                out.append(("M", k, c.roll, np.asarray(vals[c.roll.J], dtype=float).reshape(-1)))
         return out
 
     def solve(self, t, y, states, vals=None):
@@ -342,12 +409,12 @@ class _Model:
         lead = self.leads(vals, states)
         Ns = []
         for k, s in enumerate(states):
-            Ns.append(0.0 if s == "open" else next(
+            Ns.append(0.0 if _slide(s) == "open" else next(
                 float(lam[i]) for i, (kind, key) in enumerate(layout)
                 if kind == "N" and key == k))
         out = []
         for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
-            N = Ns[k]
+            N, s = Ns[k], _slide(s)
             if s == "stick":
                 total = np.array([lam[i] for i, (kind, key) in enumerate(layout)
                                   if kind == "T" and key[0] == lead[k]], dtype=float)
@@ -362,6 +429,16 @@ class _Model:
                 T = np.zeros(len(c.tangents))
             out.append((N, T))
         return out
+
+    def rolling_couple(self, t, y, states, lam, layout, k, N):
+        """The rolling couple of contact k (its component on the rolling axis)."""
+        c, rolling = self.contacts[k], _roll(states[k])
+        if rolling == "locked":
+            return next(float(lam[i]) for i, (kind, key) in enumerate(layout)
+                        if kind == "M" and key == k)
+        if rolling in ("rolls+", "rolls-"):
+            return -c.delta * N * (1.0 if rolling == "rolls+" else -1.0)
+        return 0.0
 
     def project(self, t, y, states):
         """y with q' projected (in the metric of M) onto the conditions of ``states``."""
@@ -416,11 +493,65 @@ class _Rules:
         _, lam, layout = self.m.solve(t, y, states)
         return self.m.contact_forces(t, y, states, lam, layout)
 
+    def _merge(self, k, old, new):
+        """The state ``new`` of contact k (a sliding state), keeping its rolling part."""
+        if self.m.contacts[k].roll is None or new in ("open", "impact") or \
+                _roll(new) is not None:
+            return new
+        return f"{new}, {_roll(old) or 'locked'}"
+
     def _with(self, states, k, state):
-        return tuple(state if i == k else s for i, s in enumerate(states))
+        return tuple(self._merge(i, s, state) if i == k else s for i, s in enumerate(states))
 
     def _with_all(self, states, ks, state):
-        return tuple(state if i in ks else s for i, s in enumerate(states))
+        return tuple(self._merge(i, s, state) if i in ks else s for i, s in enumerate(states))
+
+    def _with_roll(self, states, k, rolling):
+        return self._with(states, k, f"{_slide(states[k])}, {rolling}")
+
+    def couple(self, t, y, states, k):
+        """(N, M_r) of contact k in the regime ``states``."""
+        _, lam, layout = self.m.solve(t, y, states)
+        N = self.m.contact_forces(t, y, states, lam, layout)[k][0]
+        return N, self.m.rolling_couple(t, y, states, lam, layout, k, N)
+
+    def after_roll_stop(self, t, y, states, k):
+        """The states where the rolling rotation of contact k vanishes: it stays without
+        rolling if the couple needed is within delta N, else it rolls back against it."""
+        locked = self._with_roll(states, k, "locked")
+        N, M = self.couple(t, self.m.project(t, y, locked), locked, k)
+        if abs(M) <= self.m.contacts[k].delta * N * (1 + 1e-12) + 1e-300:
+            return locked
+        return self._with_roll(states, k, "rolls+" if M < 0 else "rolls-")
+
+    def roll_guard(self, states, k):
+        c, m, rolling = self.m.contacts[k], self.m, _roll(states[k])
+        if rolling == "locked":
+            def bound(t, y):
+                N, M = self.couple(t, y, states, k)
+                return c.delta * N - abs(M)
+
+            def to_roll(t, y):
+                M = self.couple(t, y, states, k)[1]
+                return m.regime_name(self._with_roll(states, k, "rolls+" if M < 0 else
+                                                     "rolls-"))
+            return Guard(f"{c.name} starts rolling", bound, target=to_roll, direction=-1)
+        sign = 1.0 if rolling == "rolls+" else -1.0
+
+        def rate(t, y):
+            return sign * float(m.values(t, y)[c.roll.c])
+        return Guard(f"{c.name} stops rolling", rate, direction=-1,
+                     target=lambda t, y: m.regime_name(self.after_roll_stop(t, y, states, k)),
+                     reset=lambda t, y: m.project(t, y, self._with_roll(states, k, "locked")))
+
+    def rolling_state(self, t, y, states, k):
+        """The rolling part of contact k from its rolling rotation (at a start or a
+        landing): rolls+/- if it rolls, else locked if delta N holds it."""
+        c = self.m.contacts[k]
+        w = float(self.m.values(t, y)[c.roll.c])
+        if abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+            return self._with_roll(states, k, "rolls+" if w > 0 else "rolls-")
+        return self.after_roll_stop(t, y, states, k)
 
     def _slip_all(self, states, group, T):
         """``states`` with every contact of ``group`` slipping against the total T."""
@@ -432,7 +563,7 @@ class _Rules:
 
     def stop_group(self, t, y, states, k):
         """Contact k and those that stick or slip with it (coincident tangential rows)."""
-        among = ("stick",) if states[k] == "open" else ("stick", states[k])
+        among = ("stick",) if states[k] == "open" else ("stick", _slide(states[k]))
         return self.m.group_of(self.m.values(t, y), states, k, among)
 
     def after_stop(self, t, y, states, k):
@@ -475,10 +606,17 @@ class _Rules:
         return rhs
 
     def guards(self, states, k, s):
-        c, m = self.m.contacts[k], self.m
-        name = m.regime_name
+        c = self.m.contacts[k]
+        s = _slide(s)
         if s == "open":
             return [self._landing_guard(states, k)]
+        if c.roll is not None:
+            return self._sliding_guards(states, k, s) + [self.roll_guard(states, k)]
+        return self._sliding_guards(states, k, s)
+
+    def _sliding_guards(self, states, k, s):
+        c, m = self.m.contacts[k], self.m
+        name = m.regime_name
 
         def normal(t, y):
             return self.forces(t, y, states)[k][0]
@@ -561,10 +699,13 @@ class _Rules:
         vs = c.sliding(self.m.values(t, y))
         if float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
             if len(c.tangents) == 1:
-                return self._with(states, k, "slip+" if vs[0] > 0 else "slip-")
-            self.directions[k] = vs / float(np.linalg.norm(vs))
-            return self._with(states, k, "slip")
-        return self.after_stop(t, y, states, k)
+                out = self._with(states, k, "slip+" if vs[0] > 0 else "slip-")
+            else:
+                self.directions[k] = vs / float(np.linalg.norm(vs))
+                out = self._with(states, k, "slip")
+        else:
+            out = self.after_stop(t, y, states, k)
+        return out if c.roll is None else self.rolling_state(t, y, out, k)
 
     def start(self, t, y):
         states = []
@@ -582,6 +723,10 @@ class _Rules:
                     states.append("slip")
             else:
                 states.append("stick")
+            if c.roll is not None and states[-1] != "open":
+                w = float(self.m.values(t, y)[c.roll.c])
+                moving = abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1)
+                states[-1] += ", " + (("rolls+" if w > 0 else "rolls-") if moving else "locked")
         states = tuple(states)
         forces = self.forces(t, y, states)
         for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
@@ -593,9 +738,12 @@ class _Rules:
                 raise ArgumentError(
                     f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
                     "it opens at once; start the bodies where the contact presses.")
-            if states[k] == "stick" and float(np.linalg.norm(T)) > c.fs * N:
+            if _slide(states[k]) == "stick" and float(np.linalg.norm(T)) > c.fs * N:
                 group = self.m.group_of(self.m.values(t, y), states, k)
                 states = self._slip_all(states, group, sum(forces[j][1] for j in group))
+        for k, c in enumerate(self.m.contacts):
+            if c.roll is not None and states[k] != "open":
+                states = self.rolling_state(t, y, self._with(states, k, states[k]), k)
         return self.m.regime_name(states)
 
 
