@@ -407,6 +407,13 @@ class FrictionContact:
     FrictionContact(R1 on R0 at I, friction=Coulomb(static=0.5, kinetic=0.4))
     >>> c.action_torsor("I")[0].resultant
     T1_I*R0.i + N_I*R0.j - T2_I*R0.k
+
+    A wheel with a rolling resistance of 2 mm:
+
+    >>> from rigidmech.actions import RollingResistance
+    >>> w = FrictionContact(c.contact, friction=Coulomb(0.5), rolling=RollingResistance(0.002))
+    >>> w.rolling
+    RollingResistance(0.00200000000000000)
     """
 
     __slots__ = ("_contact", "_friction", "_gap", "_rolling")

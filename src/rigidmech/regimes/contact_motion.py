@@ -19,6 +19,31 @@ contact, and :func:`contact_motion` derives them itself from the system, for eac
 * a frictionless contact (``friction=None``) keeps only its normal condition (regime
   ``contact``).
 
+**Contacts that stick together.** A rigid body sticking on a plane at two points (a box on a
+floor) has the same sliding velocity at both: their tangential conditions coincide, and the
+fundamental principle, which gives only the resultant and the moment of the actions on a
+rigid body (ch. 14.2), determines the total T_A + T_B of their tangential forces but not its
+split (the stick regime is hyperstatic in the tangential direction, ch. 13.2.5), while the
+normal forces and the motion stay determined. Such contacts share one tangential condition,
+whose multiplier is the total; as for a single contact (ch. 13.1.2), sticking holds while the
+total lies within the sum of the limits, ``|T_A + T_B| <= f_s,A N_A + f_s,B N_B``, the
+textbook treatment of a body on a plane with both contacts sticking. When it leaves it, they
+slip together against it; when their common sliding velocity vanishes, they stick together
+if the total needed lies within the sum of the limits. ``contact_actions`` reports the total
+split in proportion to the limits f_s N (each contact then uses the same fraction of its
+cone). A contact whose normal force reaches 0 lifts off (a box tipping about its other
+corner). Conditions that stay dependent after this merge (a table on four legs, whose normal
+forces are not determined) are refused as hyperstatic.
+
+**Rolling resistance.** A contact given ``rolling=RollingResistance(delta)`` (planar rolling:
+the rolling rotation omega_r along one tangent) has a second part in its state (ch. 13.1.3):
+``rolls+`` / ``rolls-`` (the couple ``-delta N sign(omega_r)`` acts with N: the generalised
+force of the contact gains ``-delta sign(omega_r) A_r^T N``, A_r the row of omega_r) or
+``locked`` (omega_r = 0 is a condition, its multiplier the couple M_r, which must stay within
+``|M_r| <= delta N``; beyond it the body rolls against M_r). Regimes are then named
+``"stick, rolls+"``, ``"slip+, locked"``, ... and :meth:`ContactMotion.rolling_couples` gives
+the couples.
+
 Where a normal force N would become negative (guard "lifts off") the contact opens: if the
 contact has a ``gap`` (the distance between the surfaces), the motion goes on with the contact
 **open** (no condition, no action) until the gap closes again (guard "lands": a perfectly
@@ -772,14 +797,16 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     -------
     ContactMotion
         Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one
-        contact),
-        or ``"I: stick; J: slip+"`` (several, by the names of their points).
+        contact; followed by ``, rolls+``, ``, rolls-`` or ``, locked`` with a rolling
+        resistance), or ``"I: stick; J: slip+"`` (several, by the names of their points).
 
     Raises
     ------
     ConnectionError\\_
         A system without contact, or a contact whose coordinates forbid the motions the
-        regimes need.
+        regimes need (or a rolling resistance on a rolling that is not planar).
+    NumericalError
+        A regime whose contact conditions stay dependent (hyperstatic normal forces).
     ArgumentError
         Missing or unknown parameters, bad initial values, a contact that pulls at t0 or a
         normal velocity at t0.

@@ -11,11 +11,13 @@ transition rules, and integrates with :func:`~rigidmech.regimes.phased.integrate
   motion in the wagon's non-Galilean frame);
 * :func:`pushed_box`: a box pushed horizontally, at rest, sliding or tipping (ch. 24).
 
-The first three posed from bodies (a :class:`~rigidmech.dynamics.System` with a
-:class:`~rigidmech.actions.FrictionContact`) and integrated by
-:func:`~rigidmech.regimes.contact_motion`, which derives the regimes itself, give the same
-phases and switching instants (to 1e-9 at rtol 1e-12); these hand-written versions are
-faster (closed-form right-hand sides) and serve as its references.
+Posed from bodies (a :class:`~rigidmech.dynamics.System` with
+:class:`~rigidmech.actions.FrictionContact` connections; the box with one at each bottom
+corner) and integrated by :func:`~rigidmech.regimes.contact_motion`, which derives the
+regimes itself, they give the same phases and switching instants (to 1e-9 at rtol 1e-12);
+these hand-written versions are faster (closed-form right-hand sides) and serve as its
+references. ``contact_motion`` also lets the box tip while sliding or its edge slip while
+it tips, which :func:`pushed_box` assumes away.
 """
 
 from __future__ import annotations
