@@ -153,10 +153,10 @@ def _roll(state):
 class _Row:
     """One constraint velocity c(q, q', t) = J(q, t) q' + ..., numerically."""
 
-    __slots__ = ("J", "h", "c")
+    __slots__ = ("J", "h", "c", "p")
 
-    def __init__(self, J, h, c):
-        self.J, self.h, self.c = J, h, c
+    def __init__(self, J, h, c, p):
+        self.J, self.h, self.c, self.p = J, h, c, p      # p: the position residual, or 0
 
 
 class _Contact:
@@ -195,7 +195,8 @@ class _Contact:
 class _Model:
     """The numeric pieces of a system with contacts: M, f, the rows, and the regime solve."""
 
-    def __init__(self, system, params):
+    def __init__(self, system, params, stabilization=(0.0, 0.0)):
+        self.alpha, self.beta = stabilization
         eqs = system.equations_of_motion(open_contacts=True)
         qs = system.coordinates
         n = len(qs)
@@ -206,16 +207,17 @@ class _Model:
         self.contacts = []
         rows, gaps = [], []
 
-        def row(c):
+        def row(c, position=None):
             c = sp.sympify(c).xreplace(rule)
             J = [sp.diff(c, u) for u in u_sym]
             h = sum((sp.diff(c, q) * u for q, u in zip(q_sym, u_sym, strict=True)),
                     sp.S.Zero) + sp.diff(c, time_symbol)
-            rows.append((J, h, c))
+            p = sp.S.Zero if position is None else sp.sympify(position).xreplace(rule)
+            rows.append((J, h, c, p))
             return len(rows) - 1
 
-        for _label, velocity, _ in system.closure_conditions():
-            self.closures.append(row(velocity))
+        for _label, velocity, position in system.closure_conditions():
+            self.closures.append(row(velocity, position))
         for k, (_, child, contact) in enumerate(system.contacts):
             kin = contact.contact
             name = kin.point.name if kin.point.name not in [c.name for c in self.contacts] \
@@ -235,7 +237,7 @@ class _Model:
                 raise ConnectionError_(
                     f"the contact {name} of {child.name} cannot slip: its coordinates allow "
                     "no sliding velocity, so friction has no regime to switch between.")
-            normal = row(v.dot(kin.normal))
+            normal = row(v.dot(kin.normal), contact.gap)    # the gap: its position residual
             tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
             roll, delta = None, 0.0
             if getattr(contact, "rolling", None) is not None:
@@ -253,7 +255,7 @@ class _Model:
             if c.roll is not None:
                 c.roll = self._rows[c.roll]
             if c.gap is not None:                 # gaps come after the rows
-                c.gap = 2 + 3 * len(rows) + c.gap
+                c.gap = 2 + 4 * len(rows) + c.gap
         self.closures = [self._rows[i] for i in self.closures]
 
     @staticmethod
@@ -275,7 +277,8 @@ class _Model:
         return row(w.dot(comps[0][0])), delta
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
-        flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)], *gaps]
+        flat = [*exprs, *[e for J, h, c, p in rows for e in (sp.Matrix([J]), h, c, p)],
+                *gaps]
         free = set()
         for e in flat:
             free |= sp.sympify(e).free_symbols
@@ -299,8 +302,8 @@ class _Model:
         fn = sp.lambdify((time_symbol, *q_sym, *u_sym), flat, modules="numpy", cse=True)
         n = self.n
         self._fn = fn
-        # indices into the evaluated list [M, f, J_0, h_0, c_0, J_1, ...]
-        self._rows = [_Row(2 + 3 * i, 3 + 3 * i, 4 + 3 * i) for i in range(len(rows))]
+        # indices into the evaluated list [M, f, J_0, h_0, c_0, p_0, J_1, ...]
+        self._rows = [_Row(*(2 + 4 * i + j for j in range(4))) for i in range(len(rows))]
         self._n = n
         self._memo = (None, None)
 
@@ -383,6 +386,17 @@ class _Model:
                 out.append(("M", k, c.roll, np.asarray(vals[c.roll.J], dtype=float).reshape(-1)))
         return out
 
+    def bias(self, vals, r):
+        """The right-hand side of a condition at the acceleration level, with Baumgarte's
+        correction: -h - 2 alpha c - beta^2 p (c the velocity residual, p the position
+        residual where the condition has one), as the compiled equations of a System."""
+        out = -float(vals[r.h])
+        if self.alpha:
+            out -= 2.0 * self.alpha * float(vals[r.c])
+        if self.beta:
+            out -= self.beta ** 2 * float(vals[r.p])
+        return out
+
     def solve(self, t, y, states, vals=None):
         """(q'', multipliers, row layout) of the regime ``states`` at (t, y).
 
@@ -404,7 +418,7 @@ class _Model:
         K[:n, :n] = M
         K[:n, n:] = -np.array([g for _, _, _, g in rows]).T
         K[n:, :n] = A
-        rhs = np.concatenate([f, [-float(vals[r.h]) for _, _, r, _ in rows]])
+        rhs = np.concatenate([f, [self.bias(vals, r) for _, _, r, _ in rows]])
         if np.linalg.matrix_rank(A, tol=1e-10 * max(1.0, float(np.abs(A).max()))) < m:
             raise NumericalError(
                 f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
@@ -772,9 +786,23 @@ class _Rules:
         return self.m.regime_name(states)
 
 
+def _stabilization(value):
+    if value is None:
+        return 0.0, 0.0
+    try:
+        alpha, beta = (float(v) for v in value)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"`stabilization` must be a pair (alpha, beta) of numbers >= 0; "
+                            f"got {value!r}.") from None
+    if not all(math.isfinite(v) and v >= 0 for v in (alpha, beta)):
+        raise ArgumentError(f"`stabilization` must be a pair (alpha, beta) of numbers >= 0; "
+                            f"got {value!r}.")
+    return alpha, beta
+
+
 def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
                    rtol: float = 1e-10, atol: float = 1e-12, max_step: float = math.inf,
-                   max_phases: int = 10_000, **params) -> ContactMotion:
+                   max_phases: int = 10_000, stabilization=None, **params) -> ContactMotion:
     """Integrate a system with one-sided contacts and dry friction phase by phase, each
     regime's equations derived from the system (ch. 13.1, 21.4, 23).
 
@@ -790,6 +818,18 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         separate them (v(I) . n = 0).
     method, rtol, atol, max_step, max_phases
         Passed to :func:`~rigidmech.regimes.integrate_phases`.
+    stabilization : (alpha, beta), optional
+        Baumgarte's coefficients (in 1/time) for the conditions of each regime (closures,
+        contacts' normal conditions, sticking and non-rolling conditions): the condition
+        c' = 0 at the acceleration level becomes c' + 2 alpha c + beta^2 p = 0, with c the
+        velocity residual and p the position residual where the condition has one (a
+        contact's ``gap``, a closure's position), so that the integration does not drift off
+        the conditions, as ``System(stabilization=...)`` does for its closures. Default
+        None: (0, 0), the conditions at the acceleration level only. A Runge-Kutta method
+        keeps a condition that is linear in the coordinates and rates (a cylinder on a
+        plane) to round-off without it, where the correction would only add the
+        integration error; it pays for nonlinear conditions (a body rocking on a corner or
+        an eccentric disk) over long runs.
     **params
         Values of the constants (by name).
 
@@ -845,7 +885,7 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     except (TypeError, ValueError):
         raise ArgumentError(f"`t_span` must be an end time or a pair of times; got "
                             f"{t_span!r}.") from None
-    model = _Model(system, params)
+    model = _Model(system, params, _stabilization(stabilization))
     coords = system.coordinates
     y0 = np.concatenate([_state_vector(q0, coords, "q0"), _state_vector(u0, coords, "u0")])
     vals = model.values(span[0], y0)
