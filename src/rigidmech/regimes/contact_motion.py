@@ -52,6 +52,11 @@ the contact sticks or slips from there); without a gap the motion **stops** ther
 is frictionless (no tangential impulse). The phases come back as a :class:`ContactMotion` (a
 :class:`~rigidmech.regimes.PhasedMotion` that also gives the contact actions).
 
+The conditions of each regime are enforced at the acceleration level; with
+``stabilization=(alpha, beta)`` :func:`contact_motion` adds Baumgarte's correction, as a
+:class:`~rigidmech.dynamics.System` does for its closures (the gap is the position residual
+of a normal condition).
+
 The state is y = (q, q'), q the system's coordinates. The coordinates of each body in contact
 must leave the contact free in the normal direction (N is a multiplier) and in the
 tangential ones (T is a multiplier while sticking).
