@@ -33,7 +33,7 @@ from ..kinematics.transmissions import GearPair
 from ..torsors import Torsor
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
-from .contact_laws import Coulomb, RollingResistance
+from .contact_laws import Coulomb, PivotingResistance, RollingResistance
 
 __all__ = ["RollingContact", "GearMesh", "FrictionContact"]
 
@@ -391,6 +391,10 @@ class FrictionContact:
         couple ``-delta N omega_r/|omega_r|`` acts on it at I; while it does not roll the
         couple that holds it is bounded by ``delta N``. Supported for a planar rolling
         (omega_r along one tangent).
+    pivoting : PivotingResistance, optional
+        Resistance to pivoting of coefficient eta, a length (ch. 13.1.3): while S2 spins on
+        S1 about the normal (omega_n = omega(S2/S1) . n) the couple ``-eta N sign(omega_n) n``
+        acts on it; while it does not spin the couple that holds it is bounded by ``eta N``.
 
     Examples
     --------
@@ -416,11 +420,12 @@ class FrictionContact:
     RollingResistance(0.00200000000000000)
     """
 
-    __slots__ = ("_contact", "_friction", "_gap", "_rolling")
+    __slots__ = ("_contact", "_friction", "_gap", "_rolling", "_pivoting")
     one_sided = True
 
     def __init__(self, contact: ContactKinematics, *, friction: Coulomb | None = None,
-                 gap=None, rolling: RollingResistance | None = None):
+                 gap=None, rolling: RollingResistance | None = None,
+                 pivoting: PivotingResistance | None = None):
         if not isinstance(contact, ContactKinematics):
             raise ArgumentTypeError(
                 f"`contact` must be a ContactKinematics (rigidmech.kinematics, or "
@@ -441,8 +446,12 @@ class FrictionContact:
             raise ArgumentTypeError(
                 f"`rolling` must be a RollingResistance law or None; got "
                 f"{type(rolling).__name__}.")
+        if pivoting is not None and not isinstance(pivoting, PivotingResistance):
+            raise ArgumentTypeError(
+                f"`pivoting` must be a PivotingResistance law or None; got "
+                f"{type(pivoting).__name__}.")
         self._contact, self._friction, self._gap = contact, friction, gap
-        self._rolling = rolling
+        self._rolling, self._pivoting = rolling, pivoting
 
     gap = property(lambda self: self._gap,
                    doc="The distance between the surfaces (an expression), or None.")
@@ -451,6 +460,8 @@ class FrictionContact:
     friction = property(lambda self: self._friction, doc="The Coulomb law, or None.")
     rolling = property(lambda self: self._rolling,
                        doc="The law of rolling resistance, or None.")
+    pivoting = property(lambda self: self._pivoting,
+                        doc="The law of pivoting resistance, or None.")
 
     @property
     def solids(self) -> tuple:
@@ -469,4 +480,5 @@ class FrictionContact:
         c = self._contact
         extra = "" if self._friction is None else f", friction={self._friction!r}"
         extra += "" if self._rolling is None else f", rolling={self._rolling!r}"
+        extra += "" if self._pivoting is None else f", pivoting={self._pivoting!r}"
         return f"FrictionContact({c.moving.name} on {c.other.name} at {c.point.name}{extra})"

@@ -12,7 +12,10 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
 from ..vectors import t as time_symbol
 
-ROLLING = ("rolls+", "rolls-", "locked")
+# the parts of a contact's state for its resisting couples: moving one way or the other, or
+# held (the couple is then a multiplier bounded by coefficient * N)
+PARTS = {"roll": ("rolls+", "rolls-", "locked"), "spin": ("spins+", "spins-", "no spin")}
+ROLLING = PARTS["roll"]
 
 
 def _slide(state):
@@ -20,9 +23,19 @@ def _slide(state):
     return state.split(", ", 1)[0]
 
 
+def _part(state, kind):
+    """The part of a contact's state for the couple ``kind`` ("roll", "spin"), or None."""
+    return next((p for p in state.split(", ")[1:] if p in PARTS[kind]), None)
+
+
 def _roll(state):
     """The rolling part of a contact's state, or None."""
-    return state.split(", ", 1)[1] if ", " in state else None
+    return _part(state, "roll")
+
+
+def _compose(slide, parts):
+    """A contact's state from its sliding part and its couples' parts."""
+    return ", ".join([slide, *(p for p in parts if p)])
 
 
 class _Row:
@@ -37,12 +50,13 @@ class _Row:
 class _Contact:
     """A contact's numeric rows: the normal one and 1 or 2 tangential ones."""
 
-    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap", "roll", "delta")
+    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap", "couples")
 
-    def __init__(self, name, law, normal, tangents, gap=None, roll=None, delta=0.0):
+    def __init__(self, name, law, normal, tangents, gap=None, couples=None):
         self.name, self.law, self.normal, self.tangents = name, law, normal, tangents
         self.gap = gap                        # index of the gap in the evaluated list
-        self.roll, self.delta = roll, delta   # the rolling row and delta, with a rolling law
+        # kind ("roll", "spin") -> [row, coefficient]: the resisting couples
+        self.couples = dict(couples or {})
         if law is not None:
             try:
                 self.fs, self.fk = float(law.static), float(law.kinetic)
@@ -59,8 +73,8 @@ class _Contact:
             out = ("contact",)
         else:
             out = ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
-        if self.roll is not None:
-            out = tuple(f"{a}, {b}" for a in out for b in ROLLING)
+        for kind in self.couples:
+            out = tuple(f"{a}, {b}" for a in out for b in PARTS[kind])
         return out + (("open",) if self.gap is not None else ())
 
     def sliding(self, vals):
@@ -114,21 +128,23 @@ class _Model:
                     "no sliding velocity, so friction has no regime to switch between.")
             normal = row(v.dot(kin.normal), contact.gap)    # the gap: its position residual
             tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
-            roll, delta = None, 0.0
+            couples = {}
             if getattr(contact, "rolling", None) is not None:
-                roll, delta = self._rolling_row(row, kin, contact, name, child, rule)
+                couples["roll"] = self._rolling_row(row, kin, contact, name, child, rule)
+            if getattr(contact, "pivoting", None) is not None:
+                couples["spin"] = [row(kin.rotation.dot(kin.normal)),
+                                   self._coefficient(contact.pivoting, name, "pivoting")]
             gap = None
             if contact.gap is not None:
                 gaps.append(contact.gap.xreplace(rule))
                 gap = len(gaps) - 1
-            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap, roll,
-                                          delta))
+            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap, couples))
         self._compile(exprs, rows, q_sym, u_sym, params, gaps)
         for c in self.contacts:
             c.normal = self._rows[c.normal]
             c.tangents = [self._rows[i] for i in c.tangents]
-            if c.roll is not None:
-                c.roll = self._rows[c.roll]
+            for pair in c.couples.values():
+                pair[0] = self._rows[pair[0]]
             if c.gap is not None:                 # gaps come after the rows
                 c.gap = 2 + 4 * len(rows) + c.gap
         self.closures = [self._rows[i] for i in self.closures]
@@ -144,12 +160,15 @@ class _Model:
                 f"the rolling resistance of contact {name} of {child.name} needs a planar "
                 f"rolling, the rolling rotation along one tangent; got {len(comps)} "
                 "tangential components of the rolling rotation.")
+        return [row(w.dot(comps[0][0])), _Model._coefficient(contact.rolling, name, "rolling")]
+
+    @staticmethod
+    def _coefficient(law, name, what):
         try:
-            delta = float(contact.rolling.coefficient)
+            return float(law.coefficient)
         except TypeError:
-            raise ArgumentError(f"the rolling-resistance coefficient of contact {name} must "
-                                f"be a number to integrate; got {contact.rolling!r}.") from None
-        return row(w.dot(comps[0][0])), delta
+            raise ArgumentError(f"the {what}-resistance coefficient of contact {name} must be "
+                                f"a number to integrate; got {law!r}.") from None
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
         flat = [*exprs, *[e for J, h, c, p in rows for e in (sp.Matrix([J]), h, c, p)],
@@ -240,14 +259,16 @@ class _Model:
             J = np.asarray(vals[r.J], dtype=float).reshape(-1)
             out.append(("closure", None, r, J))
         for k, (c, full) in enumerate(zip(self.contacts, states, strict=True)):
-            s, rolling = _slide(full), _roll(full)
+            s = _slide(full)
             if s == "open":
                 continue
             Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
             force = Jn.copy()
-            if rolling in ("rolls+", "rolls-"):      # the couple -delta N sign(omega_r)
-                sign = 1.0 if rolling == "rolls+" else -1.0
-                force -= c.delta * sign * np.asarray(vals[c.roll.J], dtype=float).reshape(-1)
+            for kind, (r, coefficient) in c.couples.items():
+                part = _part(full, kind)
+                if part in PARTS[kind][:2]:         # the couple -coefficient N sign(rate)
+                    sign = 1.0 if part == PARTS[kind][0] else -1.0
+                    force -= coefficient * sign * np.asarray(vals[r.J], dtype=float).reshape(-1)
             if s.startswith("slip"):
                 direction = self._slip_direction(s, c.sliding(vals))
                 for d, r in zip(direction, c.tangents, strict=True):
@@ -257,8 +278,10 @@ class _Model:
                 for i, r in enumerate(c.tangents):
                     J = np.asarray(vals[r.J], dtype=float).reshape(-1)
                     out.append(("T", (k, i), r, J))
-            if rolling == "locked":
-                out.append(("M", k, c.roll, np.asarray(vals[c.roll.J], dtype=float).reshape(-1)))
+            for kind, (r, _) in c.couples.items():
+                if _part(full, kind) == PARTS[kind][2]:
+                    out.append(("M", (k, kind), r,
+                                np.asarray(vals[r.J], dtype=float).reshape(-1)))
         return out
 
     def bias(self, vals, r):
@@ -344,14 +367,16 @@ class _Model:
             out.append((N, T))
         return out
 
-    def rolling_couple(self, t, y, states, lam, layout, k, N):
-        """The rolling couple of contact k (its component on the rolling axis)."""
-        c, rolling = self.contacts[k], _roll(states[k])
-        if rolling == "locked":
-            return next(float(lam[i]) for i, (kind, key) in enumerate(layout)
-                        if kind == "M" and key == k)
-        if rolling in ("rolls+", "rolls-"):
-            return -c.delta * N * (1.0 if rolling == "rolls+" else -1.0)
+    def couple(self, t, y, states, lam, layout, k, N, kind="roll"):
+        """The couple ``kind`` ("roll", "spin") of contact k: its component on the rolling
+        axis, or on the normal."""
+        part = _part(states[k], kind)
+        if part == PARTS[kind][2]:
+            return next(float(lam[i]) for i, (what, key) in enumerate(layout)
+                        if what == "M" and key == (k, kind))
+        if part in PARTS[kind][:2]:
+            coefficient = self.contacts[k].couples[kind][1]
+            return -coefficient * N * (1.0 if part == PARTS[kind][0] else -1.0)
         return 0.0
 
     def project(self, t, y, states):

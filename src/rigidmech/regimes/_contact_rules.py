@@ -10,7 +10,7 @@ import itertools
 import numpy as np
 
 from .._core.errors import ArgumentError
-from ._contact_model import _roll, _slide
+from ._contact_model import PARTS, _compose, _part, _slide
 from .phased import Guard, Regime
 
 
@@ -26,11 +26,12 @@ class _Rules:
         return self.m.contact_forces(t, y, states, lam, layout)
 
     def _merge(self, k, old, new):
-        """The state ``new`` of contact k (a sliding state), keeping its rolling part."""
-        if self.m.contacts[k].roll is None or new in ("open", "impact") or \
-                _roll(new) is not None:
+        """The state ``new`` of contact k (a sliding state), keeping the parts of its
+        couples (held, by default, after an opening)."""
+        kinds = self.m.contacts[k].couples
+        if not kinds or new in ("open", "impact") or ", " in new:
             return new
-        return f"{new}, {_roll(old) or 'locked'}"
+        return _compose(new, [_part(old, kind) or PARTS[kind][2] for kind in kinds])
 
     def _with(self, states, k, state):
         return tuple(self._merge(i, s, state) if i == k else s for i, s in enumerate(states))
@@ -38,52 +39,63 @@ class _Rules:
     def _with_all(self, states, ks, state):
         return tuple(self._merge(i, s, state) if i in ks else s for i, s in enumerate(states))
 
-    def _with_roll(self, states, k, rolling):
-        return self._with(states, k, f"{_slide(states[k])}, {rolling}")
+    def _with_part(self, states, k, kind, part):
+        """``states`` with the part of the couple ``kind`` of contact k set to ``part``."""
+        kinds = self.m.contacts[k].couples
+        new = _compose(_slide(states[k]), [part if q == kind else _part(states[k], q)
+                                           for q in kinds])
+        return self._with(states, k, new)
 
-    def couple(self, t, y, states, k):
-        """(N, M_r) of contact k in the regime ``states``."""
+    def couple(self, t, y, states, k, kind):
+        """(N, M) of contact k in the regime ``states``, M its couple ``kind``."""
         _, lam, layout = self.m.solve(t, y, states)
         N = self.m.contact_forces(t, y, states, lam, layout)[k][0]
-        return N, self.m.rolling_couple(t, y, states, lam, layout, k, N)
+        return N, self.m.couple(t, y, states, lam, layout, k, N, kind)
 
-    def after_roll_stop(self, t, y, states, k):
-        """The states where the rolling rotation of contact k vanishes: it stays without
-        rolling if the couple needed is within delta N, else it rolls back against it."""
-        locked = self._with_roll(states, k, "locked")
-        N, M = self.couple(t, self.m.project(t, y, locked), locked, k)
-        if abs(M) <= self.m.contacts[k].delta * N * (1 + 1e-12) + 1e-300:
+    def after_couple_stop(self, t, y, states, k, kind):
+        """The states where the rate of the couple ``kind`` of contact k (its rolling or
+        pivoting rotation) vanishes: held if the couple needed is within coefficient * N,
+        else moving back against it (ch. 13.1.3)."""
+        plus, minus, held = PARTS[kind]
+        locked = self._with_part(states, k, kind, held)
+        N, M = self.couple(t, self.m.project(t, y, locked), locked, k, kind)
+        if abs(M) <= self.m.contacts[k].couples[kind][1] * N * (1 + 1e-12) + 1e-300:
             return locked
-        return self._with_roll(states, k, "rolls+" if M < 0 else "rolls-")
+        return self._with_part(states, k, kind, plus if M < 0 else minus)
 
-    def roll_guard(self, states, k):
-        c, m, rolling = self.m.contacts[k], self.m, _roll(states[k])
-        if rolling == "locked":
+    def couple_guard(self, states, k, kind):
+        c, m = self.m.contacts[k], self.m
+        row, coefficient = c.couples[kind]
+        plus, minus, held = PARTS[kind]
+        verb = "rolling" if kind == "roll" else "spinning"
+        if _part(states[k], kind) == held:
             def bound(t, y):
-                N, M = self.couple(t, y, states, k)
-                return c.delta * N - abs(M)
+                N, M = self.couple(t, y, states, k, kind)
+                return coefficient * N - abs(M)
 
-            def to_roll(t, y):
-                M = self.couple(t, y, states, k)[1]
-                return m.regime_name(self._with_roll(states, k, "rolls+" if M < 0 else
-                                                     "rolls-"))
-            return Guard(f"{c.name} starts rolling", bound, target=to_roll, direction=-1)
-        sign = 1.0 if rolling == "rolls+" else -1.0
+            def to_move(t, y):
+                M = self.couple(t, y, states, k, kind)[1]
+                return m.regime_name(self._with_part(states, k, kind, plus if M < 0 else minus))
+            return Guard(f"{c.name} starts {verb}", bound, target=to_move, direction=-1)
+        sign = 1.0 if _part(states[k], kind) == plus else -1.0
 
         def rate(t, y):
-            return sign * float(m.values(t, y)[c.roll.c])
-        return Guard(f"{c.name} stops rolling", rate, direction=-1,
-                     target=lambda t, y: m.regime_name(self.after_roll_stop(t, y, states, k)),
-                     reset=lambda t, y: m.project(t, y, self._with_roll(states, k, "locked")))
+            return sign * float(m.values(t, y)[row.c])
+        return Guard(f"{c.name} stops {verb}", rate, direction=-1,
+                     target=lambda t, y: m.regime_name(
+                         self.after_couple_stop(t, y, states, k, kind)),
+                     reset=lambda t, y: m.project(t, y, self._with_part(states, k, kind, held)))
 
-    def rolling_state(self, t, y, states, k):
-        """The rolling part of contact k from its rolling rotation (at a start or a
-        landing): rolls+/- if it rolls, else locked if delta N holds it."""
-        c = self.m.contacts[k]
-        w = float(self.m.values(t, y)[c.roll.c])
-        if abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
-            return self._with_roll(states, k, "rolls+" if w > 0 else "rolls-")
-        return self.after_roll_stop(t, y, states, k)
+    def couple_states(self, t, y, states, k):
+        """The parts of the couples of contact k from their rates (at a start or a landing):
+        moving if the rate is not zero, else held if coefficient * N holds it."""
+        for kind, (row, _) in self.m.contacts[k].couples.items():
+            w = float(self.m.values(t, y)[row.c])
+            if abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+                states = self._with_part(states, k, kind, PARTS[kind][0 if w > 0 else 1])
+            else:
+                states = self.after_couple_stop(t, y, states, k, kind)
+        return states
 
     def _slip_all(self, states, group, T):
         """``states`` with every contact of ``group`` slipping against the total T."""
@@ -142,8 +154,9 @@ class _Rules:
         s = _slide(s)
         if s == "open":
             return [self._landing_guard(states, k)]
-        if c.roll is not None:
-            return self._sliding_guards(states, k, s) + [self.roll_guard(states, k)]
+        if c.couples:
+            return self._sliding_guards(states, k, s) + [self.couple_guard(states, k, kind)
+                                                         for kind in c.couples]
         return self._sliding_guards(states, k, s)
 
     def _sliding_guards(self, states, k, s):
@@ -237,7 +250,7 @@ class _Rules:
                 out = self._with(states, k, "slip")
         else:
             out = self.after_stop(t, y, states, k)
-        return out if c.roll is None else self.rolling_state(t, y, out, k)
+        return self.couple_states(t, y, out, k) if c.couples else out
 
     def start(self, t, y):
         states = []
@@ -255,10 +268,13 @@ class _Rules:
                     states.append("slip")
             else:
                 states.append("stick")
-            if c.roll is not None and states[-1] != "open":
-                w = float(self.m.values(t, y)[c.roll.c])
-                moving = abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1)
-                states[-1] += ", " + (("rolls+" if w > 0 else "rolls-") if moving else "locked")
+            if states[-1] != "open":          # the couples: moving or held
+                parts = []
+                for kind, (row, _) in c.couples.items():
+                    w = float(self.m.values(t, y)[row.c])
+                    moving = abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1)
+                    parts.append(PARTS[kind][(0 if w > 0 else 1) if moving else 2])
+                states[-1] = _compose(states[-1], parts)
         states = tuple(states)
         forces = self.forces(t, y, states)
         for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
@@ -274,6 +290,6 @@ class _Rules:
                 group = self.m.group_of(self.m.values(t, y), states, k)
                 states = self._slip_all(states, group, sum(forces[j][1] for j in group))
         for k, c in enumerate(self.m.contacts):
-            if c.roll is not None and states[k] != "open":
-                states = self.rolling_state(t, y, self._with(states, k, states[k]), k)
+            if c.couples and states[k] != "open":
+                states = self.couple_states(t, y, states, k)
         return self.m.regime_name(states)

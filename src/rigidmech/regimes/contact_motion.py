@@ -125,6 +125,16 @@ class ContactMotion(PhasedMotion):
         rolling rotation on the rolling axis (the tangent along which omega_r lies); while
         it rolls ``M_r = -delta N sign(omega_r)``, while it does not ``|M_r| <= delta N``.
         At a switching instant the phase that ends there is used."""
+        return self._couples(time, "roll")
+
+    def pivoting_couples(self, time) -> dict:
+        """The pivoting couple of each contact with a pivoting resistance at ``time``:
+        ``{name: (N, M_p, omega_n)}``, M_p and omega_n the components of the couple and of
+        the rotation on the normal; while it spins ``M_p = -eta N sign(omega_n)``, while it
+        does not ``|M_p| <= eta N``."""
+        return self._couples(time, "spin")
+
+    def _couples(self, time, kind):
         time = float(time)
         ends = np.array([p.end for p in self.phases])
         k = min(int(np.searchsorted(ends, time, side="left")), len(self.phases) - 1)
@@ -136,9 +146,9 @@ class ContactMotion(PhasedMotion):
         forces = model.contact_forces(time, y, states, lam, rows)
         vals = model.values(time, y)
         return {c.name: (forces[i][0],
-                         model.rolling_couple(time, y, states, lam, rows, i, forces[i][0]),
-                         float(vals[c.roll.c]))
-                for i, c in enumerate(model.contacts) if c.roll is not None}
+                         model.couple(time, y, states, lam, rows, i, forces[i][0], kind),
+                         float(vals[c.couples[kind][0].c]))
+                for i, c in enumerate(model.contacts) if kind in c.couples}
 
 
 def _state_vector(values, coordinates, what):
