@@ -35,14 +35,17 @@ cone). A contact whose normal force reaches 0 lifts off (a box tipping about its
 corner). Conditions that stay dependent after this merge (a table on four legs, whose normal
 forces are not determined) are refused as hyperstatic.
 
-**Rolling resistance.** A contact given ``rolling=RollingResistance(delta)`` (planar rolling:
-the rolling rotation omega_r along one tangent) has a second part in its state (ch. 13.1.3):
-``rolls+`` / ``rolls-`` (the couple ``-delta N sign(omega_r)`` acts with N: the generalised
-force of the contact gains ``-delta sign(omega_r) A_r^T N``, A_r the row of omega_r) or
-``locked`` (omega_r = 0 is a condition, its multiplier the couple M_r, which must stay within
-``|M_r| <= delta N``; beyond it the body rolls against M_r). Regimes are then named
-``"stick, rolls+"``, ``"slip+, locked"``, ... and :meth:`ContactMotion.rolling_couples` gives
-the couples.
+**Rolling and pivoting resistance.** A contact given ``rolling=RollingResistance(delta)``
+(planar rolling: the rolling rotation omega_r along one tangent) or
+``pivoting=PivotingResistance(eta)`` (the spin omega_n about the normal) has a part in its
+state for each couple (ch. 13.1.3): ``rolls+`` / ``rolls-`` (the couple
+``-delta N sign(omega_r)`` acts with N: the generalised force of the contact gains
+``-delta sign(omega_r) A_r^T N``, A_r the row of omega_r) or ``locked`` (omega_r = 0 is a
+condition, its multiplier the couple M_r, which must stay within ``|M_r| <= delta N``; beyond
+it the body rolls against M_r); likewise ``spins+`` / ``spins-`` / ``no spin`` with eta.
+Regimes are then named ``"stick, rolls+"``, ``"slip+, locked"``, ``"stick, no spin"``, ...
+and :meth:`ContactMotion.rolling_couples` and :meth:`ContactMotion.pivoting_couples` give the
+couples.
 
 Where a normal force N would become negative (guard "lifts off") the contact opens: if the
 contact has a ``gap`` (the distance between the surfaces), the motion goes on with the contact
@@ -229,7 +232,8 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     ContactMotion
         Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one
         contact; followed by ``, rolls+``, ``, rolls-`` or ``, locked`` with a rolling
-        resistance), or ``"I: stick; J: slip+"`` (several, by the names of their points).
+        resistance, ``, spins+``, ``, spins-`` or ``, no spin`` with a pivoting one), or
+        ``"I: stick; J: slip+"`` (several, by the names of their points).
 
     Raises
     ------
