@@ -33,7 +33,7 @@ from ..kinematics.transmissions import GearPair
 from ..torsors import Torsor
 from ..vectors import Frame, Point, Vector
 from ..vectors.points import check_point
-from .contact_laws import Coulomb
+from .contact_laws import Coulomb, PivotingResistance, RollingResistance
 
 __all__ = ["RollingContact", "GearMesh", "FrictionContact"]
 
@@ -385,6 +385,16 @@ class FrictionContact:
         the floor, ``y``). With it, a contact that lifts off **opens** and the motion goes on
         in flight until the gap closes again (a perfectly plastic impact: the normal relative
         velocity drops to zero); without it, the motion stops where the contact lifts off.
+    rolling : RollingResistance, optional
+        Resistance to rolling of coefficient delta, a length (ch. 13.1.3): while S2 rolls on
+        S1 (rolling rotation omega_r, the part of omega(S2/S1) perpendicular to n) the
+        couple ``-delta N omega_r/|omega_r|`` acts on it at I; while it does not roll the
+        couple that holds it is bounded by ``delta N``. Supported for a planar rolling
+        (omega_r along one tangent).
+    pivoting : PivotingResistance, optional
+        Resistance to pivoting of coefficient eta, a length (ch. 13.1.3): while S2 spins on
+        S1 about the normal (omega_n = omega(S2/S1) . n) the couple ``-eta N sign(omega_n) n``
+        acts on it; while it does not spin the couple that holds it is bounded by ``eta N``.
 
     Examples
     --------
@@ -401,13 +411,21 @@ class FrictionContact:
     FrictionContact(R1 on R0 at I, friction=Coulomb(static=0.5, kinetic=0.4))
     >>> c.action_torsor("I")[0].resultant
     T1_I*R0.i + N_I*R0.j - T2_I*R0.k
+
+    A wheel with a rolling resistance of 2 mm:
+
+    >>> from rigidmech.actions import RollingResistance
+    >>> w = FrictionContact(c.contact, friction=Coulomb(0.5), rolling=RollingResistance(0.002))
+    >>> w.rolling
+    RollingResistance(0.00200000000000000)
     """
 
-    __slots__ = ("_contact", "_friction", "_gap")
+    __slots__ = ("_contact", "_friction", "_gap", "_rolling", "_pivoting")
     one_sided = True
 
     def __init__(self, contact: ContactKinematics, *, friction: Coulomb | None = None,
-                 gap=None):
+                 gap=None, rolling: RollingResistance | None = None,
+                 pivoting: PivotingResistance | None = None):
         if not isinstance(contact, ContactKinematics):
             raise ArgumentTypeError(
                 f"`contact` must be a ContactKinematics (rigidmech.kinematics, or "
@@ -424,13 +442,26 @@ class FrictionContact:
             if not isinstance(gap, sp.Expr) or gap.is_number:
                 raise ArgumentError(f"`gap` must be an expression of the coordinates (the "
                                     f"distance between the surfaces); got {gap!r}.")
+        if rolling is not None and not isinstance(rolling, RollingResistance):
+            raise ArgumentTypeError(
+                f"`rolling` must be a RollingResistance law or None; got "
+                f"{type(rolling).__name__}.")
+        if pivoting is not None and not isinstance(pivoting, PivotingResistance):
+            raise ArgumentTypeError(
+                f"`pivoting` must be a PivotingResistance law or None; got "
+                f"{type(pivoting).__name__}.")
         self._contact, self._friction, self._gap = contact, friction, gap
+        self._rolling, self._pivoting = rolling, pivoting
 
     gap = property(lambda self: self._gap,
                    doc="The distance between the surfaces (an expression), or None.")
     contact = property(lambda self: self._contact,
                        doc="The kinematics of the contact (point, normal, sliding velocity).")
     friction = property(lambda self: self._friction, doc="The Coulomb law, or None.")
+    rolling = property(lambda self: self._rolling,
+                       doc="The law of rolling resistance, or None.")
+    pivoting = property(lambda self: self._pivoting,
+                        doc="The law of pivoting resistance, or None.")
 
     @property
     def solids(self) -> tuple:
@@ -448,4 +479,6 @@ class FrictionContact:
     def __repr__(self):
         c = self._contact
         extra = "" if self._friction is None else f", friction={self._friction!r}"
+        extra += "" if self._rolling is None else f", rolling={self._rolling!r}"
+        extra += "" if self._pivoting is None else f", pivoting={self._pivoting!r}"
         return f"FrictionContact({c.moving.name} on {c.other.name} at {c.point.name}{extra})"

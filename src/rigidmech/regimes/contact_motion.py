@@ -19,6 +19,34 @@ contact, and :func:`contact_motion` derives them itself from the system, for eac
 * a frictionless contact (``friction=None``) keeps only its normal condition (regime
   ``contact``).
 
+**Contacts that stick together.** A rigid body sticking on a plane at two points (a box on a
+floor) has the same sliding velocity at both: their tangential conditions coincide, and the
+fundamental principle, which gives only the resultant and the moment of the actions on a
+rigid body (ch. 14.2), determines the total T_A + T_B of their tangential forces but not its
+split (the stick regime is hyperstatic in the tangential direction, ch. 13.2.5), while the
+normal forces and the motion stay determined. Such contacts share one tangential condition,
+whose multiplier is the total; as for a single contact (ch. 13.1.2), sticking holds while the
+total lies within the sum of the limits, ``|T_A + T_B| <= f_s,A N_A + f_s,B N_B``, the
+textbook treatment of a body on a plane with both contacts sticking. When it leaves it, they
+slip together against it; when their common sliding velocity vanishes, they stick together
+if the total needed lies within the sum of the limits. ``contact_actions`` reports the total
+split in proportion to the limits f_s N (each contact then uses the same fraction of its
+cone). A contact whose normal force reaches 0 lifts off (a box tipping about its other
+corner). Conditions that stay dependent after this merge (a table on four legs, whose normal
+forces are not determined) are refused as hyperstatic.
+
+**Rolling and pivoting resistance.** A contact given ``rolling=RollingResistance(delta)``
+(planar rolling: the rolling rotation omega_r along one tangent) or
+``pivoting=PivotingResistance(eta)`` (the spin omega_n about the normal) has a part in its
+state for each couple (ch. 13.1.3): ``rolls+`` / ``rolls-`` (the couple
+``-delta N sign(omega_r)`` acts with N: the generalised force of the contact gains
+``-delta sign(omega_r) A_r^T N``, A_r the row of omega_r) or ``locked`` (omega_r = 0 is a
+condition, its multiplier the couple M_r, which must stay within ``|M_r| <= delta N``; beyond
+it the body rolls against M_r); likewise ``spins+`` / ``spins-`` / ``no spin`` with eta.
+Regimes are then named ``"stick, rolls+"``, ``"slip+, locked"``, ``"stick, no spin"``, ...
+and :meth:`ContactMotion.rolling_couples` and :meth:`ContactMotion.pivoting_couples` give the
+couples.
+
 Where a normal force N would become negative (guard "lifts off") the contact opens: if the
 contact has a ``gap`` (the distance between the surfaces), the motion goes on with the contact
 **open** (no condition, no action) until the gap closes again (guard "lands": a perfectly
@@ -27,6 +55,11 @@ the contact sticks or slips from there); without a gap the motion **stops** ther
 is frictionless (no tangential impulse). The phases come back as a :class:`ContactMotion` (a
 :class:`~rigidmech.regimes.PhasedMotion` that also gives the contact actions).
 
+The conditions of each regime are enforced at the acceleration level; with
+``stabilization=(alpha, beta)`` :func:`contact_motion` adds Baumgarte's correction, as a
+:class:`~rigidmech.dynamics.System` does for its closures (the gap is the position residual
+of a normal condition).
+
 The state is y = (q, q'), q the system's coordinates. The coordinates of each body in contact
 must leave the contact free in the normal direction (N is a multiplier) and in the
 tangential ones (T is a multiplier while sticking).
@@ -34,16 +67,15 @@ tangential ones (T is a multiplier while sticking).
 
 from __future__ import annotations
 
-import itertools
 import math
 
 import numpy as np
-import sympy as sp
 
-from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from ..dynamics import System
-from ..vectors import t as time_symbol
-from .phased import Guard, PhasedMotion, Regime, integrate_phases
+from ._contact_model import _Model
+from ._contact_rules import _Rules
+from .phased import PhasedMotion, integrate_phases
 
 __all__ = ["contact_motion", "ContactMotion"]
 
@@ -90,244 +122,36 @@ class ContactMotion(PhasedMotion):
             out[c.name] = (N, T, c.sliding(self._model.values(time, y)))
         return out
 
+    def rolling_couples(self, time) -> dict:
+        """The rolling couple of each contact with a rolling resistance at ``time``:
+        ``{name: (N, M_r, omega_r)}``, M_r and omega_r the components of the couple and of the
+        rolling rotation on the rolling axis (the tangent along which omega_r lies); while
+        it rolls ``M_r = -delta N sign(omega_r)``, while it does not ``|M_r| <= delta N``.
+        At a switching instant the phase that ends there is used."""
+        return self._couples(time, "roll")
 
-class _Row:
-    """One constraint velocity c(q, q', t) = J(q, t) q' + ..., numerically."""
+    def pivoting_couples(self, time) -> dict:
+        """The pivoting couple of each contact with a pivoting resistance at ``time``:
+        ``{name: (N, M_p, omega_n)}``, M_p and omega_n the components of the couple and of
+        the rotation on the normal; while it spins ``M_p = -eta N sign(omega_n)``, while it
+        does not ``|M_p| <= eta N``."""
+        return self._couples(time, "spin")
 
-    __slots__ = ("J", "h", "c")
-
-    def __init__(self, J, h, c):
-        self.J, self.h, self.c = J, h, c
-
-
-class _Contact:
-    """A contact's numeric rows: the normal one and 1 or 2 tangential ones."""
-
-    __slots__ = ("name", "law", "normal", "tangents", "fs", "fk", "gap")
-
-    def __init__(self, name, law, normal, tangents, gap=None):
-        self.name, self.law, self.normal, self.tangents = name, law, normal, tangents
-        self.gap = gap                        # index of the gap in the evaluated list
-        if law is not None:
-            try:
-                self.fs, self.fk = float(law.static), float(law.kinetic)
-            except TypeError:
-                raise ArgumentError(
-                    f"the friction coefficients of contact {name} must be numbers to integrate; "
-                    f"got {law!r}.") from None
-        else:
-            self.fs = self.fk = 0.0
-
-    @property
-    def states(self):
-        if self.law is None:
-            out = ("contact",)
-        else:
-            out = ("stick", "slip+", "slip-") if len(self.tangents) == 1 else ("stick", "slip")
-        return out + (("open",) if self.gap is not None else ())
-
-    def sliding(self, vals):
-        return np.array([vals[r.c] for r in self.tangents])
-
-
-class _Model:
-    """The numeric pieces of a system with contacts: M, f, the rows, and the regime solve."""
-
-    def __init__(self, system, params):
-        eqs = system.equations_of_motion(open_contacts=True)
-        qs = system.coordinates
-        n = len(qs)
-        q_sym, u_sym, a_sym, rule = system.symbols()
-        self.n = n
-        exprs = [sp.Matrix(eqs.mass_matrix).xreplace(rule), sp.Matrix(eqs.forcing).xreplace(rule)]
-        self.closures = []
-        self.contacts = []
-        rows, gaps = [], []
-
-        def row(c):
-            c = sp.sympify(c).xreplace(rule)
-            J = [sp.diff(c, u) for u in u_sym]
-            h = sum((sp.diff(c, q) * u for q, u in zip(q_sym, u_sym, strict=True)),
-                    sp.S.Zero) + sp.diff(c, time_symbol)
-            rows.append((J, h, c))
-            return len(rows) - 1
-
-        for _label, velocity, _ in system.closure_conditions():
-            self.closures.append(row(velocity))
-        for k, (_, child, contact) in enumerate(system.contacts):
-            kin = contact.contact
-            name = kin.point.name if kin.point.name not in [c.name for c in self.contacts] \
-                else f"{kin.point.name}{k + 1}"
-            v = kin.sliding_velocity
-            t1, t2 = kin.tangents()
-            vn = sp.simplify(v.dot(kin.normal).xreplace(rule))
-            if vn == 0:
-                raise ConnectionError_(
-                    f"the contact {name} of {child.name} leaves no normal motion: the "
-                    f"coordinates {list(qs)} keep the contact closed, so its normal force is "
-                    "not a multiplier. Give the body a coordinate along the normal (e.g. its "
-                    "height) and start it on the contact.")
-            comps = [sp.simplify(v.dot(e).xreplace(rule)) for e in (t1, t2)]
-            tangential = [c for c in comps if c != 0]
-            if contact.friction is not None and not tangential:
-                raise ConnectionError_(
-                    f"the contact {name} of {child.name} cannot slip: its coordinates allow "
-                    "no sliding velocity, so friction has no regime to switch between.")
-            normal = row(v.dot(kin.normal))
-            tang = [row(v.dot(e)) for e, c in zip((t1, t2), comps, strict=True) if c != 0]
-            gap = None
-            if contact.gap is not None:
-                gaps.append(contact.gap.xreplace(rule))
-                gap = len(gaps) - 1
-            self.contacts.append(_Contact(name, contact.friction, normal, tang, gap))
-        self._compile(exprs, rows, q_sym, u_sym, params, gaps)
-        for c in self.contacts:
-            c.normal = self._rows[c.normal]
-            c.tangents = [self._rows[i] for i in c.tangents]
-            if c.gap is not None:                 # gaps come after the rows
-                c.gap = 2 + 3 * len(rows) + c.gap
-        self.closures = [self._rows[i] for i in self.closures]
-
-    def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
-        flat = [*exprs, *[e for J, h, c in rows for e in (sp.Matrix([J]), h, c)], *gaps]
-        free = set()
-        for e in flat:
-            free |= sp.sympify(e).free_symbols
-        constants = sorted(free - set(q_sym) - set(u_sym) - {time_symbol}, key=lambda s: s.name)
-        missing = [s.name for s in constants if s.name not in params]
-        if missing:
-            raise ArgumentError(f"missing values for the parameters {missing}; pass them as "
-                                f"keywords, e.g. {missing[0]}=1.0.")
-        unknown = sorted(set(params) - {s.name for s in constants})
-        if unknown:
-            raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
-                                f"{[s.name for s in constants]}.")
-        values = {}
-        for s in constants:
-            try:
-                values[s] = float(params[s.name])
-            except (TypeError, ValueError):
-                raise ArgumentTypeError(f"the value of parameter `{s.name}` must be a real "
-                                        f"number; got {params[s.name]!r}.") from None
-        flat = [sp.sympify(e).xreplace(values) for e in flat]
-        fn = sp.lambdify((time_symbol, *q_sym, *u_sym), flat, modules="numpy", cse=True)
-        n = self.n
-        self._fn = fn
-        # indices into the evaluated list [M, f, J_0, h_0, c_0, J_1, ...]
-        self._rows = [_Row(2 + 3 * i, 3 + 3 * i, 4 + 3 * i) for i in range(len(rows))]
-        self._n = n
-        self._memo = (None, None)
-
-    def values(self, t, y):
-        key = (float(t), np.asarray(y, dtype=float).tobytes())
-        if self._memo[0] != key:
-            self._memo = (key, self._fn(t, *y[: self._n], *y[self._n:]))
-        return self._memo[1]
-
-    # -- one regime ---------------------------------------------------------------------
-    def states_of(self, regime):
-        if len(self.contacts) == 1:
-            return (regime,)
-        return tuple(part.split(": ", 1)[1] for part in regime.split("; "))
-
-    def regime_name(self, states):
-        if len(self.contacts) == 1:
-            return states[0]
-        return "; ".join(f"{c.name}: {s}" for c, s in zip(self.contacts, states, strict=True))
-
-    def solve(self, t, y, states, vals=None):
-        """(q'', multipliers, row layout) of the regime ``states`` at (t, y)."""
-        n = self.n
-        vals = self.values(t, y) if vals is None else vals
-        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
-        f = np.asarray(vals[1], dtype=float).reshape(-1)
-        A, G, b, layout = [], [], [], []
-        for r in self.closures:
-            J = np.asarray(vals[r.J], dtype=float).reshape(-1)
-            A.append(J), G.append(J), b.append(-float(vals[r.h]))
-            layout.append(("closure", None))
-        for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
-            if s == "open":
-                continue
-            Jn = np.asarray(vals[c.normal.J], dtype=float).reshape(-1)
-            Jt = [np.asarray(vals[r.J], dtype=float).reshape(-1) for r in c.tangents]
-            force = Jn.copy()
-            if s.startswith("slip"):
-                direction = self._slip_direction(s, c.sliding(vals))
-                for d, J in zip(direction, Jt, strict=True):
-                    force -= c.fk * d * J
-            A.append(Jn), G.append(force), b.append(-float(vals[c.normal.h]))
-            layout.append(("N", k))
-            if s == "stick":
-                for i, (J, r) in enumerate(zip(Jt, c.tangents, strict=True)):
-                    A.append(J), G.append(J), b.append(-float(vals[r.h]))
-                    layout.append(("T", (k, i)))
-        m = len(A)
-        if m == 0:
-            return np.linalg.solve(M, f), np.zeros(0), layout
-        K = np.zeros((n + m, n + m))
-        K[:n, :n] = M
-        K[:n, n:] = -np.array(G).T
-        K[n:, :n] = np.array(A)
-        rhs = np.concatenate([f, b])
-        rows = np.array(A)
-        if np.linalg.matrix_rank(rows, tol=1e-10 * max(1.0, float(np.abs(rows).max()))) < m:
-            raise NumericalError(
-                f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
-                "conditions are not independent, so their multipliers (the contact forces) "
-                "are not determined (e.g. a body sticking on a floor at two points).")
-        x = np.linalg.solve(K, rhs)
-        return x[:n], x[n:], layout
-
-    @staticmethod
-    def _slip_direction(state, vs):
-        if state == "slip+":
-            return np.array([1.0])
-        if state == "slip-":
-            return np.array([-1.0])
-        norm = float(np.linalg.norm(vs))
-        return vs / norm if norm > 0 else np.zeros_like(vs)
-
-    def contact_forces(self, t, y, states, lam, layout):
-        """[(N, T components on the tangents)] for each contact."""
-        vals = self.values(t, y)
-        out = []
-        for k, (c, s) in enumerate(zip(self.contacts, states, strict=True)):
-            if s == "open":
-                out.append((0.0, np.zeros(len(c.tangents))))
-                continue
-            N = next(float(lam[i]) for i, (kind, key) in enumerate(layout)
-                     if kind == "N" and key == k)
-            if s == "stick":
-                T = np.array([lam[i] for i, (kind, key) in enumerate(layout)
-                              if kind == "T" and key[0] == k], dtype=float)
-            elif s.startswith("slip"):
-                T = -c.fk * N * self._slip_direction(s, c.sliding(vals))
-            else:
-                T = np.zeros(len(c.tangents))
-            out.append((N, T))
-        return out
-
-    def project(self, t, y, states):
-        """y with q' projected (in the metric of M) onto the conditions of ``states``."""
-        n = self.n
-        vals = self.values(t, y)
-        M = np.atleast_2d(np.asarray(vals[0], dtype=float))
-        rows = [r for r in self.closures]
-        for c, s in zip(self.contacts, states, strict=True):
-            if s == "open":
-                continue
-            rows.append(c.normal)
-            if s == "stick":
-                rows.extend(c.tangents)
-        if not rows:
-            return np.array(y, dtype=float)
-        A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for r in rows])
-        c = np.array([float(vals[r.c]) for r in rows])
-        u = np.array(y[n:], dtype=float)
-        Minv_At = np.linalg.solve(M, A.T)
-        u = u - Minv_At @ np.linalg.solve(A @ Minv_At, c)
-        return np.concatenate([np.asarray(y[:n], dtype=float), u])
+    def _couples(self, time, kind):
+        time = float(time)
+        ends = np.array([p.end for p in self.phases])
+        k = min(int(np.searchsorted(ends, time, side="left")), len(self.phases) - 1)
+        phase = self.phases[k]
+        y = phase.solution.sol(time)
+        model = self._model
+        states = model.states_of(phase.regime)
+        _, lam, rows = model.solve(time, y, states)
+        forces = model.contact_forces(time, y, states, lam, rows)
+        vals = model.values(time, y)
+        return {c.name: (forces[i][0],
+                         model.couple(time, y, states, lam, rows, i, forces[i][0], kind),
+                         float(vals[c.couples[kind][0].c]))
+                for i, c in enumerate(model.contacts) if kind in c.couples}
 
 
 def _state_vector(values, coordinates, what):
@@ -356,179 +180,23 @@ def _state_vector(values, coordinates, what):
     return arr
 
 
-class _Rules:
-    """The guards and transitions of every regime of a model."""
-
-    def __init__(self, model):
-        self.m = model
-        self.directions = {}           # contact index -> slip direction at the phase start
-
-    def forces(self, t, y, states):
-        _, lam, layout = self.m.solve(t, y, states)
-        return self.m.contact_forces(t, y, states, lam, layout)
-
-    def _with(self, states, k, state):
-        return tuple(state if i == k else s for i, s in enumerate(states))
-
-    def after_stop(self, t, y, states, k):
-        """The state of contact k where its sliding velocity vanishes."""
-        c = self.m.contacts[k]
-        stick = self._with(states, k, "stick")
-        yp = self.m.project(t, y, stick)
-        N, T = self.forces(t, yp, stick)[k]
-        if N >= 0 and float(np.linalg.norm(T)) <= c.fs * N * (1 + 1e-12) + 1e-300:
-            return "stick"
-        return self.slip_state(k, T)
-
-    def slip_state(self, k, T):
-        """The slip that a needed friction T cannot hold: opposite to T."""
-        if len(self.m.contacts[k].tangents) == 1:
-            return "slip+" if T[0] < 0 else "slip-"
-        self.directions[k] = -T / float(np.linalg.norm(T))
-        return "slip"
-
-    def regimes(self):
-        out = []
-        for states in itertools.product(*(c.states for c in self.m.contacts)):
-            guards = []
-            for k, s in enumerate(states):
-                guards.extend(self.guards(states, k, s))
-            out.append(Regime(self.m.regime_name(states), self.rhs(states), guards))
-        return out
-
-    def rhs(self, states):
-        n = self.m.n
-
-        def rhs(t, y):
-            a, _, _ = self.m.solve(t, y, states)
-            return np.concatenate([y[n:], a])
-        return rhs
-
-    def guards(self, states, k, s):
-        c, m = self.m.contacts[k], self.m
-        name = m.regime_name
-        if s == "open":
-            return [self._landing_guard(states, k)]
-
-        def normal(t, y):
-            return self.forces(t, y, states)[k][0]
-        opened = None if c.gap is None else name(self._with(states, k, "open"))
-        out = [Guard(f"{c.name} lifts off", normal, target=opened, direction=-1)]
-        if s == "stick":
-            def cone(t, y):
-                N, T = self.forces(t, y, states)[k]
-                return c.fs * N - float(np.linalg.norm(T))
-
-            def to_slip(t, y):
-                return name(self._with(states, k, self.slip_state(k, self.forces(t, y,
-                                                                                 states)[k][1])))
-            out.append(Guard(f"{c.name} starts slipping", cone, target=to_slip, direction=-1))
-        elif s in ("slip+", "slip-"):
-            sign = 1.0 if s == "slip+" else -1.0
-            row = c.tangents[0]
-
-            def speed(t, y):
-                return sign * float(m.values(t, y)[row.c])
-            out.append(Guard(f"{c.name} stops slipping", speed, direction=-1,
-                             target=lambda t, y: name(self._with(
-                                 states, k, self.after_stop(t, y, states, k))),
-                             reset=lambda t, y: m.project(t, y, self._with(states, k, "stick"))))
-        elif s == "slip":
-            out.append(self._slip2_guard(states, k))
-        return out
-
-    def _slip2_guard(self, states, k):
-        c, m = self.m.contacts[k], self.m
-
-        def along(t, y):
-            return float(c.sliding(m.values(t, y)) @ self.directions[k])
-
-        def stopped(t, y):
-            vs = c.sliding(m.values(t, y))
-            scale = float(np.linalg.norm(y[m.n:])) + 1e-300
-            return float(np.linalg.norm(vs)) <= 1e-7 * scale
-
-        def target(t, y):
-            if stopped(t, y):
-                return m.regime_name(self._with(states, k, self.after_stop(t, y, states, k)))
-            return m.regime_name(states)
-
-        def reset(t, y):
-            if stopped(t, y):
-                return m.project(t, y, self._with(states, k, "stick"))
-            vs = c.sliding(m.values(t, y))
-            self.directions[k] = vs / float(np.linalg.norm(vs))
-            return y
-        return Guard(f"{c.name} stops slipping", along, target=target, direction=-1,
-                     reset=reset)
-
-    def _landing_guard(self, states, k):
-        """The open contact k closes: a perfectly plastic impact, then stick or slip."""
-        c, m = self.m.contacts[k], self.m
-        impact = self._with(states, k, "impact")  # the normal condition of k, no tangent
-
-        def gap(t, y):
-            return float(m.values(t, y)[c.gap])
-
-        def target(t, y):
-            return m.regime_name(self._with(states, k, self.closing_state(
-                t, m.project(t, y, impact), states, k)))
-
-        def reset(t, y):
-            after = m.project(t, y, impact)
-            return m.project(t, after, self._with(states, k, self.closing_state(
-                t, after, states, k)))
-
-        return Guard(f"{c.name} lands", gap, target=target, direction=-1, reset=reset)
-
-    def closing_state(self, t, y, states, k):
-        """The state of contact k as it closes at (t, y) (normal velocity zero)."""
-        c = self.m.contacts[k]
-        if c.law is None:
-            return "contact"
-        vs = c.sliding(self.m.values(t, y))
-        if float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
-            if len(c.tangents) == 1:
-                return "slip+" if vs[0] > 0 else "slip-"
-            self.directions[k] = vs / float(np.linalg.norm(vs))
-            return "slip"
-        return self.after_stop(t, y, states, k)
-
-    def start(self, t, y):
-        states = []
-        for k, c in enumerate(self.m.contacts):
-            vs = c.sliding(self.m.values(t, y))
-            if c.gap is not None and self.m.values(t, y)[c.gap] > 1e-12:
-                states.append("open")
-            elif c.law is None:
-                states.append("contact")
-            elif float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
-                if len(c.tangents) == 1:
-                    states.append("slip+" if vs[0] > 0 else "slip-")
-                else:
-                    self.directions[k] = vs / float(np.linalg.norm(vs))
-                    states.append("slip")
-            else:
-                states.append("stick")
-        states = tuple(states)
-        forces = self.forces(t, y, states)
-        for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
-            if states[k] == "open":
-                continue
-            if N < 0 and c.gap is not None:
-                states = self._with(states, k, "open")
-            elif N < 0:
-                raise ArgumentError(
-                    f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
-                    "it opens at once; start the bodies where the contact presses.")
-            if states[k] == "stick" and float(np.linalg.norm(T)) > c.fs * N:
-                states = self._with(states, k, self.slip_state(k, T))
-        return self.m.regime_name(states)
+def _stabilization(value):
+    if value is None:
+        return 0.0, 0.0
+    try:
+        alpha, beta = (float(v) for v in value)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"`stabilization` must be a pair (alpha, beta) of numbers >= 0; "
+                            f"got {value!r}.") from None
+    if not all(math.isfinite(v) and v >= 0 for v in (alpha, beta)):
+        raise ArgumentError(f"`stabilization` must be a pair (alpha, beta) of numbers >= 0; "
+                            f"got {value!r}.")
+    return alpha, beta
 
 
 def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
                    rtol: float = 1e-10, atol: float = 1e-12, max_step: float = math.inf,
-                   max_phases: int = 10_000, **params) -> ContactMotion:
+                   max_phases: int = 10_000, stabilization=None, **params) -> ContactMotion:
     """Integrate a system with one-sided contacts and dry friction phase by phase, each
     regime's equations derived from the system (ch. 13.1, 21.4, 23).
 
@@ -544,6 +212,18 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         separate them (v(I) . n = 0).
     method, rtol, atol, max_step, max_phases
         Passed to :func:`~rigidmech.regimes.integrate_phases`.
+    stabilization : (alpha, beta), optional
+        Baumgarte's coefficients (in 1/time) for the conditions of each regime (closures,
+        contacts' normal conditions, sticking and non-rolling conditions): the condition
+        c' = 0 at the acceleration level becomes c' + 2 alpha c + beta^2 p = 0, with c the
+        velocity residual and p the position residual where the condition has one (a
+        contact's ``gap``, a closure's position), so that the integration does not drift off
+        the conditions, as ``System(stabilization=...)`` does for its closures. Default
+        None: (0, 0), the conditions at the acceleration level only. A Runge-Kutta method
+        keeps a condition that is linear in the coordinates and rates (a cylinder on a
+        plane) to round-off without it, where the correction would only add the
+        integration error; it pays for nonlinear conditions (a body rocking on a corner or
+        an eccentric disk) over long runs.
     **params
         Values of the constants (by name).
 
@@ -551,14 +231,17 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     -------
     ContactMotion
         Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one
-        contact),
-        or ``"I: stick; J: slip+"`` (several, by the names of their points).
+        contact; followed by ``, rolls+``, ``, rolls-`` or ``, locked`` with a rolling
+        resistance, ``, spins+``, ``, spins-`` or ``, no spin`` with a pivoting one), or
+        ``"I: stick; J: slip+"`` (several, by the names of their points).
 
     Raises
     ------
     ConnectionError\\_
         A system without contact, or a contact whose coordinates forbid the motions the
-        regimes need.
+        regimes need (or a rolling resistance on a rolling that is not planar).
+    NumericalError
+        A regime whose contact conditions stay dependent (hyperstatic normal forces).
     ArgumentError
         Missing or unknown parameters, bad initial values, a contact that pulls at t0 or a
         normal velocity at t0.
@@ -597,7 +280,7 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     except (TypeError, ValueError):
         raise ArgumentError(f"`t_span` must be an end time or a pair of times; got "
                             f"{t_span!r}.") from None
-    model = _Model(system, params)
+    model = _Model(system, params, _stabilization(stabilization))
     coords = system.coordinates
     y0 = np.concatenate([_state_vector(q0, coords, "q0"), _state_vector(u0, coords, "u0")])
     vals = model.values(span[0], y0)

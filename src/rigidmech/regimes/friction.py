@@ -11,11 +11,13 @@ transition rules, and integrates with :func:`~rigidmech.regimes.phased.integrate
   motion in the wagon's non-Galilean frame);
 * :func:`pushed_box`: a box pushed horizontally, at rest, sliding or tipping (ch. 24).
 
-The first three posed from bodies (a :class:`~rigidmech.dynamics.System` with a
-:class:`~rigidmech.actions.FrictionContact`) and integrated by
-:func:`~rigidmech.regimes.contact_motion`, which derives the regimes itself, give the same
-phases and switching instants (to 1e-9 at rtol 1e-12); these hand-written versions are
-faster (closed-form right-hand sides) and serve as its references.
+Posed from bodies (a :class:`~rigidmech.dynamics.System` with
+:class:`~rigidmech.actions.FrictionContact` connections; the box with one at each bottom
+corner) and integrated by :func:`~rigidmech.regimes.contact_motion`, which derives the
+regimes itself, they give the same phases and switching instants (to 1e-9 at rtol 1e-12);
+these hand-written versions are faster (closed-form right-hand sides) and serve as its
+references. ``contact_motion`` also lets the box tip while sliding or its edge slip while
+it tips, which :func:`pushed_box` assumes away.
 """
 
 from __future__ import annotations
@@ -215,7 +217,7 @@ def block_on_wagon(*, acceleration, friction: Coulomb, g=9.81, t_end, rtol=1e-12
 
 
 def pushed_box(*, mass, half_width, half_height, push_height, push, friction: Coulomb,
-               g=9.81, t_end, rtol=1e-12, atol=1e-12) -> PhasedMotion:
+               g=9.81, t_end, rtol=1e-12, atol=1e-12, max_step=math.inf) -> PhasedMotion:
     """A box (width 2a, height 2b) at rest on a rough floor, pushed horizontally at height h
     by a force ``push(t)`` >= 0 on its rear face: it slides or tips first (ch. 24).
     State y = (x, x', phi, phi'), phi the angle of tipping about the front edge.
@@ -226,6 +228,10 @@ def pushed_box(*, mass, half_width, half_height, push_height, push, friction: Co
     At rest it starts sliding when P = f_s m g and tipping when P h = m g a, whichever comes
     first. While sliding the box is assumed not to tip, and while tipping its edge not to
     slide.
+
+    At rest the right-hand side is zero, so the integrator may take one step over the
+    whole interval: with a push that rises and falls, give a ``max_step`` shorter than its
+    variations or a threshold crossed and recrossed within one step goes unseen.
 
     Examples
     --------
@@ -267,4 +273,4 @@ def pushed_box(*, mass, half_width, half_height, push_height, push, friction: Co
         return "rest"
 
     return integrate_phases([rest, slide, tip], start, (0.0, float(t_end)),
-                            [0.0, 0.0, 0.0, 0.0], rtol=rtol, atol=atol)
+                            [0.0, 0.0, 0.0, 0.0], rtol=rtol, atol=atol, max_step=max_step)
