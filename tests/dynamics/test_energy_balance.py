@@ -236,3 +236,19 @@ def test_free_body_in_euler_parameters_with_a_torsional_damper():
     E = sim.energy()
     assert E[-1] < E[0] - 1.0
     assert np.max(np.abs(sim.energy_balance())) < 1e-9 * abs(E[0])
+
+
+def test_damped_system_energy_drift_refused_not_reported_as_drift():
+    """A damper dissipates: T + V decreases along an exact motion (here to < 20 % of E0), so
+    energy_drift would report the dissipation as an integration error; it refuses and names
+    the damper, and energy_not_conserved() says why. The undamped system is accepted."""
+    sim = _oscillator().equations_of_motion().simulate(t=(0, 6), q0=[1.0], m=1.0, k=4.0,
+                                                        c=0.4, **TIGHT)
+    assert "Damper" in sim.energy_not_conserved()
+    with pytest.raises(ArgumentError, match=r"energy_drift\(\) would misreport: .*Damper.*"
+                                            r"dissipate.*Use energy_balance\(\)"):
+        sim.energy_drift()
+    free = _oscillator(damped=False).equations_of_motion().simulate(
+        t=(0, 6), q0=[1.0], m=1.0, k=4.0, **TIGHT)
+    assert free.energy_not_conserved() is None
+    assert free.energy_drift() < 1e-9

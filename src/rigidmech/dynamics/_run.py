@@ -332,7 +332,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
                      t_stop=t_stop, status=status)
     if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
-            and sim.time_dependence() is None):
+            and sim.energy_not_conserved() is None):
         drift = sim.energy_drift()
         if not drift <= UNSTABLE_DRIFT:  # a conservative system: E should stay constant
             sim = Simulation(eqs, res, values, elapsed, (*notes, (

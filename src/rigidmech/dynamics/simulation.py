@@ -433,11 +433,12 @@ class Simulation:
         Raises
         ------
         ArgumentError
-            If the energy is not one that only the non-conservative actions change: the
-            bodies' motion or a potential depends on time explicitly (a prescribed motion, a
-            field that turns; see :meth:`time_dependence`). Use :meth:`energy_balance`.
+            If the energy is not conserved along an exact motion (see
+            :meth:`energy_not_conserved`): the bodies' motion or a potential depends on time
+            explicitly (a prescribed motion, a field that turns), or a damper of the system
+            dissipates. Use :meth:`energy_balance`.
         """
-        reason = self.time_dependence()
+        reason = self.energy_not_conserved()
         if reason is not None:
             raise ArgumentError(
                 f"energy_drift() would misreport: {reason}, so T + V changes without any "
@@ -453,6 +454,34 @@ class Simulation:
         if scale == 0.0:
             return 0.0 if delta == 0.0 else math.inf
         return delta / scale
+
+    def energy_not_conserved(self):
+        """Why T + V is not conserved along an exact motion, or None: :meth:`time_dependence`,
+        or the dissipative actions (those with a dissipation function, the dampers) of the
+        system the equations were derived from. Equations given directly carry no actions:
+        only their time dependence is decided.
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...     forcing=sp.ImmutableMatrix([[-x]]), energy=(x.diff(rm.t)**2 + x**2) / 2)
+        >>> eqs.simulate(t=(0, 1), q0=[1.0], n_output=3).energy_not_conserved() is None
+        True
+        """
+        reason = self.time_dependence()
+        if reason is not None:
+            return reason
+        system = getattr(self._need_equations("energy_not_conserved()"), "system", None)
+        if system is None:
+            return None
+        dissipative = [a for a in system.actions
+                       if callable(getattr(a, "dissipation_function", None))]
+        if not dissipative:
+            return None
+        names = ", ".join(type(a).__name__ for a in dissipative)
+        return f"the system's dissipative actions ({names}) dissipate energy"
 
     def time_dependence(self):
         """Why T + V changes along a correct motion even without non-conservative actions,

@@ -94,8 +94,8 @@ class RunReport:
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
         ``max |E(t) - E(0)| / (T(0) + |V(0)|)`` along the motion (None without a potential
-        energy, or when T + V depends on time explicitly; see
-        :meth:`Simulation.energy_drift`).
+        energy, or when T + V is not conserved by an exact motion: explicit time dependence,
+        dampers; see :meth:`Simulation.energy_not_conserved`).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
@@ -399,7 +399,7 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     timings["integrate"] = sim.elapsed
     start = time.perf_counter()
     drift = (sim.energy_drift() if eqs.energy is not None and sim.t.size
-             and sim.time_dependence() is None else None)
+             and sim.energy_not_conserved() is None else None)
     timings["energy"] = time.perf_counter() - start
     plot_path = None
     if plot is not None:
