@@ -26,6 +26,7 @@ from scipy.optimize import brentq
 
 import rigidmech as rm
 from rigidmech.dynamics import System
+from rigidmech.errors import ConnectionError_
 from rigidmech.inertia import InertiaOperator
 
 # crank OA, ground pivot D of the rocker, rocker DB, coupler AB; masses and inertias at G
@@ -44,9 +45,10 @@ def _body(name, frame, origin, offset):
                    inertia=InertiaOperator.from_matrix(J[name].tolist(), frame=frame, at=Gp))
 
 
-def rssr(finger=False, g=G):
+def rssr(finger=False, g=G, meets=True):
     """The RSSR four-bar; the coupler on the crank by a spherical joint (coordinates q1, q3,
-    psi, theta, phi) or by a spherical joint with finger (q1, q3, a, b)."""
+    psi, theta, phi) or by a spherical joint with finger (q1, q3, a, b). ``meets=False``
+    forgets to say which point of the rocker meets the coupler's B."""
     q1, q3 = rm.coordinates("q1 q3")
     R0 = rm.Frame("R0")
     R1 = R0.rotated("R1", about=R0.k, angle=q1)
@@ -72,7 +74,7 @@ def rssr(finger=False, g=G):
     s.connect(crank, coupler, joint_A)
     s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=R0.i))
     s.connect(coupler, rocker, rm.joints.Spherical(at=A.moved("B", L_ * R2.i)),
-              meets=D.moved("B3", C_ * R3.j))
+              meets=D.moved("B3", C_ * R3.j) if meets else None)
     if g:
         s.act(rm.gravity(-g * R0.k))
     return s
@@ -195,15 +197,19 @@ def assembled(s, q1, rate, finger=False, spin=0.0, spin_rate=0.0):
 
 
 # -- tests ------------------------------------------------------------------------------
+def gap(q3, q1):
+    """|B(q3) - A(q1)|^2 - L^2, the loop's equation written on the points."""
+    A = A_ * rot("z", q1)[:, 0]
+    return np.sum((D_ + C_ * rot("x", q3)[:, 1] - A) ** 2) - L_**2
+
+
 def test_input_output_equation_closed_form_agrees_with_brentq():
     for q1 in np.linspace(-3.0, 3.0, 7):
-        P, Q, R = io_coefficients(q1)
-        q3 = rocker_angle(q1)
-        f = lambda x: P * np.cos(x) + Q * np.sin(x) - R  # noqa: E731
-        root = brentq(f, np.arctan2(Q, P), np.arctan2(Q, P) + np.pi, xtol=1e-15)
-        assert q3 == pytest.approx(root, abs=1e-12)
-        A = A_ * rot("z", q1)[:, 0]
-        assert np.linalg.norm(D_ + C_ * rot("x", q3)[:, 1] - A) == pytest.approx(L_, abs=1e-12)
+        P, Q, _ = io_coefficients(q1)
+        start = np.arctan2(Q, P)  # the branch runs from the maximum of gap to its minimum
+        root = brentq(gap, start, start + np.pi, args=(q1,), xtol=1e-15)
+        assert rocker_angle(q1) == pytest.approx(root, abs=1e-12)
+        assert gap(root, q1) == pytest.approx(0.0, abs=1e-12)
 
 
 def test_mobility_counts_the_idle_spin_of_the_coupler():
@@ -224,6 +230,16 @@ def test_closure_conditions_are_the_three_of_the_spherical_joint():
         assert [row[0] for row in s.closure_conditions()] == ["4.u", "4.v", "4.w"]
         # three conditions on 5 (4) coordinates: 2 (1) independent parameters, as mobility()
         assert len(s.coordinates) - 3 == s.mobility().mobility
+
+
+def test_closing_joint_at_a_point_of_one_solid_only_is_refused():
+    # without `meets`, B (a point of the coupler) would be taken as the rocker's point too:
+    # the three conditions vanish identically and the loop would silently stay open
+    with pytest.raises(ConnectionError_, match=r"Spherical at B closes a loop between "
+                                               r"coupler and rocker, but B moves with only "
+                                               r"one of them .* Give `meets`, the point of "
+                                               r"rocker that meets B"):
+        rssr(meets=False)
 
 
 @pytest.mark.parametrize("finger", [False, True])
