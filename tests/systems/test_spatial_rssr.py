@@ -361,3 +361,122 @@ def test_connection_actions_satisfy_newton_on_each_body(finger):
             # coupler, so d sigma_G / dt has no component along AB
             e = (B2 - centres["coupler"]) / (L_ / 2)
             assert hand["coupler"][1] @ e == pytest.approx(0.0, abs=1e-7)
+
+
+# -- the same mechanism with the loop closed at the rocker's pivot ------------------------
+def rssr_closed_at_the_pivot(g=G):
+    """The RSSR as the tree ground -pivot- crank -spherical- coupler -spherical- rocker (the
+    rocker's orientation yaw alpha, pitch beta, roll gamma about B), the loop closed by the
+    rocker's pivot at D about R0.i: three conditions on the points and two on the axes
+    (``meets`` is a frame of the rocker whose origin is its point at D and whose k is its
+    pivot axis)."""
+    q1, psi, th, ph, al, be, ga = rm.coordinates("q1 psi theta phi alpha beta gamma")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    A = R0.origin.moved("A", A_ * R1.i)
+    Ca = R0.rotated("Ca", about=R0.k, angle=psi, origin=A)
+    Cb = Ca.rotated("Cb", about=Ca.j, angle=th)
+    R2 = Cb.rotated("R2", about=Cb.i, angle=ph)
+    B = A.moved("B", L_ * R2.i)
+    Ra = R0.rotated("Ra", about=R0.k, angle=al, origin=B)
+    Rb = Ra.rotated("Rb", about=Ra.j, angle=be)
+    R3 = Rb.rotated("R3", about=Rb.i, angle=ga)
+    crank = _body("crank", R1, R0.origin, A_ / 2 * R1.i)
+    coupler = _body("coupler", R2, A, L_ / 2 * R2.i)
+    rocker = _body("rocker", R3, B, -C_ / 2 * R3.j)
+    s = System(galilean=R0)
+    s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(crank, coupler, rm.joints.Spherical(at=A))
+    s.connect(coupler, rocker, rm.joints.Spherical(at=B))
+    axes = R3.rotated("R3k", about=R3.j, angle=sp.pi / 2, origin=B.moved("D3", -C_ * R3.j))
+    s.connect(R0, rocker, rm.joints.Pivot(at=R0.point("D", *D_), axis=R0.i), meets=axes)
+    if g:
+        s.act(rm.gravity(-g * R0.k))
+    return s
+
+
+def rocker_matrix(q):
+    return rot("z", q["alpha"]) @ rot("y", q["beta"]) @ rot("x", q["gamma"])
+
+
+def test_loop_closed_at_the_rocker_pivot_has_point_and_axis_conditions():
+    s = rssr_closed_at_the_pivot()
+    assert [row[0] for row in s.closure_conditions()] == ["4.ru", "4.rv", "4.u", "4.v", "4.w"]
+    r = s.mobility()
+    assert (r.mobility, r.hyperstaticity) == (2, 0)
+
+
+def test_loop_closed_at_the_rocker_pivot_assembles_to_the_loop_solution():
+    s = rssr_closed_at_the_pivot(g=0.0)
+    rate, h = 1.7, 1e-6
+    for q1 in (-2.5, 0.4, 1.9):
+        hand = loop(q1)
+        guess = {"q1": q1, "psi": hand["psi"] + 0.05, "theta": hand["theta"] - 0.05,
+                 "phi": 0.2, "alpha": 0.05, "beta": -0.05, "gamma": hand["q3"] + 0.05}
+        q0, u0 = s.assemble(guess, independent=["q1", "phi"], rates={"q1": rate})
+        assert (q0["psi"], q0["theta"]) == pytest.approx((hand["psi"], hand["theta"]),
+                                                         abs=1e-10)
+        # the rocker turns about R0.i by q3: alpha = beta = 0, gamma = q3
+        assert (q0["alpha"], q0["beta"], q0["gamma"]) == pytest.approx((0.0, 0.0, hand["q3"]),
+                                                                       abs=1e-10)
+        plus, minus = loop(q1 + h), loop(q1 - h)
+        assert u0["gamma"] == pytest.approx(rate * (plus["q3"] - minus["q3"]) / (2 * h),
+                                            rel=1e-7)
+        assert (u0["alpha"], u0["beta"]) == pytest.approx((0.0, 0.0), abs=1e-10)
+
+
+def test_both_closures_give_the_same_motion():
+    # the same mechanism, loop closed at B (three multipliers) or at the rocker's pivot D
+    # (five): the simulated crank and rocker angles agree, and the second one keeps the
+    # rocker's axis on R0.i and its point D on D
+    s1, s2 = rssr(), rssr_closed_at_the_pivot()
+    q0, u0 = assembled(s1, 0.4, 3.0, spin_rate=1.0)
+    sim1 = s1.equations_of_motion().simulate(t=(0.0, 2.0), q0=q0, u0=u0, rtol=1e-11,
+                                             atol=1e-12, n_output=41)
+    q0b = {"q1": q0["q1"], "psi": q0["psi"], "theta": q0["theta"], "phi": q0["phi"],
+           "alpha": 0.0, "beta": 0.0, "gamma": q0["q3"]}
+    u0b = {"q1": u0["q1"], "psi": u0["psi"], "theta": u0["theta"], "phi": u0["phi"],
+           "alpha": 0.0, "beta": 0.0, "gamma": u0["q3"]}
+    sim2 = s2.equations_of_motion().simulate(t=(0.0, 2.0), q0=q0b, u0=u0b, rtol=1e-11,
+                                             atol=1e-12, n_output=41)
+    n2 = names(s2)
+    assert sim2.q[n2.index("q1")] == pytest.approx(sim1.q[0], abs=1e-7)
+    assert sim2.q[n2.index("phi")] == pytest.approx(sim1.q[4], abs=1e-7)
+    for i in range(41):
+        q = dict(zip(n2, sim2.q[:, i], strict=True))
+        R3 = rocker_matrix(q)
+        assert R3 == pytest.approx(rot("x", sim1.q[1, i]), abs=1e-7)
+        _, _, B, _ = kinematics(q | {"q3": 0.0})
+        assert B - C_ * R3[:, 1] == pytest.approx(D_, abs=1e-8)
+
+
+def test_both_closures_give_the_same_connection_actions():
+    # the actions of the ground on the rocker (pivot D) and of the coupler on the rocker
+    # (spherical B) at the same state: a tree joint's action in one model, a closing joint's
+    # (its multipliers: forces and the pivot's two couples) in the other
+    s1, s2 = rssr(), rssr_closed_at_the_pivot()
+    q1, rate = 1.1, 2.5
+    q0, u0 = assembled(s1, q1, rate, spin=0.3, spin_rate=1.0)
+    n1, n2 = names(s1), names(s2)
+    qa = np.array([q0[k] for k in n1])
+    ua = np.array([u0[k] for k in n1])
+    to2 = {"alpha": "", "beta": "", "gamma": "q3"}
+    qb = np.array([q0[to2.get(k, k)] if to2.get(k, k) else 0.0 for k in n2])
+    ub = np.array([u0[to2.get(k, k)] if to2.get(k, k) else 0.0 for k in n2])
+    eq1, eq2 = s1.equations_of_motion(), s2.equations_of_motion()
+    acc1 = eq1.rhs()(0.0, np.concatenate([qa, ua]))[len(n1):]
+    acc2 = eq2.rhs()(0.0, np.concatenate([qb, ub]))[len(n2):]
+    assert acc2[n2.index("gamma")] == pytest.approx(acc1[n1.index("q3")], rel=1e-9)
+    r1 = state_rule(s1, qa, ua, acc1, s1.multipliers(qa, ua))
+    r2 = state_rule(s2, qb, ub, acc2, s2.multipliers(qb, ub))
+    R0 = s1.galilean
+    D1 = s1.bodies[2].frame.origin
+    D2 = s2.connection_action(s2.galilean, s2.bodies[2]).point
+    for (p1, c1), (p2, c2) in [((s1.galilean, s1.bodies[2]), (s2.galilean, s2.bodies[2])),
+                               ((s1.bodies[1], s1.bodies[2]), (s2.bodies[1], s2.bodies[2]))]:
+        T1 = numeric(s1.connection_action(p1, c1), D1, r1, R0)
+        T2 = numeric(s2.connection_action(p2, c2), D2, r2, s2.galilean)
+        assert np.concatenate(T2) == pytest.approx(np.concatenate(T1), abs=1e-8)
+    # the pivot transmits no moment about its axis R0.i
+    T = numeric(s2.connection_action(s2.galilean, s2.bodies[2]), D2, r2, s2.galilean)
+    assert T[1][0] == pytest.approx(0.0, abs=1e-10)
