@@ -480,3 +480,23 @@ def test_both_closures_give_the_same_connection_actions():
     # the pivot transmits no moment about its axis R0.i
     T = numeric(s2.connection_action(s2.galilean, s2.bodies[2]), D2, r2, s2.galilean)
     assert T[1][0] == pytest.approx(0.0, abs=1e-10)
+
+
+@pytest.mark.parametrize("finger", [False, True])
+def test_reduced_equations_on_the_independent_speeds_agree(finger):
+    # ch. 25.3: the equations reduced to q1' (and the idle spin phi') give the dependent rates
+    # of the loop solution and the accelerations of the augmented system
+    s = rssr(finger=finger)
+    eqs = s.equations_of_motion()
+    n = names(s)
+    independent = ["q1"] if finger else ["q1", "phi"]
+    reduced = eqs.reduced(independent=independent)
+    for q1 in (-2.5, 0.4, 1.9):
+        q0, u0 = assembled(s, q1, 1.7, finger, spin=0.3, spin_rate=-0.6)
+        q = np.array([q0[k] for k in n])
+        u = np.array([u0[k] for k in n])
+        acc = eqs.rhs()(0.0, np.concatenate([q, u]))[len(n):]
+        out = reduced.rhs()(0.0, np.concatenate([q, [u0[k] for k in independent]]))
+        assert out[:len(n)] == pytest.approx(u, rel=1e-10, abs=1e-12)
+        assert out[len(n):] == pytest.approx([acc[n.index(k)] for k in independent],
+                                             rel=1e-9, abs=1e-12)
