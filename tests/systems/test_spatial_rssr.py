@@ -39,13 +39,14 @@ G = 9.81
 EX, EY, EZ = np.eye(3)
 
 
-def _body(name, frame, origin, offset):
+def _body(name, frame, origin, offset, inertia=None):
     Gp = origin.moved("G" + name, offset)
+    inertia = J[name] if inertia is None else inertia
     return rm.Body(name, frame=frame, mass=M[name], centre=Gp,
-                   inertia=InertiaOperator.from_matrix(J[name].tolist(), frame=frame, at=Gp))
+                   inertia=InertiaOperator.from_matrix(inertia.tolist(), frame=frame, at=Gp))
 
 
-def rssr(finger=False, g=G, meets=True):
+def rssr(finger=False, g=G, meets=True, coupler_inertia=None):
     """The RSSR four-bar; the coupler on the crank by a spherical joint (coordinates q1, q3,
     psi, theta, phi) or by a spherical joint with finger (q1, q3, a, b). ``meets=False``
     forgets to say which point of the rocker meets the coupler's B."""
@@ -67,7 +68,7 @@ def rssr(finger=False, g=G, meets=True):
     D = R0.point("D", *D_)
     R3 = R0.rotated("R3", about=R0.i, angle=q3, origin=D)
     crank = _body("crank", R1, R0.origin, A_ / 2 * R1.i)
-    coupler = _body("coupler", R2, A, L_ / 2 * R2.i)
+    coupler = _body("coupler", R2, A, L_ / 2 * R2.i, coupler_inertia)
     rocker = _body("rocker", R3, D, C_ / 2 * R3.j)
     s = System(galilean=R0)
     s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=R0.k))
@@ -500,3 +501,22 @@ def test_reduced_equations_on_the_independent_speeds_agree(finger):
         assert out[:len(n)] == pytest.approx(u, rel=1e-10, abs=1e-12)
         assert out[len(n):] == pytest.approx([acc[n.index(k)] for k in independent],
                                              rel=1e-9, abs=1e-12)
+
+
+def test_idle_spin_of_an_axisymmetric_coupler_is_constant():
+    # a coupler symmetric about AB, its centre on AB: the forces at A and B and its weight
+    # have no moment about AB, so Euler's equation about its axis of symmetry gives
+    # J_a d(omega . e)/dt = 0: the spin omega . e keeps its initial value
+    s = rssr(coupler_inertia=np.diag([0.004, 0.11, 0.11]))
+    n = names(s)
+    q0, u0 = assembled(s, 0.4, 3.0, spin_rate=1.0)
+    sim = s.equations_of_motion().simulate(t=(0.0, 3.0), q0=q0, u0=u0, rtol=1e-11,
+                                           atol=1e-12, n_output=31)
+    spins = []
+    for i in range(31):
+        q = dict(zip(n, sim.q[:, i], strict=True))
+        u = dict(zip(n, sim.u[:, i], strict=True))
+        e = kinematics(q)[0]["coupler"][:, 0]
+        spins.append(angular_velocity(q, u)["coupler"] @ e)
+    assert spins == pytest.approx([spins[0]] * 31, abs=1e-8)
+    assert np.ptp(sim.u[n.index("phi")]) > 1.0  # while phi' itself varies
