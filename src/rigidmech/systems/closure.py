@@ -21,8 +21,11 @@ row per condition, as ``(label, velocity, position)``:
   C = e_j(2) ^ e_k(1) (resp. e_j(1) ^ e_k(2)), equal to e_i when closed: the multiplier is
   the couple of the joint about e_i (these conditions also hold with an axis reversed,
   w(2) = -w(1): assemble from values near the intended position). A condition that
-  vanishes identically is dropped; one that is a non-zero constant means the two points (or
-  axes) cannot coincide and is refused;
+  vanishes identically is dropped, provided the two points also move together as points of
+  their solids, (v(P2 in 2) - v(P1 in 1)) . e = 0 (two coaxial bearings); otherwise (``meets``
+  left out while the joint's point is a point of one solid only) the loop would stay open,
+  and it is refused. A condition that is a non-zero constant means the two points (or axes)
+  cannot coincide and is refused;
 * a **helical** joint closing a loop adds its linked motion, at the velocity level only:
   (v(P2 in 2) - v(P1 in 1)) . w - h (omega2 - omega1) . w = 0, h = pitch / (2 pi) (its
   position form would carry the relative angle, which the frames do not name); its
@@ -109,8 +112,9 @@ def closure_conditions(link, meets=None) -> list:
     ------
     ConnectionError\\_
         If the two points (or axes) cannot coincide (a constant distance along a blocked
-        direction), or the joint blocks a rotation the frames do not already block and
-        ``meets`` is not a frame of the second solid.
+        direction), or coincide but do not move together as points of their solids (``meets``
+        left out for a point of the first solid only), or the joint blocks a rotation the
+        frames do not already block and ``meets`` is not a frame of the second solid.
 
     Examples
     --------
@@ -218,6 +222,7 @@ def _rows(link, meets):
             continue
         phi = sp.expand((P2 - P1).dot(e))
         if _zero(phi):
+            _check_same_point(link, P1, P2, e, _AXES[i - 3])
             continue
         if not phi.has(t):
             raise ConnectionError_(
@@ -242,6 +247,26 @@ def _meeting(conn, meets):
         return meets.origin, tuple(meets.basis)
     check_point(meets, "meets")
     return meets, None
+
+
+def _check_same_point(link, P1, P2, e, axis):
+    """A condition along e that vanishes identically is dropped only if the two points also
+    move together as points of their solids: (v(P2 in 2) - v(P1 in 1)) . e = 0. Otherwise
+    (typically ``meets`` left out, the joint's point being a point of one solid only, as the
+    end B of a coupler) the loop would silently stay open: refuse it."""
+    first, second = link.first, link.second
+    root = first.frame.root
+    v2 = second.kinematic_torsor(relative_to=root, at=P2).velocity
+    v1 = first.kinematic_torsor(relative_to=root, at=P1).velocity
+    slip = sp.expand((v2 - v1).dot(e))
+    if not _zero(slip):
+        conn = link.connection
+        raise ConnectionError_(
+            f"{type(conn).__name__} at {P1.name} closes a loop between {first.name} and "
+            f"{second.name}, but {P2.name} moves with only one of them (the difference of "
+            f"its velocities as a point of each along {axis} is {slip}, not zero): the loop "
+            f"would stay open. Give `meets`, the point of {second.name} that meets "
+            f"{P1.name} when the loop is closed.")
 
 
 def _fixed_in(vectors, solid, argument):
