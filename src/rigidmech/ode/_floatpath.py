@@ -23,7 +23,7 @@ import numpy as np
 
 from ._loop import StepResult
 
-__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_pair_step", "make_rkn_stepper",
+__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_fixed_advance", "make_pair_step", "make_rkn_stepper",
            "make_midpoint", "compile_function", "cached"]
 
 #: Largest system size for which the plain-float kernel is used (measured crossover with the
@@ -113,6 +113,31 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     """
     lines = _unrolled_lines(name, A, b, c, s, errors, n, norm)
     return _compile(f"{name}_{n}{'n' if norm and errors is not None else ''}", lines)
+
+
+def make_fixed_advance(name, A, b, c, s, n):
+    """The step of a fixed-step tableau for `n` equations, as a factory bound once per run.
+
+    ``bind(fun, y, k0) -> advance(t, h)``: ``advance`` makes one step from the state it keeps
+    (`y`, a list of floats; `k0`, ``f(t, y)`` already evaluated, or None) and returns
+    ``(y_new, None)``, the form :func:`rigidmech.ode._fixed.fixed_loop` expects: the stage
+    ``f(t, y)`` and the whole step in one generated function (no Python frame around it).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> bind = make_fixed_advance("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1, 1)
+    >>> advance = bind(lambda t, y: -y, [1.0], None)
+    >>> advance(0.0, 0.1), advance(0.1, 0.1)[0]
+    (([0.9], None), [0.81])
+    """
+    body = _unrolled_lines(name, A, b, c, s, None, n, False)
+    lines = ["def make(fun, y, k0):", "    def advance(t, h):", "        nonlocal y, k0",
+             "        if k0 is None:", "            k0 = _tolist(fun(t, _arr(y)))"]
+    lines += ["    " + line for line in body[1:-1]]
+    lines += ["        y = yn", "        k0 = None", "        return yn, None", "    return advance"]
+    return cached(("fixed-advance", name, A.tobytes(), b.tobytes(), c.tobytes(), n),
+                  lambda: compile_function(lines, "make", f"{name} fixed step n={n}"))
 
 
 def make_pair_step(name, A, b, c, s, errors, n):
