@@ -23,8 +23,8 @@ import numpy as np
 
 from ._loop import StepResult
 
-__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_fixed_advance", "make_pair_step", "make_rkn_stepper",
-           "make_midpoint", "compile_function", "cached"]
+__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_fixed_advance", "make_pair_step",
+           "make_rkn_stepper", "make_midpoint", "compile_function", "cached"]
 
 #: Largest system size for which the plain-float kernel is used (measured crossover with the
 #: numpy path: about 16 equations for DOP853 on a 2-core machine).
@@ -135,7 +135,8 @@ def make_fixed_advance(name, A, b, c, s, n):
     lines = ["def make(fun, y, k0):", "    def advance(t, h):", "        nonlocal y, k0",
              "        if k0 is None:", "            k0 = _tolist(fun(t, _arr(y)))"]
     lines += ["    " + line for line in body[1:-1]]
-    lines += ["        y = yn", "        k0 = None", "        return yn, None", "    return advance"]
+    lines += ["        y = yn", "        k0 = None", "        return yn, None",
+              "    return advance"]
     return cached(("fixed-advance", name, A.tobytes(), b.tobytes(), c.tobytes(), n),
                   lambda: compile_function(lines, "make", f"{name} fixed step n={n}"))
 

@@ -209,24 +209,32 @@ def _hermite_dense(fun, kind, t, y, shape):
 def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
     """Provide events, dense output and t_eval for a fixed-step result."""
     sol, extra = _hermite_dense(fun, kind, res.t, res.y, shape)
-    changes = {"stats": {**res.stats, "nfev_interpolation": extra}}
-    t, y, status, message = res.t, res.y, res.status, res.message
+    res = dataclasses.replace(res, stats={**res.stats, "nfev_interpolation": extra})
     if events is not None:
-        Y = np.moveaxis(y, 1, 0)
-        for i in range(1, len(t)):
-            if not np.all(np.isfinite(Y[i])):
-                break
-            if events.check(t[i - 1], t[i], Y[i], sol):
-                t = np.append(t[:i], events.t_stop)
-                y = np.concatenate([y[:, :i], events.y_stop.reshape(shape)[:, None]], axis=1)
-                status, message = 1, "A terminal event occurred."
-                break
-        changes.update(t_events=events.t_events, y_events=events.y_events)
-    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None,
-                   t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
+        res = fixed_events(res, shape, events, sol)
+    res = dataclasses.replace(res, sol=sol if dense else None)
     if t_eval is not None:
-        changes["t"], changes["y"] = _restrict(t_eval, t, sol)
-    return dataclasses.replace(res, **changes)
+        t, y = _restrict(t_eval, res.t, sol)
+        res = dataclasses.replace(res, t=t, y=y)
+    return res
+
+
+def fixed_events(res, shape, events, sol):
+    """The events of a fixed-step result located on its continuous solution `sol`, step by
+    step to the first non-finite state; the result cut at a terminal event (status 1)."""
+    t, y, status, message = res.t, res.y, res.status, res.message
+    Y = np.moveaxis(y, 1, 0)
+    for i in range(1, len(t)):
+        if not np.all(np.isfinite(Y[i])):
+            break
+        if events.check(t[i - 1], t[i], Y[i], sol):
+            t = np.append(t[:i], events.t_stop)
+            y = np.concatenate([y[:, :i], events.y_stop.reshape(shape)[:, None]], axis=1)
+            status, message = 1, "A terminal event occurred."
+            break
+    return dataclasses.replace(res, t=t, y=y, status=status, message=message,
+                               t_events=events.t_events, y_events=events.y_events,
+                               t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
 
 
 _SECOND_ORDER = ("second_order", "adaptive_second_order")
