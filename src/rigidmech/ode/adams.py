@@ -697,7 +697,14 @@ class _Run:
     shared messages, recording (dense output, ``t_eval``, events, through the recorders of
     :mod:`~rigidmech.ode._driver`), ``progress`` and Ctrl-C (:func:`_integrate`); the runs
     (:func:`_float_run`, :func:`_array_run`) make the steps, :meth:`attempt` the rejections,
-    :meth:`decide` the order and the spacing."""
+    :meth:`record` and :meth:`next_step` what follows an accepted step."""
+
+    __slots__ = ("atol", "atols", "call", "D", "direction", "erk", "erkm1", "erkp1", "floats",
+                 "fun", "h", "history", "hrho", "iasti", "k", "kmax_used", "knew", "max_order",
+                 "max_step", "max_steps", "n_order", "n_resample", "naccpt", "nfev", "nonsti",
+                 "norm", "nrej", "ns", "nstiff", "phase1", "progress", "rec", "rtol", "run",
+                 "sampling", "steps_t", "t", "t_end", "ts_append", "want_dense", "warned", "y",
+                 "ys_append", "N")
 
     def __init__(self, fun, rec, start, rtol, max_step, max_steps, max_order, nstiff,
                  progress):
