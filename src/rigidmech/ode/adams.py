@@ -704,7 +704,7 @@ class _Run:
                  "max_step", "max_steps", "n_order", "n_resample", "naccpt", "nfev", "nonsti",
                  "norm", "nrej", "ns", "nstiff", "phase1", "progress", "rec", "rtol", "run",
                  "sampling", "steps_t", "t", "t_end", "ts_append", "want_dense", "warned", "y",
-                 "ys_append", "N")
+                 "ys_append", "N", "hist_append", "far")
 
     def __init__(self, fun, rec, start, rtol, max_step, max_steps, max_order, nstiff,
                  progress):
@@ -731,6 +731,8 @@ class _Run:
         # extrapolate the polynomial backwards over twice its span, which amplifies its error
         # about 2**k times)
         self.history = [self.D[:self.N] if self.floats else f0]
+        self.hist_append = self.history.append  # the list is trimmed in place, never replaced
+        self.far = self.direction * math.inf
         self.want_dense = rec.needs_dense
         if self.want_dense:  # the loop records every step itself, through rec.accept
             self.ts_append = self.ys_append = _ignore
@@ -807,8 +809,7 @@ class _Run:
         """One run from the current state, repeated on rejections (the step halved; from the
         third failure in a row on, at order 1). Returns ``(code, y_old)`` (`y_old`: the state
         before the last step, for the dense output); code None on a step size underflow."""
-        tiny, y_old = 4.0 * np.finfo(float).eps, self.y
-        ifail = 0
+        tiny, y_old, ifail = _TINY, self.y, 0
         while True:
             ah = abs(self.h)
             if ah <= tiny * abs(self.t) or ah == 0.0 or ah != ah:  # underflow (or nan)
@@ -836,22 +837,25 @@ class _Run:
         if self.floats:
             out = self.run(self.fun, self.t, self.h, self.y, self.D, self.k, self.ns,
                            1 if single else self.max_steps - self.naccpt,
-                           self.direction * math.inf if single else self.t_end, single,
-                           self.max_order, self.rtol, self.atols, self.max_step,
-                           self.ts_append, self.ys_append, self.history.append)
+                           self.far if single else self.t_end, single, self.max_order,
+                           self.rtol, self.atols, self.max_step, self.ts_append,
+                           self.ys_append, self.hist_append)
         else:
             out = _array_run(self.k, self.call, self.norm, self.t, self.h, self.y, self.D,
                              self.ns, self.rtol, self.atol, self.ts_append, self.ys_append,
-                             self.history.append)
+                             self.hist_append)
         (code, self.t, self.y, self.D, k, self.ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2,
          self.erkp1, self.hrho) = out
         self.k, self.erk, self.erkm1 = k, erk, erkm1
-        self.n_order += nord
-        self.kmax_used = max(self.kmax_used, kmaxu)
-        self.naccpt += nacc
-        self.nfev += 2 * nacc
-        if nacc and len(self.history) > 2 * HISTORY:
-            del self.history[:-HISTORY]
+        if nord:
+            self.n_order += nord
+            if kmaxu > self.kmax_used:
+                self.kmax_used = kmaxu
+        if nacc:
+            self.naccpt += nacc
+            self.nfev += 2 * nacc
+            if len(self.history) > 2 * HISTORY:
+                del self.history[:-HISTORY]
         self.knew = _lower_order(k, erk, erkm1, erkm2)
         return code, err, nacc
 
@@ -909,6 +913,9 @@ class _Run:
 
 def _ignore(value):
     pass
+
+
+_TINY = 4.0 * np.finfo(float).eps  # a step below _TINY |t| is a step size underflow
 
 
 def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
