@@ -797,7 +797,7 @@ class _Run:
                 self.nfev += 2
                 rec.fail("The state became non-finite", self.t, np.array(self.y))
                 return
-            if code == RUN_DECIDE and self.record(y_old):
+            if code == RUN_DECIDE and (self.nstiff or self.want_dense) and self.record(y_old):
                 return
             if progress is not None and progress(self.t) is False:
                 rec.interrupt("The integration was stopped by the `progress` callback", self.t)
@@ -806,64 +806,63 @@ class _Run:
                 self.next_step()
 
     def attempt(self, single):
-        """One run from the current state, repeated on rejections (the step halved; from the
-        third failure in a row on, at order 1). Returns ``(code, y_old)`` (`y_old`: the state
-        before the last step, for the dense output); code None on a step size underflow."""
+        """One run from the current state (plain floats or arrays), repeated on rejections
+        (the step halved; from the third failure in a row on, at order 1). Returns ``(code,
+        y_old)`` (`y_old`: the state before the last step, for the dense output); code None on
+        a step size underflow."""
         tiny, y_old, ifail = _TINY, self.y, 0
         while True:
-            ah = abs(self.h)
-            if ah <= tiny * abs(self.t) or ah == 0.0 or ah != ah:  # underflow (or nan)
+            h, t = self.h, self.t
+            if abs(h) <= tiny * abs(t) or h == 0.0 or h != h:  # underflow (or nan)
                 return None, y_old
-            code, err, nacc = self._one_run(single)
+            if self.floats:
+                out = self.run(self.fun, t, h, self.y, self.D, self.k, self.ns,
+                               1 if single else self.max_steps - self.naccpt,
+                               self.far if single else self.t_end, single, self.max_order,
+                               self.rtol, self.atols, self.max_step, self.ts_append,
+                               self.ys_append, self.hist_append)
+            else:
+                out = _array_run(self.k, self.call, self.norm, t, h, self.y, self.D, self.ns,
+                                 self.rtol, self.atol, self.ts_append, self.ys_append,
+                                 self.hist_append)
+            (code, self.t, self.y, self.D, k, self.ns, nacc, nord, kmaxu, err, erk, erkm1,
+             erkm2, self.erkp1, self.hrho) = out
+            self.k, self.erk, self.erkm1 = k, erk, erkm1
+            self.knew = _lower_order(k, erk, erkm1, erkm2)
+            if nord:
+                self.n_order += nord
+                if kmaxu > self.kmax_used:
+                    self.kmax_used = kmaxu
             if nacc:
                 ifail = 0
+                self.naccpt += nacc
+                self.nfev += 2 * nacc
+                if len(self.history) > 2 * HISTORY:
+                    del self.history[:-HISTORY]
             if code != RUN_REJECTED:
                 return code, y_old
-            self.nfev += 1
-            self.nrej += 1
-            self.phase1 = False
             ifail += 1
-            ratio = 0.5
-            if ifail > 3 and 0.5 < 0.25 * self.erk:
-                ratio = math.sqrt(0.5 / self.erk)
-            self.k = 1 if ifail >= 3 else self.knew
-            if not math.isfinite(err):
-                ratio, self.k = 0.25, 1
-            self.change(ratio)
+            self.reject(ifail, err)
             y_old = self.y
 
-    def _one_run(self, single):
-        """Call the run (plain floats or arrays); returns ``(code, err, nacc)``."""
-        if self.floats:
-            out = self.run(self.fun, self.t, self.h, self.y, self.D, self.k, self.ns,
-                           1 if single else self.max_steps - self.naccpt,
-                           self.far if single else self.t_end, single, self.max_order,
-                           self.rtol, self.atols, self.max_step, self.ts_append,
-                           self.ys_append, self.hist_append)
-        else:
-            out = _array_run(self.k, self.call, self.norm, self.t, self.h, self.y, self.D,
-                             self.ns, self.rtol, self.atol, self.ts_append, self.ys_append,
-                             self.hist_append)
-        (code, self.t, self.y, self.D, k, self.ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2,
-         self.erkp1, self.hrho) = out
-        self.k, self.erk, self.erkm1 = k, erk, erkm1
-        if nord:
-            self.n_order += nord
-            if kmaxu > self.kmax_used:
-                self.kmax_used = kmaxu
-        if nacc:
-            self.naccpt += nacc
-            self.nfev += 2 * nacc
-            if len(self.history) > 2 * HISTORY:
-                del self.history[:-HISTORY]
-        self.knew = _lower_order(k, erk, erkm1, erkm2)
-        return code, err, nacc
+    def reject(self, ifail, err):
+        """After the `ifail`-th rejection in a row: a smaller step, perhaps a lower order."""
+        self.nfev += 1
+        self.nrej += 1
+        self.phase1 = False
+        ratio = 0.5
+        if ifail > 3 and 0.5 < 0.25 * self.erk:
+            ratio = math.sqrt(0.5 / self.erk)
+        self.k = 1 if ifail >= 3 else self.knew
+        if not math.isfinite(err):
+            ratio, self.k = 0.25, 1
+        self.change(ratio)
 
     def record(self, y_old):
         """The stiffness test and, with dense output, the step from `y_old` recorded (and
         the events found); True if a terminal event stops the run."""
         k, t = self.k, self.t
-        if self.nstiff and not self.phase1 and self.erk >= STIFF_MIN_ESTIMATE:
+        if not self.phase1 and self.erk >= STIFF_MIN_ESTIMATE:
             # stiffness: h rho near the stability border at a low order (not in the first
             # phase, nor with an error estimate so small that e is mostly rounding)
             self.iasti, self.nonsti, self.warned = stiffness_count(
