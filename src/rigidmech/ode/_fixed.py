@@ -1,10 +1,11 @@
 """Shared checks and output recording of the fixed-step methods of :mod:`rigidmech.ode`.
 
-Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep` and
-:mod:`~rigidmech.ode.geometric`: validation of ``t_span``, ``y0`` and ``step``, the uniform
-grid, the one fixed-step loop (:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of
-the output (``save_every``) and the assembly of the :class:`~rigidmech.ode.OdeResult` with an
-optional cubic Hermite dense output.
+Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep`,
+:mod:`~rigidmech.ode.geometric` and the constant step of :mod:`~rigidmech.ode.rkn`: validation
+of ``t_span``, ``y0`` and ``step``, the uniform grid, the one fixed-step loop
+(:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of the output (``save_every``) and
+the assembly of the :class:`~rigidmech.ode.OdeResult` with an optional dense output (cubic
+Hermite, or the method's own polynomial).
 """
 
 from __future__ import annotations
