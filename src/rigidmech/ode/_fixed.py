@@ -1,10 +1,11 @@
 """Shared checks and output recording of the fixed-step methods of :mod:`rigidmech.ode`.
 
-Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep` and
-:mod:`~rigidmech.ode.geometric`: validation of ``t_span``, ``y0`` and ``step``, the uniform
-grid, the one fixed-step loop (:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of
-the output (``save_every``) and the assembly of the :class:`~rigidmech.ode.OdeResult` with an
-optional cubic Hermite dense output.
+Used by :mod:`~rigidmech.ode.runge_kutta`, :mod:`~rigidmech.ode.multistep`,
+:mod:`~rigidmech.ode.geometric` and the constant step of :mod:`~rigidmech.ode.rkn`: validation
+of ``t_span``, ``y0`` and ``step``, the uniform grid, the one fixed-step loop
+(:func:`fixed_loop`: finiteness, progress, Ctrl-C), thinning of the output (``save_every``) and
+the assembly of the :class:`~rigidmech.ode.OdeResult` with an optional dense output (cubic
+Hermite, or the method's own polynomial).
 """
 
 from __future__ import annotations
@@ -88,14 +89,16 @@ class FixedRecorder:
     """Collects the states of a fixed-step run and builds the :class:`OdeResult`.
 
     States are kept every `save_every` steps and at the last step; with `dense` the derivative
-    is kept too, and the result carries a cubic Hermite ``sol(t)`` through the kept points.
-    The states are kept as given (fresh arrays, or lists of floats), in the flat or the user
-    shape.
+    is kept too, and the result carries a ``sol(t)`` through the kept points: cubic Hermite,
+    or the polynomial of ``coefficients(y0, y1, f0, f1, h)`` (power form, as
+    :func:`~rigidmech.ode._dense.hermite_coefficients`) if given. The states are kept as given
+    (fresh arrays, or lists of floats), in the flat or the user shape.
     """
 
-    __slots__ = ("ts", "ys", "fs", "dense", "save_every", "status", "message", "shape")
+    __slots__ = ("ts", "ys", "fs", "dense", "save_every", "status", "message", "shape",
+                 "coefficients")
 
-    def __init__(self, t0, y0, f0, save_every, dense, shape=None):
+    def __init__(self, t0, y0, f0, save_every, dense, shape=None, coefficients=None):
         self.ts = [t0]
         self.ys = [y0.copy()]
         self.dense = bool(dense)
@@ -104,6 +107,7 @@ class FixedRecorder:
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
         self.shape = y0.shape if shape is None else shape
+        self.coefficients = coefficients or hermite_coefficients
 
     def add(self, t, y, f=None):
         """Record the state `y` (a fresh array or list, kept) at `t`, with `f` if dense."""
@@ -123,7 +127,7 @@ class FixedRecorder:
             F = np.array(self.fs, dtype=float).reshape(len(t), -1)
             h = np.diff(t)
             coeffs = np.stack(
-                [hermite_coefficients(flat[i], flat[i + 1], F[i], F[i + 1], h[i])
+                [self.coefficients(flat[i], flat[i + 1], F[i], F[i + 1], h[i])
                  for i in range(len(h))]
             )
             sol = DenseSolution(t, flat[:-1], coeffs, "power", self.shape)

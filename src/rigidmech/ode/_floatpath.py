@@ -23,8 +23,9 @@ import numpy as np
 
 from ._loop import StepResult
 
-__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_pair_step", "make_rkn_stepper",
-           "make_midpoint", "compile_function", "cached"]
+__all__ = ["FLOAT_PATH_MAX_N", "make_unrolled_stepper", "make_fixed_advance", "make_pair_step",
+           "error_norm", "ERROR_NORM_LINES", "make_rkn_stepper", "make_midpoint",
+           "compile_function", "cached"]
 
 #: Largest system size for which the plain-float kernel is used (measured crossover with the
 #: numpy path: about 16 equations for DOP853 on a 2-core machine).
@@ -115,6 +116,60 @@ def make_unrolled_stepper(name, A, b, c, s, errors, n, norm=False):
     return _compile(f"{name}_{n}{'n' if norm and errors is not None else ''}", lines)
 
 
+def make_fixed_advance(name, A, b, c, s, n):
+    """The step of a fixed-step tableau for `n` equations, as a factory bound once per run.
+
+    ``bind(fun, y, k0) -> advance(t, h)``: ``advance`` makes one step from the state it keeps
+    (`y`, a list of floats; `k0`, ``f(t, y)`` already evaluated, or None) and returns
+    ``(y_new, None)``, the form :func:`rigidmech.ode._fixed.fixed_loop` expects: the stage
+    ``f(t, y)`` and the whole step in one generated function (no Python frame around it).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> bind = make_fixed_advance("euler", np.zeros((1, 1)), np.ones(1), np.zeros(1), 1, 1)
+    >>> advance = bind(lambda t, y: -y, [1.0], None)
+    >>> advance(0.0, 0.1), advance(0.1, 0.1)[0]
+    (([0.9], None), [0.81])
+    """
+    body = _unrolled_lines(name, A, b, c, s, None, n, False)
+    lines = ["def make(fun, y, k0):", "    def advance(t, h):", "        nonlocal y, k0",
+             "        if k0 is None:", "            k0 = _tolist(fun(t, _arr(y)))"]
+    lines += ["    " + line for line in body[1:-1]]
+    lines += ["        y = yn", "        k0 = None", "        return yn, None",
+              "    return advance"]
+    return cached(("fixed-advance", name, A.tobytes(), b.tobytes(), c.tobytes(), n),
+                  lambda: compile_function(lines, "make", f"{name} fixed step n={n}"))
+
+
+#: The error norm of an embedded pair from the weighted sums of squares ``s0`` (and ``s1``) of
+#: its error vectors over ``n`` components, as source: Hairer's RMS norm for one error vector;
+#: for two, DOP853's combination of its 5th- and 3rd-order estimates (Hairer's code:
+#: ``err5**2 / sqrt(err5**2 + 0.01 err3**2)``; a nan stays nan, so that the step is rejected).
+#: The one definition of the formulas: compiled into the generated steps
+#: (:func:`make_pair_step`) and into :func:`error_norm` for the numpy path.
+ERROR_NORM_LINES = {
+    1: ("err = {h_abs}*_sqrt(s0/{n})",),
+    2: ("den = s0 + 0.01*s1",
+        "err = {h_abs}*s0/_sqrt(den*{n}) if den > 0 else (0.0 if den == 0 else den)"),
+}
+
+
+def error_norm(m):
+    """``norm(h_abs, s0, s1, n) -> err``: :data:`ERROR_NORM_LINES` for `m` error vectors as a
+    function (`s1` unused for one).
+
+    Examples
+    --------
+    >>> error_norm(2)(0.5, 4.0, 0.0, 1), error_norm(1)(0.5, 4.0, None, 1)
+    (1.0, 1.0)
+    """
+    return cached(("error-norm", m), lambda: compile_function(
+        ["def norm(h_abs, s0, s1, n):"]
+        + ["    " + line.format(n="n", h_abs="h_abs") for line in ERROR_NORM_LINES[m]]
+        + ["    return err"], "norm", f"error norm of {m} vectors", {"_sqrt": math.sqrt}))
+
+
 def make_pair_step(name, A, b, c, s, errors, n):
     """The step of an embedded pair for `n` equations, as a factory bound once per run.
 
@@ -148,12 +203,8 @@ def _pair_step_lines(name, A, b, c, s, errors, n):
         if line.strip().startswith("at_0") and line.endswith("= atols"):
             continue
         lines.append("    " + line)
-    if len(errors) == 1:
-        lines.append(f"        err = abs(h)*_sqrt(s0/{n})")
-    else:
-        lines.append("        den = s0 + 0.01*s1")
-        lines.append(f"        err = abs(h)*s0/_sqrt(den*{n}) if den > 0 else "
-                     "(0.0 if den == 0 else den)")
+    lines += ["        " + line.format(n=n, h_abs="abs(h)")
+              for line in ERROR_NORM_LINES[len(errors)]]
     ks, last = ret.split("return yn, ", 1)[1].rsplit(", s0", 1)[0].rsplit(", ", 1)
     lines.append(f"        return _new(_SR, (yn, k{s}, err, ({ks}, {last})))")
     lines.append("    return step")

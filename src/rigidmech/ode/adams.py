@@ -73,7 +73,7 @@ from rigidmech._core.errors import ArgumentError
 from . import _registry
 from ._driver import Recorder, SampleRecorder, flat_tolerance
 from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
-from ._loop import check_progress
+from ._loop import _underflow_reason, check_progress
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
 from .multistep import adams_gamma
@@ -298,18 +298,16 @@ def _float_run_source(n):
     order changed inside the run, a step costs about as much as the two calls of ``fun``
     (damped oscillator, docs' performance page); loops over lists of differences, or a return
     to the driver at every change of order, cost several times more. The error estimates are
-    kept squared inside the run (no square roots; the comparisons are the same).
+    kept squared inside the run (no square roots; the comparisons are the same). The body of
+    order k is :func:`_attempt_lines`, :func:`_accept_lines` and :func:`_order_lines`, chosen
+    by a binary tree of tests on k.
     """
     r = range(n)
-    B = "        "
-    rows = ", ".join(f"D{j}_{i}" for j in range(MAX_ORDER + 2) for i in r)
-    ys = ", ".join(f"y{i}" for i in r)
-    est = "_sqrt(erk), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"  # err = erk
-    state = "y, [" + rows + f"][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu"
+    rows = _rows(n)
     L = [
         f"def adams_run_{n}(fun, t, h, y, D, k, ns, limit, t_stop, single, kmax, rtol, atols,"
         " max_step, ts_append, ys_append, hist_append):",
-        f"    {ys}, = y",
+        f"    {', '.join(f'y{i}' for i in r)}, = y",
         f"    {rows}, = D + _ZEROS[len(D):]",
         f"    {', '.join(f'at{i}' for i in r)}, = atols",
         "    h2 = h*h",
@@ -319,127 +317,139 @@ def _float_run_source(n):
         "    while True:",
         "        t_new = t + h",
         "        if (t_new - t_stop)*h >= 0.0 or nacc >= limit:",
-        f"            return {RUN_STOPPED}, t, {state}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0",
+        f"            return {RUN_STOPPED}, t, {_state(n)}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0",
     ]
-
-    def body(k, ind):
-        def q(j, i):  # predicted difference q_j (q_{k-1} is D_{k-1} itself)
-            return f"D{k - 1}_{i}" if j == k - 1 else f"q{j}_{i}"
-
-        def sq(expr, c):  # c h^2 sum (v_i w_i)^2 = (|h| sqrt(c n) ||v||)^2, RMS norm
-            terms = " + ".join(f"(a{i} := ({expr(i)})*w{i})*a{i}" for i in r)
-            return f"{c / n!r}*h2*({terms})"
-
-        out = []
-
-        def put(line):
-            out.append(ind + line)
-
-        for i in r:
-            for j in range(k - 2, -1, -1):
-                put(f"q{j}_{i} = D{j}_{i} + {q(j + 1, i)}")
-            terms = " + ".join(("" if j == 0 else f"{_G[j]!r}*") + f"D{j}_{i}" for j in range(k))
-            put(f"p{i} = y{i} + h*({terms})")
-        put(f"{', '.join(f'f{i}' for i in r)}, = "
-            f"_tolist(fun(t_new, _arr([{', '.join(f'p{i}' for i in r)}])))")
-        for i in r:
-            put(f"e{i} = f{i} - {q(0, i)}")
-            put(f"w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
-        put(f"erk = {sq(lambda i: f'e{i}', _GS[k] ** 2)}")  # also the step's error: err
-        if k >= 2:
-            put(f"erkm1 = {sq(lambda i: f'{q(k - 1, i)} + e{i}', _GS[k - 1] ** 2)}")
-        if k >= 3:
-            put(f"erkm2 = {sq(lambda i: f'{q(k - 2, i)} + e{i}', _GS[k - 2] ** 2)}")
-        put("if not erk <= 1.0:")
-        put(f"    return {RUN_REJECTED}, t, {state}, {est}, 0.0, 0.0")
-        for i in r:
-            put(f"yn{i} = p{i} + {_G[k]!r}*h*e{i}")
-        yn = ", ".join(f"yn{i}" for i in r)
-        put(f"yn = [{yn}]")
-        put(f"{', '.join(f'c{i}' for i in r)}, = _tolist(fun(t_new, _arr(yn)))")
-        put(f"if {' + '.join(f'0.0*yn{i}' for i in r)} != 0.0:  # inf or nan")
-        put(f"    return {RUN_NONFINITE}, t_new, yn, [{rows}][:(k + 2)*{n}], k, ns, nacc, "
-            f"nord, kmaxu, {est}, 0.0, 0.0")
-        for i in r:
-            put(f"c{i} = c{i} - {q(0, i)}")
-            put(f"D{k + 1}_{i} = c{i} - D{k}_{i}")
-            put(f"D{k}_{i} = c{i}")
-            for j in range(k - 1, -1, -1):
-                put(f"D{j}_{i} = {q(j, i)} + c{i}")
-        put("t = t_new")
-        put("y = yn")
-        put(f"{ys}, = {yn},")
-        put("ns += 1")
-        put("nacc += 1")
-        put("ts_append(t)")
-        put("ys_append(yn)")
-        put(f"hist_append([{', '.join(f'D0_{i}' for i in r)}])")
-        erkp1 = sq(lambda i: f"D{k + 1}_{i}", _GS[k + 1] ** 2)
-        hrho = "0.0"  # the stiffness test looks at low orders only
-        if k <= STIFF_MAX_ORDER:
-            hrho = (f"_hrho(({', '.join(f'c{i} - e{i}' for i in r)},), "
-                    f"({', '.join(f'e{i}' for i in r)},), {_G[k]!r})")
-        decide = f"return {RUN_DECIDE}, t, {state}, {est}, _sqrt(erkp1), {hrho}"
-        put("if single:")
-        put(f"    erkp1 = {erkp1}")
-        put(f"    {decide}")
-
-        def choose(kk, e):  # next order kk with estimate e; leave the run if h would change
-            # (a wanted doubling leaves the run even when the driver will wait for the known
-            # values of f to reach back far enough: the driver alone knows them)
-            return [f"k2, e2 = {kk}, {e}",
-                    f"if not 0.25 >= e2 or (double_ok and 0.25 >= {4.0 ** (kk + 1)!r}*e2):",
-                    f"    {decide}"]
-
-        # _lower_order, then _next_order (out of the first phase, which is `single`)
-        if k >= 3:
-            put("if erkm1 <= erk and erkm2 <= erk:")
-        elif k == 2:
-            put("if erkm1 <= 0.25*erk:")
-        if k >= 2:
-            for line in choose(k - 1, "erkm1"):
-                put("    " + line)
-            put(f"elif ns > {k}:")
-        else:
-            put(f"if ns > {k}:")
-        put(f"    erkp1 = {erkp1}")
-        if k == 1:
-            put("    if kmax > 1 and erkp1 < 0.25*erk:")
-            for line in choose(2, "erkp1"):
-                put("        " + line)
-            put("    else:")
-        else:
-            put("    if erkm1 <= erk and erkm1 <= erkp1:")
-            for line in choose(k - 1, "erkm1"):
-                put("        " + line)
-            put(f"    elif erkp1 < erk and kmax > {k}:")
-            for line in choose(k + 1, "erkp1"):
-                put("        " + line)
-            put("    else:")
-        for line in choose(k, "erk"):
-            put("        " + line)
-        put("else:")
-        for line in choose(k, "erk"):
-            put("    " + line)
-        put(f"if k2 != {k}:")
-        put("    nord += 1")
-        put("    k = k2")
-        if k < MAX_ORDER:
-            put(f"    if k2 > {k}:  # one more difference, unknown")
-            put(f"        {', '.join(f'D{k + 2}_{i}' for i in r)} = {', '.join('0.0' for i in r)}")
-            put("        if k2 > kmaxu:")
-            put("            kmaxu = k2")
-        return out
 
     def tree(lo, hi, ind):
         if lo == hi:
-            return body(lo, ind)
+            return [ind + line for line in (_attempt_lines(lo, n) + _accept_lines(lo, n)
+                                            + _order_lines(lo, n))]
         mid = (lo + hi) // 2
         return ([f"{ind}if k <= {mid}:"] + tree(lo, mid, ind + "    ")
                 + [f"{ind}else:"] + tree(mid + 1, hi, ind + "    "))
 
-    L += tree(1, MAX_ORDER, B)
+    L += tree(1, MAX_ORDER, "        ")
     return "\n".join(L)
+
+
+#: the squared estimates returned by a run: err (= erk), erk, erkm1, erkm2
+_EST = "_sqrt(erk), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"
+
+
+def _rows(n):
+    return ", ".join(f"D{j}_{i}" for j in range(MAX_ORDER + 2) for i in range(n))
+
+
+def _state(n):
+    return "y, [" + _rows(n) + f"][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu"
+
+
+def _q(k, j, i):
+    """The predicted difference q_j of component i (q_{k-1} is D_{k-1} itself)."""
+    return f"D{k - 1}_{i}" if j == k - 1 else f"q{j}_{i}"
+
+
+def _sq(expr, c, n):
+    """``c h^2 sum (v_i w_i)^2 = (|h| sqrt(c n) ||v||)^2``: a squared RMS norm."""
+    terms = " + ".join(f"(a{i} := ({expr(i)})*w{i})*a{i}" for i in range(n))
+    return f"{c / n!r}*h2*({terms})"
+
+
+def _attempt_lines(k, n):
+    """Order k: predict, evaluate, estimate at orders k, k-1, k-2; return if rejected."""
+    r, out = range(n), []
+    for i in r:
+        for j in range(k - 2, -1, -1):
+            out.append(f"q{j}_{i} = D{j}_{i} + {_q(k, j + 1, i)}")
+        terms = " + ".join(("" if j == 0 else f"{_G[j]!r}*") + f"D{j}_{i}" for j in range(k))
+        out.append(f"p{i} = y{i} + h*({terms})")
+    out.append(f"{', '.join(f'f{i}' for i in r)}, = "
+               f"_tolist(fun(t_new, _arr([{', '.join(f'p{i}' for i in r)}])))")
+    for i in r:
+        out.append(f"e{i} = f{i} - {_q(k, 0, i)}")
+        out.append(f"w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
+    out.append(f"erk = {_sq(lambda i: f'e{i}', _GS[k] ** 2, n)}")  # also the step's error
+    if k >= 2:
+        out.append(f"erkm1 = {_sq(lambda i: f'{_q(k, k - 1, i)} + e{i}', _GS[k - 1] ** 2, n)}")
+    if k >= 3:
+        out.append(f"erkm2 = {_sq(lambda i: f'{_q(k, k - 2, i)} + e{i}', _GS[k - 2] ** 2, n)}")
+    out.append("if not erk <= 1.0:")
+    out.append(f"    return {RUN_REJECTED}, t, {_state(n)}, {_EST}, 0.0, 0.0")
+    return out
+
+
+def _accept_lines(k, n):
+    """Order k, accepted: correct, evaluate, update the differences, record the step."""
+    r, out = range(n), []
+    for i in r:
+        out.append(f"yn{i} = p{i} + {_G[k]!r}*h*e{i}")
+    yn = ", ".join(f"yn{i}" for i in r)
+    out.append(f"yn = [{yn}]")
+    out.append(f"{', '.join(f'c{i}' for i in r)}, = _tolist(fun(t_new, _arr(yn)))")
+    out.append(f"if {' + '.join(f'0.0*yn{i}' for i in r)} != 0.0:  # inf or nan")
+    out.append(f"    return {RUN_NONFINITE}, t_new, yn, [{_rows(n)}][:(k + 2)*{n}], k, ns, nacc, "
+               f"nord, kmaxu, {_EST}, 0.0, 0.0")
+    for i in r:
+        out.append(f"c{i} = c{i} - {_q(k, 0, i)}")
+        out.append(f"D{k + 1}_{i} = c{i} - D{k}_{i}")
+        out.append(f"D{k}_{i} = c{i}")
+        for j in range(k - 1, -1, -1):
+            out.append(f"D{j}_{i} = {_q(k, j, i)} + c{i}")
+    out += ["t = t_new", "y = yn", f"{', '.join(f'y{i}' for i in r)}, = {yn},", "ns += 1",
+            "nacc += 1", "ts_append(t)", "ys_append(yn)",
+            f"hist_append([{', '.join(f'D0_{i}' for i in r)}])"]
+    return out
+
+
+def _order_lines(k, n):
+    """Order k, after an accepted step: the next order (``_lower_order``, then
+    ``_next_order``, out of the first phase, which is `single`); return to the driver where
+    the spacing would change."""
+    r, out = range(n), []
+    erkp1 = _sq(lambda i: f"D{k + 1}_{i}", _GS[k + 1] ** 2, n)
+    hrho = "0.0"  # the stiffness test looks at low orders only
+    if k <= STIFF_MAX_ORDER:
+        hrho = (f"_hrho(({', '.join(f'c{i} - e{i}' for i in r)},), "
+                f"({', '.join(f'e{i}' for i in r)},), {_G[k]!r})")
+    decide = f"return {RUN_DECIDE}, t, {_state(n)}, {_EST}, _sqrt(erkp1), {hrho}"
+    out += ["if single:", f"    erkp1 = {erkp1}", f"    {decide}"]
+
+    def choose(kk, e, ind):  # next order kk with estimate e; leave the run if h would change
+        # (a wanted doubling leaves the run even when the driver will wait for the known
+        # values of f to reach back far enough: the driver alone knows them)
+        return [ind + line for line in (
+            f"k2, e2 = {kk}, {e}",
+            f"if not 0.25 >= e2 or (double_ok and 0.25 >= {4.0 ** (kk + 1)!r}*e2):",
+            f"    {decide}")]
+
+    if k >= 3:
+        out.append("if erkm1 <= erk and erkm2 <= erk:")
+    elif k == 2:
+        out.append("if erkm1 <= 0.25*erk:")
+    if k >= 2:
+        out += choose(k - 1, "erkm1", "    ")
+        out.append(f"elif ns > {k}:")
+    else:
+        out.append(f"if ns > {k}:")
+    out.append(f"    erkp1 = {erkp1}")
+    if k == 1:
+        out.append("    if kmax > 1 and erkp1 < 0.25*erk:")
+        out += choose(2, "erkp1", "        ")
+    else:
+        out.append("    if erkm1 <= erk and erkm1 <= erkp1:")
+        out += choose(k - 1, "erkm1", "        ")
+        out.append(f"    elif erkp1 < erk and kmax > {k}:")
+        out += choose(k + 1, "erkp1", "        ")
+    out.append("    else:")
+    out += choose(k, "erk", "        ")
+    out.append("else:")
+    out += choose(k, "erk", "    ")
+    out += [f"if k2 != {k}:", "    nord += 1", "    k = k2"]
+    if k < MAX_ORDER:
+        out += [f"    if k2 > {k}:  # one more difference, unknown",
+                f"        {', '.join(f'D{k + 2}_{i}' for i in r)} = {', '.join('0.0' for i in r)}",
+                "        if k2 > kmaxu:", "            kmaxu = k2"]
+    return out
 
 
 def _float_run(n):
@@ -634,38 +644,37 @@ def _next_ratio(k, erk, phase1, reach, h_abs, max_step):
     return max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
 
 
-def _stopped_by(progress, rec, t):
-    """Call ``progress(t)`` after an accepted step; True (and status 2) if it says stop."""
-    if progress(t) is False:
-        rec.interrupt("The integration was stopped by the `progress` callback", t)
-        return True
-    return False
-
-
-def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-               dense_output, events, max_order, nstiff, progress=None, t_eval=None):
+def _start(fun, t_span, y0, rtol, atol, first_step, max_step, dense_output, events, t_eval):
+    """The first evaluation, the recorder and the first step (Shampine and Gordon's
+    ``0.25 / sqrt(||f0||)`` when the interval is longer): the settings of an :class:`_Run`,
+    or the failed result if ``f(t0, y0)`` is not finite."""
     t0, t_end = (float(v) for v in t_span)
-    direction = 1.0 if t_end > t0 else -1.0
-    shape = y0.shape
-    batch = len(shape) == 2
-    N = y0.size
-    y = y0.reshape(-1).astype(float)
+    shape, y = y0.shape, y0.reshape(-1).astype(float)
     f_raw = fun(t0, y.reshape(shape).copy())
-    floats = (not batch and N <= FLOAT_PATH_MAX_N and type(f_raw) is np.ndarray
+    floats = (len(shape) == 1 and y.size <= FLOAT_PATH_MAX_N and type(f_raw) is np.ndarray
               and f_raw.shape == shape and f_raw.dtype == np.float64)
     f0 = np.array(f_raw, dtype=float).reshape(-1)
-    nfev = 1
-    sampling = t_eval is not None and not dense_output  # keep the samples only
-    if sampling:
+    if t_eval is not None and not dense_output:  # keep the samples only
         rec = SampleRecorder(t0, y, shape, events, t_eval, "power")
     else:
         rec = Recorder(t0, y, shape, dense_output, events, "power")
-    steps_t = [t0] if sampling else rec.ts  # the times of the last steps (for `change`)
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y)
-        return rec.result("adams", nfev, 0)
+        return rec.result("adams", 1, 0)
     atol_arr = flat_tolerance(atol, shape)
-    if batch:
+    norm, call = _norm_and_call(fun, shape)
+    s0 = norm(f0 / (atol_arr + rtol * np.abs(y)))
+    h_abs = abs(t_end - t0) if first_step is None else float(first_step)
+    if first_step is None and 16.0 * s0 * h_abs * h_abs > 1.0:
+        h_abs = 0.25 / math.sqrt(s0)
+    h = (1.0 if t_end > t0 else -1.0) * min(h_abs, max_step, abs(t_end - t0))
+    return rec, (t0, t_end, y, f0, h, floats, atol_arr, norm, call)
+
+
+def _norm_and_call(fun, shape):
+    """The weighted RMS norm (the largest over a batch) and ``fun`` on flat arrays."""
+    N = math.prod(shape)
+    if len(shape) == 2:
         def norm(v):
             v = v.reshape(shape)
             return float(np.sqrt(np.max(np.mean(v * v, axis=0))))
@@ -678,48 +687,66 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
 
         def call(t, v):
             return np.array(fun(t, v), dtype=float)
+    return norm, call
 
-    # Shampine and Gordon's first step: 0.25 / sqrt(||f0||) when the interval is longer
-    s0 = norm(f0 / (atol_arr + rtol * np.abs(y)))
-    h_abs = abs(t_end - t0) if first_step is None else float(first_step)
-    if first_step is None and 16.0 * s0 * h_abs * h_abs > 1.0:
-        h_abs = 0.25 / math.sqrt(s0)
-    h = direction * min(h_abs, max_step, abs(t_end - t0))
 
-    # state: order k and the differences D_0 .. D_{k+1} at spacing h (D_{k+1}: 0 if unknown),
-    # a flat list of floats (plain-float path) or a (k + 2, N) array
-    k = 1
-    D = np.zeros((3, N))
-    D[0] = f0
-    if floats:
-        D = D.reshape(-1).tolist()
-        y = y.tolist()
-        atols = atol_arr.tolist()
-    # values of f at the current spacing since its last change: doubling the step above order
-    # RESAMPLE_DOUBLING_MAX_ORDER takes every other one (re-sampling would extrapolate the
-    # polynomial backwards over twice its span, which amplifies its error about 2**k times)
-    history = [D[:N] if floats else f0]
-    t = t0
-    ns = 0  # steps since the last change of step size
-    phase1 = True
-    naccpt = nrej = n_order = n_resample = 0
-    iasti = nonsti = 0
-    warned = False
-    kmax_used = 1
-    want_dense = rec.needs_dense
-    if want_dense:  # the driver records every step itself, through rec.accept
-        def ts_append(v):
-            pass
-        ys_append = ts_append
-    else:  # the runs record their steps (the plain-float path's lists are fresh, never modified)
-        ts_append, ys_append = rec.ts.append, rec.ys.append
-    hist_append = history.append
-    tiny = 4.0 * np.finfo(float).eps
-    far = direction * math.inf
-    run = _float_run(N) if floats else None
+class _Run:
+    """The state of one adams integration, between the runs of steps (on an object so that
+    an interruption finds it). The outer loop (:meth:`loop`) owns what every method's loop
+    owns: the end of ``t_span`` (clamping the last step), `max_steps`, failures with the
+    shared messages, recording (dense output, ``t_eval``, events, through the recorders of
+    :mod:`~rigidmech.ode._driver`), ``progress`` and Ctrl-C (:func:`_integrate`); the runs
+    (:func:`_float_run`, :func:`_array_run`) make the steps, :meth:`attempt` the rejections,
+    :meth:`record` and :meth:`next_step` what follows an accepted step."""
 
-    def change(D, k, ratio):
-        """The differences at the spacing ``ratio * h`` (k + 2 rows; D_{k+1} unknown: 0).
+    __slots__ = ("atol", "atols", "call", "D", "direction", "erk", "erkm1", "erkp1", "floats",
+                 "fun", "h", "history", "hrho", "iasti", "k", "kmax_used", "knew", "max_order",
+                 "max_step", "max_steps", "n_order", "n_resample", "naccpt", "nfev", "nonsti",
+                 "norm", "nrej", "ns", "nstiff", "phase1", "progress", "rec", "rtol", "run",
+                 "sampling", "steps_t", "t", "t_end", "ts_append", "want_dense", "warned", "y",
+                 "ys_append", "N", "hist_append", "far")
+
+    def __init__(self, fun, rec, start, rtol, max_step, max_steps, max_order, nstiff,
+                 progress):
+        t0, self.t_end, y, f0, self.h, self.floats, self.atol, self.norm, self.call = start
+        self.fun, self.rec, self.rtol, self.max_step = fun, rec, rtol, max_step
+        self.max_steps, self.max_order, self.nstiff, self.progress = (
+            max_steps, max_order, nstiff, progress)
+        self.N, self.t, self.k, self.ns, self.phase1 = y.size, t0, 1, 0, True
+        self.direction = 1.0 if self.t_end > t0 else -1.0
+        self.sampling = isinstance(rec, SampleRecorder)
+        self.steps_t = [t0] if self.sampling else rec.ts  # times of the last steps (`change`)
+        self.nfev, self.naccpt, self.nrej, self.n_order, self.n_resample = 1, 0, 0, 0, 0
+        self.iasti = self.nonsti = 0
+        self.warned = False
+        self.kmax_used = 1
+        # the differences D_0 .. D_{k+1} at spacing h (D_{k+1}: 0 if unknown), a flat list of
+        # floats (plain-float path) or a (k + 2, N) array
+        D = np.zeros((3, self.N))
+        D[0] = f0
+        self.y, self.D = (y.tolist(), D.reshape(-1).tolist()) if self.floats else (y, D)
+        self.atols = self.atol.tolist()
+        # values of f at the current spacing since its last change: doubling the step above
+        # order RESAMPLE_DOUBLING_MAX_ORDER takes every other one (re-sampling would
+        # extrapolate the polynomial backwards over twice its span, which amplifies its error
+        # about 2**k times)
+        self.history = [self.D[:self.N] if self.floats else f0]
+        self.hist_append = self.history.append  # the list is trimmed in place, never replaced
+        self.far = self.direction * math.inf
+        self.want_dense = rec.needs_dense
+        if self.want_dense:  # the loop records every step itself, through rec.accept
+            self.ts_append = self.ys_append = _ignore
+        else:  # the runs record their steps (the float path's lists are fresh, never modified)
+            self.ts_append, self.ys_append = rec.ts.append, rec.ys.append
+        self.run = _float_run(self.N) if self.floats else None
+
+    def stats(self):
+        return {"order_changes": self.n_order, "step_changes": self.n_resample,
+                "max_order_used": self.kmax_used}
+
+    def change(self, ratio):
+        """Move the differences to the spacing ``ratio * h`` (k + 2 rows; D_{k+1} unknown:
+        0), and h with them.
 
         Exact when the values of f they need are known: every other one of the last 2k + 1
         at constant spacing (doubling), Newton's polynomial of the differences re-sampled when
@@ -728,137 +755,181 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
         the first steps, when no known values reach back over the new span, is the polynomial
         of the differences extrapolated backwards.
         """
+        k, N, h, history = self.k, self.N, self.h, self.history
         out = np.zeros((k + 2, N))
         m = min(len(history), HISTORY)
-        T = steps_t[-m:]
-        if ratio == 2.0 and ns >= 2 * k:
+        T = self.steps_t[-m:]
+        if ratio == 2.0 and self.ns >= 2 * k:
             vals = np.array(history[-1: -2 * k - 2: -2], dtype=float)  # f_n, f_{n-2}, ...
             out[: k + 1] = _DELTA[k] @ vals
-        elif (ratio < 1.0 and ns >= k) or m < k + 1 or (
+        elif (ratio < 1.0 and self.ns >= k) or m < k + 1 or (
                 abs(T[-1] - T[0]) < k * abs(ratio * h) * (1.0 - 1e-12)):
-            rows = np.asarray(D, dtype=float).reshape(-1, N)
+            rows = np.asarray(self.D, dtype=float).reshape(-1, N)
             out[: k + 1] = _resample_cached(k, ratio) @ rows[: k + 1]
         else:
             M, idx = _reinterpolation_matrix(T, k, ratio * h)
             out[: k + 1] = M @ np.asarray([history[i] for i in idx], dtype=float).reshape(
                 k + 1, N)
-        return out.reshape(-1).tolist() if floats else out
+        self.D = out.reshape(-1).tolist() if self.floats else out
+        self.n_resample += 1
+        self.h = h * ratio
+        self.ns = 0
 
-    try:
-        while direction * (t - t_end) < 0:
-            if naccpt >= max_steps:
-                rec.fail(f"The maximum number of steps `max_steps` = {max_steps} was reached",
-                         t, np.array(y))
-                break
-            single = phase1 or want_dense or progress is not None  # one step per run
-            if direction * (t + h - t_end) >= 0:  # last step: end exactly at t_end
-                if direction * (t + h - t_end) > 0:
-                    D = change(D, k, (t_end - t) / h)
-                    n_resample += 1
-                    h = t_end - t
-                    ns = 0
+    def loop(self):
+        """Runs of steps to the end of ``t_span``, or to a failure or a stop."""
+        rec, direction, t_end, progress = self.rec, self.direction, self.t_end, self.progress
+        while direction * (self.t - t_end) < 0:
+            if self.naccpt >= self.max_steps:
+                rec.fail(f"The maximum number of steps `max_steps` = {self.max_steps} was "
+                         "reached", self.t, np.array(self.y))
+                return
+            single = self.phase1 or self.want_dense or progress is not None  # a step a run
+            if direction * (self.t + self.h - t_end) >= 0:  # last step: end exactly at t_end
+                if direction * (self.t + self.h - t_end) > 0:
+                    self.change((t_end - self.t) / self.h)
+                    self.h = t_end - self.t
                 single = True
-            y_old = y
-            ifail = 0
-            while True:
-                ah = abs(h)
-                if ah <= tiny * abs(t) or ah == 0.0 or ah != ah:  # step size underflow (or nan)
-                    code = None
-                    break
-                if floats:
-                    out = run(fun, t, h, y, D, k, ns, 1 if single else max_steps - naccpt,
-                              far if single else t_end, single, max_order, rtol, atols, max_step,
-                              ts_append, ys_append, hist_append)
-                else:
-                    out = _array_run(k, call, norm, t, h, y, D, ns, rtol, atol_arr, ts_append,
-                                     ys_append, hist_append)
-                code, t, y, D, k, ns, nacc, nord, kmaxu, err, erk, erkm1, erkm2, erkp1, hrho = out
-                n_order += nord
-                kmax_used = max(kmax_used, kmaxu)
-                naccpt += nacc
-                nfev += 2 * nacc
-                if nacc:
-                    ifail = 0
-                    if len(history) > 2 * HISTORY:
-                        del history[:-HISTORY]
-                knew = _lower_order(k, erk, erkm1, erkm2)
-                if code != RUN_REJECTED:
-                    break
-                # rejected: halve the step (from the third failure on, at order 1)
-                nfev += 1
-                nrej += 1
-                phase1 = False
-                ifail += 1
-                ratio = 0.5
-                if ifail > 3 and 0.5 < 0.25 * erk:
-                    ratio = math.sqrt(0.5 / erk)
-                if ifail >= 3:
-                    knew = 1
-                if not math.isfinite(err):
-                    ratio, knew = 0.25, 1
-                k = knew
-                D = change(D, k, ratio)
-                n_resample += 1
-                h = h * ratio
-                ns = 0
-                y_old = y
+            code, y_old = self.attempt(single)
             if code is None:
-                rec.fail("The step size fell below the resolution of t (step size underflow)",
-                         t, np.array(y))
-                break
+                rec.fail(_underflow_reason(0.0), self.t, np.array(self.y))
+                return
             if code == RUN_NONFINITE:
-                nfev += 2
-                rec.fail("The state became non-finite", t, np.array(y))
-                break
-            if code == RUN_STOPPED:  # before the last step, or at max_steps: see the loop's top
-                if progress is not None and _stopped_by(progress, rec, t):
-                    break
-                continue
-            # RUN_DECIDE: the last accepted step asks for the order and spacing of the next
-            if nstiff and not phase1 and erk >= STIFF_MIN_ESTIMATE:
-                # stiffness: h rho near the stability border at a low order (not in the first
-                # phase, nor with an error estimate so small that e is mostly rounding)
-                iasti, nonsti, warned = stiffness_count(
-                    "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, hrho, t,
-                    iasti, nonsti, warned)
-            if want_dense:  # a single step from (t - h, y_old)
-                y_rec = np.array(y) if floats else y
-                coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(D).reshape(-1, N), k, h)
-                if sampling:
-                    steps_t.append(t)
-                    if len(steps_t) > 2 * HISTORY:
-                        del steps_t[:-HISTORY]
-                if rec.accept(t, y_rec, coeffs):
-                    break
-            if progress is not None and _stopped_by(progress, rec, t):
-                break
-            k_old = k
-            k, erk, phase1 = _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order)
-            if k > k_old:  # one more difference, unknown
-                n_order += 1
-                kmax_used = max(kmax_used, k)
-                D = D + [0.0] * N if floats else np.vstack([D, np.zeros((1, N))])
-            elif k < k_old:
-                n_order += 1
-                D = D[: (k + 2) * N] if floats else D[: k + 2]
-            ratio = _next_ratio(k, erk, phase1, abs(t - steps_t[-min(len(history), HISTORY)]),
-                                abs(h), max_step)
-            if ratio != 1.0:
-                D = change(D, k, ratio)
-                n_resample += 1
-                h = h * ratio
-                ns = 0
-    except KeyboardInterrupt:  # everything computed so far is kept
-        if sampling:
-            rec.interrupt("The integration was interrupted (KeyboardInterrupt)",
-                          rec.reached()["t_stop"])
-            return rec.result("adams", nfev, nrej, {"order_changes": n_order,
-                              "step_changes": n_resample, "max_order_used": kmax_used})
+                self.nfev += 2
+                rec.fail("The state became non-finite", self.t, np.array(self.y))
+                return
+            if code == RUN_DECIDE and (self.nstiff or self.want_dense) and self.record(y_old):
+                return
+            if progress is not None and progress(self.t) is False:
+                rec.interrupt("The integration was stopped by the `progress` callback", self.t)
+                return
+            if code == RUN_DECIDE:
+                self.next_step()
+
+    def attempt(self, single):
+        """One run from the current state (plain floats or arrays), repeated on rejections
+        (the step halved; from the third failure in a row on, at order 1). Returns ``(code,
+        y_old)`` (`y_old`: the state before the last step, for the dense output); code None on
+        a step size underflow."""
+        tiny, y_old, ifail = _TINY, self.y, 0
+        while True:
+            h, t = self.h, self.t
+            if abs(h) <= tiny * abs(t) or h == 0.0 or h != h:  # underflow (or nan)
+                return None, y_old
+            if self.floats:
+                out = self.run(self.fun, t, h, self.y, self.D, self.k, self.ns,
+                               1 if single else self.max_steps - self.naccpt,
+                               self.far if single else self.t_end, single, self.max_order,
+                               self.rtol, self.atols, self.max_step, self.ts_append,
+                               self.ys_append, self.hist_append)
+            else:
+                out = _array_run(self.k, self.call, self.norm, t, h, self.y, self.D, self.ns,
+                                 self.rtol, self.atol, self.ts_append, self.ys_append,
+                                 self.hist_append)
+            (code, self.t, self.y, self.D, k, self.ns, nacc, nord, kmaxu, err, erk, erkm1,
+             erkm2, self.erkp1, self.hrho) = out
+            self.k, self.erk, self.erkm1 = k, erk, erkm1
+            self.knew = _lower_order(k, erk, erkm1, erkm2)
+            if nord:
+                self.n_order += nord
+                if kmaxu > self.kmax_used:
+                    self.kmax_used = kmaxu
+            if nacc:
+                ifail = 0
+                self.naccpt += nacc
+                self.nfev += 2 * nacc
+                if len(self.history) > 2 * HISTORY:
+                    del self.history[:-HISTORY]
+            if code != RUN_REJECTED:
+                return code, y_old
+            ifail += 1
+            self.reject(ifail, err)
+            y_old = self.y
+
+    def reject(self, ifail, err):
+        """After the `ifail`-th rejection in a row: a smaller step, perhaps a lower order."""
+        self.nfev += 1
+        self.nrej += 1
+        self.phase1 = False
+        ratio = 0.5
+        if ifail > 3 and 0.5 < 0.25 * self.erk:
+            ratio = math.sqrt(0.5 / self.erk)
+        self.k = 1 if ifail >= 3 else self.knew
+        if not math.isfinite(err):
+            ratio, self.k = 0.25, 1
+        self.change(ratio)
+
+    def record(self, y_old):
+        """The stiffness test and, with dense output, the step from `y_old` recorded (and
+        the events found); True if a terminal event stops the run."""
+        k, t = self.k, self.t
+        if not self.phase1 and self.erk >= STIFF_MIN_ESTIMATE:
+            # stiffness: h rho near the stability border at a low order (not in the first
+            # phase, nor with an error estimate so small that e is mostly rounding)
+            self.iasti, self.nonsti, self.warned = stiffness_count(
+                "adams", _STIFF_BORDER[k] if k <= STIFF_MAX_ORDER else math.inf, self.hrho,
+                t, self.iasti, self.nonsti, self.warned)
+        if not self.want_dense:
+            return False
+        y_rec = np.array(self.y) if self.floats else self.y  # a single step from y_old
+        coeffs = _lazy_dense(np.array(y_old), y_rec, np.array(self.D).reshape(-1, self.N), k,
+                             self.h)
+        if self.sampling:
+            self.steps_t.append(t)
+            if len(self.steps_t) > 2 * HISTORY:
+                del self.steps_t[:-HISTORY]
+        return self.rec.accept(t, y_rec, coeffs)
+
+    def next_step(self):
+        """The order and the spacing of the next step (:func:`_next_order`,
+        :func:`_next_ratio`), the differences changed to match."""
+        k_old, N = self.k, self.N
+        k, self.erk, self.phase1 = _next_order(k_old, self.knew, self.phase1, self.ns,
+                                               self.erk, self.erkm1, self.erkp1,
+                                               self.max_order)
+        if k > k_old:  # one more difference, unknown
+            self.n_order += 1
+            self.kmax_used = max(self.kmax_used, k)
+            self.D = self.D + [0.0] * N if self.floats else np.vstack([self.D, np.zeros((1, N))])
+        elif k < k_old:
+            self.n_order += 1
+            self.D = self.D[: (k + 2) * N] if self.floats else self.D[: k + 2]
+        self.k = k
+        reach = abs(self.t - self.steps_t[-min(len(self.history), HISTORY)])
+        ratio = _next_ratio(k, self.erk, self.phase1, reach, abs(self.h), self.max_step)
+        if ratio != 1.0:
+            self.change(ratio)
+
+    def interrupted(self):
+        """Ctrl-C: everything computed so far is kept."""
+        rec, reason = self.rec, "The integration was interrupted (KeyboardInterrupt)"
+        if self.sampling:
+            rec.interrupt(reason, rec.reached()["t_stop"])
+            return
         m = min(len(rec.ts), len(rec.ys))  # a run may have been stopped between two appends
         del rec.ts[m:], rec.ys[m:]
-        rec.interrupt("The integration was interrupted (KeyboardInterrupt)", rec.ts[-1])
-    stats = {"order_changes": n_order, "step_changes": n_resample, "max_order_used": kmax_used}
-    return rec.result("adams", nfev, nrej, stats)
+        rec.interrupt(reason, rec.ts[-1])
+
+
+def _ignore(value):
+    pass
+
+
+_TINY = 4.0 * np.finfo(float).eps  # a step below _TINY |t| is a step size underflow
+
+
+def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
+               dense_output, events, max_order, nstiff, progress=None, t_eval=None):
+    started = _start(fun, t_span, y0, rtol, atol, first_step, max_step, dense_output, events,
+                     t_eval)
+    if not isinstance(started, tuple):  # f(t0, y0) is not finite
+        return started
+    rec, start = started
+    run = _Run(fun, rec, start, rtol, max_step, max_steps, max_order, nstiff, progress)
+    try:
+        run.loop()
+    except KeyboardInterrupt:
+        run.interrupted()
+    return rec.result("adams", run.nfev, run.nrej, run.stats())
 
 
 _registry.register("adams", adams, kind="adaptive", capabilities=("t_eval",))

@@ -39,7 +39,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
-from ._floatpath import FLOAT_PATH_MAX_N, make_pair_step
+from ._floatpath import FLOAT_PATH_MAX_N, error_norm, make_pair_step
 from ._loop import (
     MAX_FACTOR,
     MIN_FACTOR,
@@ -99,19 +99,13 @@ class ExplicitPair:
         self.errors = [np.asarray(e, dtype=float) for e in errors]
         self.E = np.stack(self.errors)
         self.dense = dense
+        #: ``error_norm(h_abs, s0, s1, n)``: the norm the generated steps compute inline
+        self.error_norm = error_norm(len(self.errors))
 
     def kernel(self, n):
         """The plain-float step for `n` equations, ``bind(fun, rtol, atols) -> step`` (generated
         once by the shared generator)."""
         return make_pair_step(self.name, self.A, self.b, self.c, self.s, self.errors, n)
-
-    def error_from_squares(self, h_abs, sq, n):
-        """The error norm from the weighted sums of squares `sq` of the error vectors."""
-        if len(sq) == 1:
-            return h_abs * math.sqrt(sq[0] / n)
-        s5, s3 = sq
-        den = s5 + 0.01 * s3
-        return h_abs * s5 / math.sqrt(den * n) if den > 0 else (0.0 if den == 0 else den)
 
 
 class _FloatStepper:
@@ -207,13 +201,10 @@ class _ArrayStepper:
         e53 = np.dot(self.pair.E, K)  # DOP853: the 5th- and 3rd-order estimates combined
         e53 /= scale
         if not self.prob.batch:
-            sq = np.einsum("ij,ij->i", e53, e53).tolist()
-            return self.pair.error_from_squares(h_abs, sq, e53.shape[1])
-        sq = (e53 * e53).reshape((2,) + self.shape).sum(axis=1)
-        s5, s3 = sq[0], sq[1]
-        den = s5 + 0.01 * s3
-        with np.errstate(invalid="ignore", divide="ignore"):
-            return float(np.max(np.where(den > 0, h_abs * s5 / np.sqrt(den * self.n), 0.0)))
+            s5, s3 = np.einsum("ij,ij->i", e53, e53).tolist()
+            return self.pair.error_norm(h_abs, s5, s3, e53.shape[1])
+        s5, s3 = (e53 * e53).reshape((2,) + self.shape).sum(axis=1)
+        return batch_error_norm(h_abs, s5, s3, self.n)
 
     def accept(self, step):
         self.K[0] = self.K[self.pair.s]
@@ -228,6 +219,21 @@ class _ArrayStepper:
 
     def dense(self, t, y, h, step):
         return step.y, self.pair.dense(self.pair, self.prob, t, y, step.y, h, self.K), None
+
+
+def batch_error_norm(h_abs, s5, s3, n):
+    """DOP853's error norm (:data:`~rigidmech.ode._floatpath.ERROR_NORM_LINES`) member by
+    member over a batch, the largest (nan if one is): its array form, tested equal to it.
+
+    Examples
+    --------
+    >>> float(batch_error_norm(0.5, np.array([4.0, 0.0]), np.array([0.0, 0.0]), 1))
+    1.0
+    """
+    den = s5 + 0.01 * s3
+    with np.errstate(invalid="ignore", divide="ignore"):
+        err = np.where(den > 0, h_abs * s5 / np.sqrt(den * n), np.where(den == 0, 0.0, den))
+    return float(np.max(err))
 
 
 def _dense_shampine(pair, prob, t, y, y_new, h, K):

@@ -209,24 +209,32 @@ def _hermite_dense(fun, kind, t, y, shape):
 def _fixed_post(res, fun, kind, shape, events, dense, t_eval):
     """Provide events, dense output and t_eval for a fixed-step result."""
     sol, extra = _hermite_dense(fun, kind, res.t, res.y, shape)
-    changes = {"stats": {**res.stats, "nfev_interpolation": extra}}
-    t, y, status, message = res.t, res.y, res.status, res.message
+    res = dataclasses.replace(res, stats={**res.stats, "nfev_interpolation": extra})
     if events is not None:
-        Y = np.moveaxis(y, 1, 0)
-        for i in range(1, len(t)):
-            if not np.all(np.isfinite(Y[i])):
-                break
-            if events.check(t[i - 1], t[i], Y[i], sol):
-                t = np.append(t[:i], events.t_stop)
-                y = np.concatenate([y[:, :i], events.y_stop.reshape(shape)[:, None]], axis=1)
-                status, message = 1, "A terminal event occurred."
-                break
-        changes.update(t_events=events.t_events, y_events=events.y_events)
-    changes.update(t=t, y=y, status=status, message=message, sol=sol if dense else None,
-                   t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
+        res = fixed_events(res, shape, events, sol)
+    res = dataclasses.replace(res, sol=sol if dense else None)
     if t_eval is not None:
-        changes["t"], changes["y"] = _restrict(t_eval, t, sol)
-    return dataclasses.replace(res, **changes)
+        t, y = _restrict(t_eval, res.t, sol)
+        res = dataclasses.replace(res, t=t, y=y)
+    return res
+
+
+def fixed_events(res, shape, events, sol):
+    """The events of a fixed-step result located on its continuous solution `sol`, step by
+    step to the first non-finite state; the result cut at a terminal event (status 1)."""
+    t, y, status, message = res.t, res.y, res.status, res.message
+    Y = np.moveaxis(y, 1, 0)
+    for i in range(1, len(t)):
+        if not np.all(np.isfinite(Y[i])):
+            break
+        if events.check(t[i - 1], t[i], Y[i], sol):
+            t = np.append(t[:i], events.t_stop)
+            y = np.concatenate([y[:, :i], events.y_stop.reshape(shape)[:, None]], axis=1)
+            status, message = 1, "A terminal event occurred."
+            break
+    return dataclasses.replace(res, t=t, y=y, status=status, message=message,
+                               t_events=events.t_events, y_events=events.y_events,
+                               t_stop=float(t[-1]), y_stop=np.array(y[:, -1]))
 
 
 _SECOND_ORDER = ("second_order", "adaptive_second_order")
@@ -285,94 +293,65 @@ def _restrict(t_eval, t, sol):
     return keep, sol(keep)
 
 
-def solve(
-    fun: Callable,
-    t_span,
-    y0,
-    method: str = "dop853",
-    *,
-    step: float | None = None,
-    rtol: float = 1e-6,
-    atol=1e-9,
-    t_eval=None,
-    dense_output: bool = False,
-    events=None,
-    first_step: float | None = None,
-    max_step: float = math.inf,
-    max_steps: int = 1_000_000,
-    args: tuple = (),
-    **options,
-) -> OdeResult:
+def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | None = None,
+          rtol: float = 1e-6, atol=1e-9, t_eval=None, dense_output: bool = False, events=None,
+          first_step: float | None = None, max_step: float = math.inf,
+          max_steps: int = 1_000_000, args: tuple = (), **options) -> OdeResult:
     """Integrate ``y' = f(t, y)`` (or ``q'' = a(t, q)``) from ``t_span[0]`` to ``t_span[1]``.
 
-    The numerical solution of the equations of motion derived in Parts IV-V (book, ch. 26-27):
-    one-step Runge-Kutta methods with fixed or adaptive step, Gragg-Bulirsch-Stoer
-    extrapolation, an implicit method for stiff systems.
+    The equations of motion of Parts IV-V (book, ch. 26-27) by Runge-Kutta methods with fixed
+    or adaptive step, extrapolation, Adams, an implicit method for stiff systems (Hairer,
+    Norsett and Wanner, *Solving Ordinary Differential Equations* I and II).
 
     Parameters
     ----------
     fun : callable
-        ``fun(t, y, *args) -> dy/dt`` with ``y`` (and the result) of the shape of `y0`. For a
-        method of kind ``"second_order"``, ``fun(t, q, *args)`` returns the acceleration and
-        `y0` is ``[q0, v0]``. `fun` may return the same buffer at every call: it is copied.
-        It is called once more than ``nfev`` says, at the initial state, to check the shape
-        of its output.
+        ``fun(t, y, *args) -> dy/dt`` of the shape of `y0` (kind ``"second_order"``: the
+        acceleration ``fun(t, q, *args)``, ``y0 = [q0, v0]``); the same buffer may be returned
+        every call. One call more than ``nfev`` says checks its output at the initial state.
     t_span : (float, float)
         Initial and final times; ``t1 < t0`` integrates backwards.
     y0 : array_like, shape (n,) or (n, batch)
-        Initial state. A 2-D `y0` integrates ``batch`` trajectories at once: ``fun`` receives
-        ``(n, batch)`` arrays; adaptive methods use one step for the whole batch, chosen from
-        the largest error norm over the batch.
+        Initial state; a 2-D `y0` integrates ``batch`` trajectories at once (``fun`` gets
+        ``(n, batch)`` arrays; adaptive methods step by the largest error norm of the batch).
     method : str or ButcherTableau
         One of :func:`methods` (default ``"dop853"``); ``methods("fixed")`` need `step`. A
         :class:`~rigidmech.ode.tableaux.ButcherTableau` runs as a fixed-step method.
     step : float, optional
-        Step size of a fixed-step method (required by those, refused by the others), at most
-        ``|t1 - t0|``. It is reduced slightly, if needed, so that a whole number of equal
-        steps spans `t_span`.
+        Step of a fixed-step method (required by those, refused by the others), at most
+        ``|t1 - t0|``, reduced slightly if needed so that equal steps span `t_span`.
     rtol, atol : float, or array of shape (n,) for `atol`
-        Tolerances of the adaptive methods: local error kept below ``atol + rtol |y|`` in
-        Hairer's RMS norm. Ignored by fixed-step methods.
+        Adaptive methods: local error kept below ``atol + rtol |y|`` in Hairer's RMS norm.
     t_eval : array_like, optional
-        Times at which to return the solution (within `t_span`, monotonic), from the dense
-        output; by default the result holds the accepted steps.
+        Times of the solution returned (within `t_span`, monotonic; default: the steps).
     dense_output : bool
         Fill ``result.sol``, a callable continuous solution.
     events : callable or list of callable, optional
-        Functions ``g(t, y)`` whose zeros are located (see :mod:`rigidmech.ode.events`);
-        not available with a batch.
+        Functions ``g(t, y)`` whose zeros are located (:mod:`rigidmech.ode.events`; no batch).
     first_step, max_step : float, optional
         First step (default: Hairer's estimate) and largest step of the adaptive methods.
     max_steps : int
-        Largest number of steps; beyond it an adaptive integration stops with status -1, and a
-        fixed step that would need more is refused.
+        Largest number of steps (an adaptive run stops there, status -1; a fixed step is refused).
     args : tuple
         Extra arguments passed to `fun`.
     **options
-        Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
-        ``"radau"``), passed on to it; an option the method does not take is refused. Every
-        built-in method takes ``progress``: a callable ``progress(t)`` called after every
-        step (a returned False stops the run with status 2 and the steps made so far, as
-        Ctrl-C does for every built-in method).
+        Options of the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for ``"radau"``); one
+        it does not take is refused. Every built-in method takes ``progress``, a callable
+        ``progress(t)`` called after every step: a returned False stops the run with status 2
+        and the steps made so far, as Ctrl-C does.
 
     Returns
     -------
     OdeResult
-        ``t``, ``y`` (shape ``(n, len(t))`` or ``(n, len(t), batch)``), counters, ``status``
-        (0 end reached, 1 terminal event, -1 numerical failure, with the time and the state in
-        ``message``, or an event function that returned nan, the motion being kept; 2 stopped
-        early on request), ``t_stop``, ``y_stop``, ``sol``, ``t_events``, ``y_events``.
+        ``t``, ``y`` (shape ``(n, len(t))`` or ``(n, len(t), batch)``), counters, ``status`` (0
+        end reached, 1 terminal event, -1 numerical failure named in ``message`` with its time
+        and state, or an event function returned nan, the motion kept; 2 stopped on request),
+        ``t_stop``, ``y_stop``, ``sol``, ``t_events``, ``y_events``.
 
     Raises
     ------
     ArgumentError, ArgumentTypeError
         On any misuse, with the argument, what was expected and what was received.
-
-    Notes
-    -----
-    The book (ch. 26) presents Euler's method, Runge-Kutta methods and Romberg-like
-    extrapolation for the integration of the equations of motion; the adaptive methods here
-    follow Hairer, Norsett and Wanner, *Solving Ordinary Differential Equations* I and II.
 
     Examples
     --------
@@ -390,10 +369,13 @@ def solve(
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
     if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
-        res = _zero_length(run)
-    else:
-        _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-        res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+        return _finish(_zero_length(run), run)
+    _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+    return _finish(_run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run), run)
+
+
+def _finish(res, run):
+    """The failed member of a batch named; an event function's failure reported."""
     if res.status < 0 and run.y.ndim == 2:
         res = name_failed_member(res, run)
     failure = run.tracker.failure() if run.tracker is not None else None

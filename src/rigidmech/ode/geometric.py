@@ -118,16 +118,23 @@ def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_eve
     t0, h, nsteps, y, save_every = check_fixed(t_span, y0, step, max_steps, save_every,
                                                even=True)
     d = y.shape[0] // 2
-    q = y[:d].copy()
-    v = y[d:].copy()
-    hw = [h * w for w in weights]
+    a = np.array(acceleration(t0, y[:d].copy()), dtype=float)
+    rec = FixedRecorder(t0, y, np.concatenate([y[d:], a]), save_every, dense_output)
+    advance, nfev = _composed_step(acceleration, [h * w for w in weights], y, a, rec.dense)
+    # overflow to inf/nan is reported in the result (status -1), not raised as a warning
+    with np.errstate(over="ignore", invalid="ignore"):
+        done = fixed_loop(advance, rec, t0, h, nsteps, progress=check_progress(progress))
+    return rec.result(method, nfev(), done, stats={"step": abs(h), "stages": len(weights)})
+
+
+def _composed_step(acceleration, hw, y, a, dense):
+    """The step ``advance(t, h) -> (y, f)`` of the composition of Stormer-Verlet steps of
+    sizes `hw` from ``y = [q, v]`` with ``a = a(t0, q)``, and its counter of evaluations."""
+    d = y.shape[0] // 2
     # merged kicks: v += half[0] a before the first drift, then (w_i + w_{i+1}) h / 2 after
     kick_in = 0.5 * hw[0]
     kicks = [0.5 * (hw[i] + hw[i + 1]) for i in range(len(hw) - 1)] + [0.5 * hw[-1]]
-    a = np.array(acceleration(t0, q), dtype=float)
-    rec = FixedRecorder(t0, y, np.concatenate([v, a]), save_every, dense_output)
-    box = [q, v, a]
-    dense = rec.dense
+    box = [y[:d].copy(), y[d:].copy(), a]
     nfev = [1]
 
     def advance(t, h):
@@ -143,10 +150,7 @@ def compose(acceleration, t_span, y0, *, step, weights, max_steps=None, save_eve
         nfev[0] += len(hw)
         return np.concatenate([q, v]), np.concatenate([v, a]) if dense else None
 
-    # overflow to inf/nan is reported in the result (status -1), not raised as a warning
-    with np.errstate(over="ignore", invalid="ignore"):
-        done = fixed_loop(advance, rec, t0, h, nsteps, progress=check_progress(progress))
-    return rec.result(method, nfev[0], done, stats={"step": abs(h), "stages": len(hw)})
+    return advance, lambda: nfev[0]
 
 
 def verlet(acceleration, t_span, y0, *, step, **options):

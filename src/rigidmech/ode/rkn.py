@@ -29,6 +29,7 @@ One step of size :math:`h` from :math:`(t, q, v)`:
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from decimal import Decimal, localcontext
 from fractions import Fraction as F
@@ -37,12 +38,14 @@ import numpy as np
 
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
+from . import _registry
 from . import _rkn12_coefficients as _rkn12
-from ._driver import Recorder, Stops
+from ._driver import Stops
+from ._fixed import FixedRecorder, _list_finite, fixed_loop
 from ._floatpath import make_rkn_stepper
 from ._loop import Capabilities, Run, StepResult, check_progress, integrate
 from ._registry import register
-from .api import _check_t_span, _check_y0, solve
+from .api import _check_fixed_step, _check_t_span, _check_y0, fixed_events, solve
 from .events import EventTracker
 
 __all__ = ["RKNPair", "DPRKN6", "DPRKN12", "rkn64", "rkn1210"]
@@ -273,7 +276,7 @@ def _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_step
         q, v, a = q.tolist(), v.tolist(), a.tolist()
     if step is not None:  # constant step, no error control
         return _run_fixed(pair, fun, (t0, t1), y, step, max_steps, dense_output, events, kern,
-                          unrolled, (q, v, a))
+                          unrolled, (q, v, a), progress)
     # rtol, atol, max_step and first_step were checked by ode.solve (the only way here)
     rtol, at, max_step = float(rtol), _tol_list("atol", atol, d), float(max_step)
     first_order = _FirstOrder(fun, d)
@@ -294,39 +297,40 @@ def _coeffs_of(h, qa, va, aa, qb, vb, ab):
 
 
 def _run_fixed(pair, fun, t_span, y, step, max_steps, dense_output, events, kern, unrolled,
-               qva):
+               qva, progress=None):
     """The constant-step run (direct calls with ``step=h``): the 6th/12th-order formula
-    without error control."""
+    without error control, on the fixed-step loop (:func:`~rigidmech.ode._fixed.fixed_loop`:
+    finiteness, ``progress``, Ctrl-C), with the step rules of :func:`~rigidmech.ode.solve`;
+    the quintic Hermite dense output; events located on it after the run, as ``solve`` does
+    for the fixed-step methods."""
     t0, t1 = t_span
-    q, v, a = qva
-    length = abs(t1 - t0)
-    per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end-point call
-    coeffs_of = _coeffs_of
-    nfev = 1
-    rec = Recorder(t0, y, y.shape, bool(dense_output), events)
-    h = float(step)
-    if not (math.isfinite(h) and h > 0):
-        raise ArgumentError(f"`step` must be a finite number > 0; got {step!r}.")
-    n = max(1, math.ceil(length / h * (1 - 1e-12)))
-    if n > max_steps:
-        raise ArgumentError(
-            f"`step` = {h:g} needs {n} steps over `t_span`, more than `max_steps` = "
-            f"{max_steps}.")
-    h = (t1 - t0) / n
+    h = _check_fixed_step(_registry.get(pair.name), step, t0, t1, max_steps)
+    n = max(1, round((t1 - t0) / h))
+    d, (q, v, a) = y.shape[0] // 2, qva
+    dense = bool(dense_output) or events is not None
+    rec = FixedRecorder(t0, y, np.concatenate([y[d:], np.asarray(a, dtype=float)]), 1, dense,
+                        coefficients=lambda y0, y1, f0, f1, h: _dense_coeffs(
+                            h, y0[:d], y0[d:], f0[d:], y1[:d], y1[d:], f1[d:]))
+
+    def advance(t, h):
+        nonlocal q, v, a
+        q, v, a, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
+        if unrolled:
+            return q + v, (v + a if dense else None)
+        return np.concatenate([q, v]), (np.concatenate([v, a]) if dense else None)
+
     with np.errstate(over="ignore", invalid="ignore"):
-        for i in range(n):
-            t = t0 + i * h
-            q1, v1, a1, _ = kern(fun, t, q, v, a, h, 0.0, None, None, False)
-            nfev += per_step
-            tn = t0 + (i + 1) * h
-            y1 = np.array(list(q1) + list(v1)) if unrolled else np.concatenate([q1, v1])
-            if rec.accept(tn, y1, coeffs_of(h, q, v, a, q1, v1, a1)):
-                break
-            q, v, a = q1, v1, a1
-            if not np.all(np.isfinite(y1)):
-                rec.fail("Non-finite state", tn, y1)
-                break
-    return rec.result(pair.name, nfev, 0, stats={"step": abs(h), "stages": pair.stages})
+        done = fixed_loop(advance, rec, t0, h, n, t1=t1, progress=check_progress(progress),
+                          finite=_list_finite if unrolled else None)
+    per_step = pair.stages - 1 if pair.fsal else pair.stages  # incl. the end-point call
+    nfev = 1 + per_step * (done + (rec.status == -1))  # a non-finite step was made, not kept
+    res = rec.result(pair.name, nfev, done, {"step": abs(h), "stages": pair.stages})
+    if events is None:
+        return res
+    if not isinstance(events, EventTracker):
+        events = EventTracker(events, t0, y.copy())
+    res = fixed_events(res, y.shape, events, res.sol)
+    return res if dense_output else dataclasses.replace(res, sol=None)
 
 
 class _FirstOrder:
@@ -410,7 +414,8 @@ class _RknStepper:
 
 
 def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-          max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
+          max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None,
+          progress=None):
     r"""Dormand-Prince 6(4) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)` (ch. 27).
 
     Parameters
@@ -442,6 +447,9 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
         Times the adaptive steps land on (the result still holds every step;
         :func:`~rigidmech.ode.solve` keeps those at `t_eval`), so that the samples are as
         accurate as the steps.
+    progress : callable, optional
+        ``progress(t)`` after every step; a returned False stops the run with status 2 and
+        the steps made so far (as Ctrl-C does).
 
     Returns
     -------
@@ -478,11 +486,12 @@ def rkn64(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     (True, 0)
     """
     return _direct(DPRKN6, fun, t_span, y0, step, rtol, atol, first_step, max_step,
-                   max_steps, dense_output, events, t_eval)
+                   max_steps, dense_output, events, t_eval, progress)
 
 
 def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
-            max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None):
+            max_step=np.inf, max_steps=100_000, dense_output=False, events=None, t_eval=None,
+            progress=None):
     r"""Dormand-El-Mikkawy-Prince 12(10) Runge-Kutta-Nystrom pair for :math:`\ddot q = a(t, q)`.
 
     Parameters, returns and errors are those of :func:`rkn64`.
@@ -515,11 +524,11 @@ def rkn1210(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None
     (True, True)
     """
     return _direct(DPRKN12, fun, t_span, y0, step, rtol, atol, first_step, max_step,
-                   max_steps, dense_output, events, t_eval)
+                   max_steps, dense_output, events, t_eval, progress)
 
 
 def _direct(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-            dense_output, events, t_eval):
+            dense_output, events, t_eval, progress):
     """A direct call: through :func:`~rigidmech.ode.solve` (its checks, its rules) with error
     control; the constant step (`step`), which ``solve`` does not offer for these pairs, runs
     here after the same checks of ``t_span`` and ``y0``."""
@@ -528,9 +537,10 @@ def _direct(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_s
             events = events.functions
         return solve(fun, t_span, y0, method=pair.name, rtol=rtol, atol=atol,
                      first_step=first_step, max_step=max_step, max_steps=max_steps,
-                     dense_output=dense_output, events=events, t_eval=t_eval)
+                     dense_output=dense_output, events=events, t_eval=t_eval,
+                     progress=progress)
     return _run(pair, fun, t_span, y0, step, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events, t_eval)
+                dense_output, events, t_eval, progress)
 
 
 def _solver(pair):

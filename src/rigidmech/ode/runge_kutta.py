@@ -16,7 +16,7 @@ from rigidmech._core.errors import ArgumentTypeError
 from . import _registry, tableaux
 from ._driver import Problem
 from ._fixed import FixedRecorder, _list_finite, fixed_loop
-from ._floatpath import FLOAT_PATH_MAX_N, cached, make_unrolled_stepper
+from ._floatpath import FLOAT_PATH_MAX_N, make_fixed_advance
 from ._loop import check_progress
 from ._result import OdeResult
 
@@ -65,10 +65,11 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None,
     if len(shape) == 1 and shape[0] <= FLOAT_PATH_MAX_N:
         f0 = fun(t0, y0.copy())
         if type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64:
-            advance, nfev = _float_steps(tableau, fun, y0, f0)
+            advance, stages = _float_steps(tableau, fun, y0, f0)
             done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress,
                               finite=_list_finite)
-            return rec.result(tableau.name, nfev(), done)
+            attempted = done + (rec.status == -1)  # a non-finite step was made, not kept
+            return rec.result(tableau.name, max(1, attempted * stages), done)
     advance, nfev = _array_steps(tableau, Problem(fun, shape), y0, f0, h)
     done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress)
     return rec.result(tableau.name, nfev(), done)
@@ -105,24 +106,12 @@ def _array_steps(tableau, prob, y0, f0, h):
 
 def _float_steps(tableau, fun, y0, f0):
     """The step ``advance(t, h) -> (y, None)`` of `tableau` on lists of floats, for one small
-    trajectory (a generated kernel), and its counter of evaluations."""
-    n = y0.shape[0]
-    step = cached(("rk-fixed", tableau, n), lambda: make_unrolled_stepper(
-        tableau.name, tableau.A, tableau.b, tableau.c, tableau.stages, None, n))
-    arr, stages = np.array, tableau.stages
-    y, k0, nfev = y0.tolist(), f0.tolist(), 1
-
-    def advance(t, h):
-        nonlocal y, k0, nfev
-        if k0 is None:
-            k0 = fun(t, arr(y)).tolist()
-            nfev += 1
-        y = step(fun, t, y, k0, h)
-        k0 = None
-        nfev += stages - 1
-        return y, None
-
-    return advance, lambda: nfev
+    trajectory (generated: the whole step, first stage included), and its counter of
+    evaluations (``f0`` then every stage of every step: each step after the first one
+    evaluates its first stage)."""
+    advance = make_fixed_advance(tableau.name, tableau.A, tableau.b, tableau.c,
+                                 tableau.stages, y0.shape[0])(fun, y0.tolist(), f0.tolist())
+    return advance, tableau.stages
 
 
 def fixed_step_method(tableau):
