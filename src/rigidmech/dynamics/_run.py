@@ -1,21 +1,22 @@
 """One run of :meth:`EquationsOfMotion.simulate` (book, ch. 27): the solver's options kept
-apart from the model's values, the right-hand side watched (non-finite and complex values
-named, progress shown, a ``progress`` callback able to stop the run), the samples chosen so
-that memory follows the samples asked for, Ctrl-C turned into a partial result.
+apart from the model's values, the samples chosen so that memory follows the samples asked
+for, a failure's non-finite or complex value named by coordinate, progress shown (a bar or a
+``progress`` callback able to stop the run, both checked by the solver once per accepted
+step), Ctrl-C turned into a partial result. Nothing wraps the right-hand side: the solver's
+loop does the watching, once per accepted step.
 """
 
 from __future__ import annotations
 
 import inspect
 import math
-import sys
 import time
-from math import isfinite
 
 import numpy as np
 import sympy as sp
 
 from .. import ode
+from ..ode._progress import Progress, interactive
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
@@ -30,114 +31,29 @@ PROGRESS_DELAY = 2.0
 PROGRESS_EVERY = 0.1
 
 
-class _Stopped(Exception):
-    pass
-
-
-class Watch:
-    """The right-hand side as the solver sees it, watched.
-
-    * a complex value is not truncated to its real part: it becomes nan (the solver then
-      fails) and is named with its time and component;
-    * the last non-finite value is named likewise (the solver may recover from one in a
-      rejected trial step; if it fails, this says where the trouble was);
-    * every :data:`PROGRESS_EVERY` seconds, the progress callback or bar is updated; a
-      callback returning False stops the run (as Ctrl-C does).
-    """
-
-    __slots__ = ("fun", "labels", "second", "bad", "t", "calls", "callback", "bar", "start", "last",
-                 "span", "stopped", "bar_wanted")
-
-    def __init__(self, fun, labels, t_span, progress, second=False):
-        self.fun, self.labels, self.second = fun, labels, second
-        self.bad = None
-        self.t = t_span[0]
-        self.calls = 0
-        self.span = t_span
-        self.callback = progress if callable(progress) else None
-        self.bar_wanted = progress is True or (progress is None and _interactive())
-        self.bar = None
-        self.start = self.last = time.monotonic()
-        self.stopped = False
-
-    def __call__(self, t, y):
-        try:
-            out = self.fun(t, y)
-        except (ArithmeticError, ValueError, TypeError) as exc:  # e.g. an input's error
-            self.bad = (f"could not be evaluated ({type(exc).__name__}: {exc})", t, None,
-                        None)
-            return np.full(self.shape(y), np.nan)
-        if out.dtype.kind == "c":
-            out = self._complex(t, out)
-        elif not isfinite(sum(out.tolist() if out.ndim == 1 else out.ravel().tolist())) and (
-                np.isfinite(y).all()):  # where it starts (a sum is nan or inf if one is)
-            flat = out.reshape(-1)
-            bad = ~np.isfinite(flat)
-            if bad.any():
-                k = int(np.argmax(bad))
-                self.bad = ("is not finite", t, k, float(flat[k]))
-        self.t = t
-        self.calls += 1
-        if not self.calls & 31 and (self.callback is not None or self.bar_wanted):
-            self._tick(t)
-        return out
-
-    def _complex(self, t, out):
-        imag = np.imag(out) != 0
-        if imag.any():
-            k = int(np.argmax(imag.reshape(-1)))
-            self.bad = ("has a complex value", t, k, complex(out.reshape(-1)[k]))
-        return np.where(imag, np.nan, np.real(out))
-
-    def shape(self, y):
-        return np.shape(y) if not self.second else (len(self.labels),) + np.shape(y)[1:]
-
-    def _tick(self, t):
-        now = time.monotonic()
-        if now - self.last < PROGRESS_EVERY:
-            return
-        self.last = now
-        if self.callback is not None and self.callback(float(t)) is False:
-            self.stopped = True
-            raise KeyboardInterrupt  # the driver keeps what was computed (status 2)
-        if self.bar_wanted and now - self.start >= PROGRESS_DELAY:
-            if self.bar is None:
-                from tqdm import tqdm  # imported on use
-
-                t0, t1 = self.span
-                self.bar = tqdm(total=abs(t1 - t0), unit="s", desc="rigidmech: integrating",
-                                file=sys.stderr, leave=False, dynamic_ncols=True,
-                                bar_format="{desc} {percentage:3.0f}%|{bar}| t = {n:.4g} of "
-                                "{total:.4g} [{elapsed}<{remaining}]")
-            self.bar.n = abs(t - self.span[0])
-            self.bar.refresh()
-
-    def close(self):
-        if self.bar is not None:
-            self.bar.close()
-            self.bar = None
-
-    def diagnosis(self):
-        """A sentence naming the last bad value of the right-hand side, or ''."""
-        if self.bad is None:
-            return ""
-        what, t, k, value = self.bad
-        if k is None:
-            return f" The right-hand side {what} at t = {float(t)!r}."
-        return (f" The right-hand side {what} ({value}) at t = {float(t)!r}, in the "
-                f"component {self.labels[k]}.")
-
-
-def _interactive():
-    try:
-        return sys.stderr.isatty()
-    except (AttributeError, ValueError):
-        return False
-
-
 def _labels(names, second_order):
     accs = [f"{n}'' (acceleration of {n})" for n in names]
     return accs if second_order else [f"{n}' (rate of {n})" for n in names] + accs
+
+
+def _diagnosis(trouble, culprit, names, second):
+    """A sentence naming why the right-hand side failed: the error it raised (with its time),
+    else the non-finite or complex value the solver found, by coordinate; or ''."""
+    if trouble:
+        what, t = trouble[0]
+        return f" The right-hand side could not be evaluated ({what}) at t = {t!r}."
+    if culprit is None:
+        return ""
+    k, value, t = culprit["component"], culprit["value"], culprit["t"]
+    if culprit["what"] == "derivative":
+        labels = _labels(names, second)
+        label = labels[k] if k < len(labels) else f"component {k}"
+        kind = "has a complex value" if culprit.get("complex") else "is not finite"
+        return (f" The right-hand side {kind} ({value}) at t = {t!r}, in the component "
+                f"{label}.")
+    states = list(names) + [f"{n}'" for n in names]
+    label = states[k] if k < len(states) else f"component {k}"
+    return f" The state became non-finite ({value}) at t = {t!r}, in the component {label}."
 
 
 def merge_values(params, values):
@@ -202,7 +118,7 @@ CHUNK = 10_000
 UNSTABLE_DRIFT = 0.5
 
 
-def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
+def _in_chunks(fun, t0, t1, y0, method, nsteps, stride, progress=None):
     """A one-step fixed-step run as successive runs of about :data:`CHUNK` steps (a whole
     number of `stride` steps each), keeping every `stride`-th grid point: memory follows the
     samples, and Ctrl-C keeps the chunks done and the steps of the interrupted one."""
@@ -216,7 +132,7 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
         k = min(per, nsteps - done)
         ta, tb = t0 + done * h, (t0 + (done + k) * h) if done + k < nsteps else t1
         r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
-                      max_steps=k + 1)  # Ctrl-C: status 2, the chunk's steps kept
+                      max_steps=k + 1, progress=progress)  # Ctrl-C: status 2, steps kept
         nfev += r.nfev
         keep = np.arange(stride, len(r.t), stride)
         ts.append(r.t[keep])
@@ -288,38 +204,48 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
-    watch = Watch(fun, _labels(eqs.names, second), (t0, t1), progress, second)
+    prog = None
+    if callable(progress) or progress is True or (progress is None and interactive()):
+        prog = Progress((t0, t1), callback=progress if callable(progress) else None,
+                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+    if prog is not None:
+        options["progress"] = prog
     chunks = options.pop("chunks", None)
     if chunks is None:
         options["events"] = compile_events(eqs, events, values)
+    fun.trouble = []  # an error of the right-hand side: kept there, nan returned
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             if chunks is None:
-                res = ode.solve(watch, (t0, t1), y0, method=method, **options)
+                res = ode.solve(fun, (t0, t1), y0, method=method, **options)
             else:
-                res = _in_chunks(watch, t0, t1, y0, method, *chunks)
+                res = _in_chunks(fun, t0, t1, y0, method, *chunks, progress=prog)
                 stride = 1
     except KeyboardInterrupt:  # a method that keeps no partial result: the initial state
-        watch.close()
         elapsed = time.perf_counter() - start
+        t_at = prog.t if prog is not None else t0
         return Simulation(eqs, None, values, elapsed, notes, status="interrupted",
-                          message=f"The integration was interrupted at t = {watch.t!r}; method "
-                          f"{method!r} keeps no partial result: only the initial state is "
-                          "kept.", t=[t0], y=np.asarray(y0, dtype=float)[:, None],
-                          t_events=[], method=method, t_stop=watch.t)
+                          message=f"The integration was interrupted (Ctrl-C) after t = "
+                          f"{t_at!r}; method {method!r} keeps no partial result: only the "
+                          "initial state is kept.", t=[t0],
+                          y=np.asarray(y0, dtype=float)[:, None], t_events=[], method=method,
+                          t_stop=t0)
     finally:
-        watch.close()
+        fun.trouble, trouble = None, fun.trouble
+        if prog is not None:
+            prog.close()
     elapsed = time.perf_counter() - start
     message = res.message
     t_stop = res.t_stop  # the end, the terminal event or the last accepted step
     if res.status == 2:
         t_end = float(res.t[-1]) if len(res.t) else t0
-        who = ("the `progress` callback" if watch.stopped else "Ctrl-C (KeyboardInterrupt)")
+        who = ("the `progress` callback" if prog is not None and prog.stopped
+               else "Ctrl-C (KeyboardInterrupt)")
         message = (f"The integration was stopped by {who} at t = {t_stop!r}; the samples "
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
-        message = message + watch.diagnosis()
+        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second)
     status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least

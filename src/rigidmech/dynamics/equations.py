@@ -42,6 +42,15 @@ def _is_function_of_time(q):
     return isinstance(q, sp.core.function.AppliedUndef) and q.args == (_t,)
 
 
+
+def _trouble(fun, exc, t, shape):
+    """An error of the right-hand side during a simulation: kept (the first one) in
+    ``fun.trouble`` with its time, and nan returned so that the solver stops there and keeps
+    the motion computed so far (the error is named in the simulation's message)."""
+    if not fun.trouble:
+        fun.trouble.append((f"{type(exc).__name__}: {exc}", float(t)))
+    return np.full(shape, np.nan)
+
 class EquationsOfMotion:
     """M(q) q'' = f(q, q', t), free of connection unknowns (ch. 20.2, 27.2.1).
 
@@ -481,15 +490,26 @@ class EquationsOfMotion:
             values = values + inputs
 
             def fun(t, y):
-                acc = solve(t, y[:n], y[n:], *values)
+                try:  # free unless raised
+                    acc = solve(t, y[:n], y[n:], *values)
+                except (ArithmeticError, ValueError, TypeError) as exc:
+                    if fun.trouble is None:
+                        raise
+                    return _trouble(fun, exc, t, np.shape(y))
                 return np.concatenate((y[n:], acc), axis=0)
         else:
             def fun(t, y):
-                w = [v(t) if callable(v) else v for v in inputs]
-                acc = solve(t, y[:n], y[n:], *values, *w)
+                try:
+                    w = [v(t) if callable(v) else v for v in inputs]
+                    acc = solve(t, y[:n], y[n:], *values, *w)
+                except (ArithmeticError, ValueError, TypeError) as exc:
+                    if fun.trouble is None:
+                        raise
+                    return _trouble(fun, exc, t, np.shape(y))
                 return np.concatenate((y[n:], acc), axis=0)
 
         fun.notes = notes
+        fun.trouble = None  # a list: errors kept there, nan returned (see _trouble)
         return fun
 
     def _acceleration_only(self, method, params):
@@ -505,10 +525,16 @@ class EquationsOfMotion:
         zeros = np.zeros(len(self._u))
 
         def acc(t, q):
-            w = [v(t) if callable(v) else v for v in inputs]
-            return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values, *w)
+            try:
+                w = [v(t) if callable(v) else v for v in inputs]
+                return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values, *w)
+            except (ArithmeticError, ValueError, TypeError) as exc:
+                if acc.trouble is None:
+                    raise
+                return _trouble(acc, exc, t, np.shape(q))
 
         acc.notes = notes
+        acc.trouble = None
         return acc
 
     def _initial(self, values, what, default_zero):

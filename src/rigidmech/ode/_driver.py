@@ -164,7 +164,7 @@ class Recorder:
     """
 
     __slots__ = ("ts", "ys", "cs", "shape", "events", "form", "status", "message",
-                 "_last_full_end")
+                 "_last_full_end", "culprit")
 
     def __init__(self, t0, y0, shape, dense, events, form="power"):
         self.ts = [t0]
@@ -175,6 +175,8 @@ class Recorder:
         self.form = form
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
+        #: where a run failed on a non-finite or complex value (see ``OdeResult.stats``)
+        self.culprit = None
 
     def accept(self, t_new, y_new, coeffs=None, exact=None):
         """Record one accepted step; return True if a terminal event fired.

@@ -47,9 +47,11 @@ The protocol (model: scipy's ``OdeSolver``):
 from __future__ import annotations
 
 import math
+import warnings
 from typing import NamedTuple
 
 import numpy as np
+from numpy.exceptions import ComplexWarning
 
 from rigidmech._core.errors import ArgumentError
 
@@ -68,8 +70,8 @@ def check_progress(progress):
     True
     """
     if progress is not None and not callable(progress):
-        raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
-                            f"{progress!r}.")
+        raise ArgumentError(f"`progress` must be a callable progress(t), True (a progress "
+                            f"bar, through solve), False or None; got {progress!r}.")
     return progress
 
 SAFETY = 0.9
@@ -186,10 +188,12 @@ def _underflow_reason(err):
             "step down to the resolution of t (step size underflow), from the state")
 
 
-def _culprit(step, t_new):
+def _culprit(step, t_new, rec):
     """A sentence naming the first non-finite component of the last attempted step's
-    derivative (else of its state), or ''."""
-    for what, values in (("the derivative f(t, y)", step.f), ("the state", step.y)):
+    derivative (else of its state), or ''; the same facts kept as ``rec.culprit`` (a dict:
+    ``what`` "derivative" or "state", ``component``, ``value``, ``t``) for the result's
+    ``stats["culprit"]``."""
+    for what, values in (("derivative", step.f), ("state", step.y)):
         try:
             flat = np.asarray(values, dtype=float).reshape(-1)
         except (TypeError, ValueError):
@@ -197,9 +201,89 @@ def _culprit(step, t_new):
         bad = ~np.isfinite(flat)
         if bad.any():
             k = int(np.argmax(bad))
-            return (f" In the last attempted step, {what} was {flat[k]} in component {k} at "
+            rec.culprit = {"what": what, "component": k, "value": float(flat[k]),
+                           "t": float(t_new)}
+            name = "the derivative f(t, y)" if what == "derivative" else "the state"
+            return (f" In the last attempted step, {name} was {flat[k]} in component {k} at "
                     f"t = {float(t_new)!r}.")
     return ""
+
+
+def _probe(fun, t, y, h, shape):
+    """Where a failure starts, found on the failure path only (no cost otherwise): `fun` at
+    the last accepted state ``(t, y)``, at ``(t + h, y)`` and one Euler step of size `h`
+    beyond it. Returns the :func:`_culprit` dict (with ``complex``) of the first evaluation,
+    from a finite real state, whose output has a complex or a non-finite component, or None.
+
+    Examples
+    --------
+    >>> f = lambda t, y: np.array([y[0], 1j if t > 0.5 else 0.0])
+    >>> c = _probe(f, 0.4, [1.0, 0.0], 0.2, (2,))
+    >>> c["component"], c["complex"], c["t"]
+    (1, True, 0.6000000000000001)
+    """
+    inner, d = getattr(fun, "fun", None), getattr(fun, "d", None)
+    if inner is not None and isinstance(d, int):  # q'' = a(t, q) as y' = (v, a): a itself
+
+        def fun(t, y, _a=inner, _d=d):
+            return np.concatenate([y[_d:], np.asarray(_a(t, y[:_d].copy()))])
+
+    y = np.array(y, dtype=float).reshape(-1)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        try:
+            points = [(t, y), (t + h, y)]
+            for k, (tk, yk) in enumerate(points):
+                out = np.asarray(fun(tk, yk.reshape(shape).copy())).reshape(-1)
+                found = _bad_component(out, tk)
+                if found is not None:
+                    return found
+                if k == 0:
+                    points.append((t + h, y + h * out.real))
+        except Exception:  # noqa: BLE001 - a probe: the failure is reported without it
+            return None
+    return None
+
+
+def _bad_component(out, t):
+    """The first complex, else non-finite, component of `out` as a culprit dict, or None."""
+    if np.iscomplexobj(out):
+        imag = np.imag(out) != 0
+        if imag.any():
+            k = int(np.argmax(imag))
+            return {"what": "derivative", "component": k, "value": complex(out[k]),
+                    "t": float(t), "complex": True}
+        out = out.real
+    bad = ~np.isfinite(out)
+    if bad.any():
+        k = int(np.argmax(bad))
+        return {"what": "derivative", "component": k, "value": float(out[k]), "t": float(t),
+                "complex": False}
+    return None
+
+
+def _complex_failure(rec, culprit, t, y):
+    """End the run on a complex value of the right-hand side (status -1, `y` kept)."""
+    rec.fail("The right-hand side returned a complex value", t, y)
+    rec.culprit = culprit
+    rec.message += (f" It was {culprit['value']} in component {culprit['component']} at "
+                    f"t = {culprit['t']!r}; the methods integrate real equations only (a "
+                    "square root or a logarithm of a negative number?).")
+
+
+def _nonfinite_culprit(loop, step, t, y, t_new, rec):
+    """The sentence naming where a non-finite value started: the probe's evaluation from a
+    finite state if it finds one, else the last attempted step (:func:`_culprit`)."""
+    found = _probe(loop.fun, t, y, t_new - t, loop.shape)
+    if found is None or found["complex"]:
+        if found is not None:
+            rec.culprit = found
+            return (f" The right-hand side has a complex value ({found['value']}) in "
+                    f"component {found['component']} at t = {found['t']!r}.")
+        return _culprit(step, t_new, rec)
+    rec.culprit = found
+    return (f" Evaluated again from a finite state, the derivative f(t, y) was "
+            f"{found['value']} in component {found['component']} at t = {found['t']!r}.")
 
 
 class Run(NamedTuple):
@@ -253,22 +337,29 @@ def integrate(stepper, run, f0=None):
                              run.atol, t_end, run.max_step)
     else:
         h_abs = run.first_step
-    state = _Loop(stepper, run, rec, direction)
+    state = _Loop(stepper, run, rec, direction, prob)
     try:
-        state.run(t0, y, f, h_abs)
+        with warnings.catch_warnings():  # a complex value cast to float raises, not warns
+            warnings.simplefilter("error", ComplexWarning)
+            state.run(t0, y, f, h_abs)
     except KeyboardInterrupt:  # everything computed so far is kept
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
     nfev = prob.nfev + stepper.nfev + state.attempts * stepper.nfev_per_attempt
-    return rec.result(caps.name, nfev, state.nrej, stepper.stats())
+    stats = stepper.stats()
+    if rec.culprit is not None:
+        stats = {**stats, "culprit": rec.culprit}
+    return rec.result(caps.name, nfev, state.nrej, stats)
 
 
 class _Loop:
     """The state of the one loop (kept on an object so that an interruption finds it)."""
 
-    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts")
+    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts", "fun",
+                 "shape")
 
-    def __init__(self, stepper, run, rec, direction):
+    def __init__(self, stepper, run, rec, direction, prob):
         self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
+        self.fun, self.shape = prob.fun, prob.shape
         self.t = run.t_span[0]
         self.nrej = self.attempts = 0
 
@@ -287,6 +378,7 @@ class _Loop:
         isfinite, nextafter, inf = math.isfinite, math.nextafter, math.inf
         t_goal = t_end if stops is None else stops.after(t)
         naccpt = nrej = extra = 0
+        t_new = t
         try:
             while direction * (t - t_end) < 0:
                 if naccpt >= max_steps:
@@ -314,7 +406,7 @@ class _Loop:
                     nrej += 1
                 if not accepted:
                     rec.fail(_underflow_reason(err), t, y)
-                    rec.message += _culprit(step, t_new)
+                    rec.message += _nonfinite_culprit(self, step, t, y, t_new, rec)
                     return
                 if not (isfinite(sum(y_new)) if finite is None else finite(step)):
                     extra = 1
@@ -322,7 +414,7 @@ class _Loop:
                     rec.fail("The right-hand side returned non-finite values (nan or inf) at "
                              "the new state" if state_ok else "The state became non-finite",
                              t_new, y_new)
-                    rec.message += _culprit(step, t_new)
+                    rec.message += _nonfinite_culprit(self, step, t, y, t_new, rec)
                     return
                 naccpt += 1
                 if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline
@@ -342,5 +434,11 @@ class _Loop:
                 if progress is not None and progress(t) is False:
                     rec.interrupt("The integration was stopped by the `progress` callback", t)
                     return
+        except (TypeError, ComplexWarning):  # complex values in the step (cast or summed)
+            found = _probe(self.fun, t, y, t_new - t, self.shape)
+            if found is None or not found["complex"]:
+                raise
+            extra = 1
+            _complex_failure(rec, found, t, y)
         finally:
             self.t, self.nrej, self.attempts = t, nrej, naccpt + nrej + extra

@@ -44,6 +44,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
 from ._dense import DenseSolution
+from ._progress import Progress, progress_option
 from ._result import OdeResult
 from .events import EventTracker
 from .runge_kutta import fixed_step_method
@@ -353,7 +354,9 @@ def solve(
         ``"radau"``), passed on to it; an option the method does not take is refused. Every
         built-in method takes ``progress``: a callable ``progress(t)`` called after every
         step (a returned False stops the run with status 2 and the steps made so far, as
-        Ctrl-C does for every built-in method).
+        Ctrl-C does for every built-in method); ``progress=True`` shows a progress bar
+        (tqdm) on stderr once the run has lasted 2 s. Either is checked once per accepted
+        step, never per evaluation of `fun`.
 
     Returns
     -------
@@ -389,11 +392,18 @@ def solve(
     run = validate(fun, t_span, y0, method, step=step, rtol=rtol, atol=atol, t_eval=t_eval,
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
-    if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
-        res = _zero_length(run)
-    else:
-        _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-        res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+    if "progress" in run.options:  # True: a bar; checked once per accepted step
+        run.options["progress"] = progress_option(run.options["progress"], (run.t0, run.t1))
+    bar = run.options.get("progress")
+    try:
+        if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
+            res = _zero_length(run)
+        else:
+            _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+            res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+    finally:
+        if isinstance(bar, Progress):
+            bar.close()
     if res.status < 0 and run.y.ndim == 2:
         res = name_failed_member(res, run)
     failure = run.tracker.failure() if run.tracker is not None else None
