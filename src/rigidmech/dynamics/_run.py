@@ -110,6 +110,63 @@ def compile_events(eqs, events, values):
     return out
 
 
+#: largest number of Gauss-Newton iterations of the position projection per step
+PROJECTION_ITERATIONS = 3
+#: methods on the solver's one loop, which take ``project``
+PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau", "rkn64", "rkn1210")
+
+
+def projector(eqs, values):
+    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
+    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
+    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
+    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
+    (exact: c is linear in q'). None if `eqs` has no constraints."""
+    c = eqs.constraints
+    if c is None:
+        return None
+    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    key = "projector"
+    if key not in eqs._cache:
+        hol = [i for i, p in enumerate(c.position) if p is not None]
+        args_q = [_t, list(q_s), *eqs._params, *w_s]
+        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
+        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+        A = xreplace_shared(list(c.jacobian), rule)
+        vel = xreplace_shared(list(c.velocity), rule)
+        m, n = len(c), len(q_s)
+        eqs._cache[key] = (
+            hol,
+            compile_expressions(sp.ImmutableMatrix(len(hol), 1, phi), args_q,
+                                name="closure") if hol else None,
+            compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
+            compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
+    hol, phi_f, A_f, c_f = eqs._cache[key]
+    consts, inputs, _ = eqs._values(values)
+    n = len(q_s)
+    solve, dot = np.linalg.solve, np.dot
+
+    def project(t, y):
+        w = [v(t) if callable(v) else v for v in inputs]
+        q, u = y[:n].copy(), y[n:]
+        if phi_f is not None:
+            last = math.inf
+            for _ in range(PROJECTION_ITERATIONS):
+                r = np.asarray(phi_f(t, q, *consts, *w), dtype=float).reshape(-1)
+                size = float(np.max(np.abs(r)))
+                if not size < last or size == 0.0:
+                    break
+                last = size
+                J = np.asarray(A_f(t, q, *consts, *w), dtype=float)[hol]
+                q -= dot(J.T, solve(dot(J, J.T), r))
+        A = np.asarray(A_f(t, q, *consts, *w), dtype=float)
+        r = np.asarray(c_f(t, q, u, *consts, *w), dtype=float).reshape(-1)
+        u = u - dot(A.T, solve(dot(A, A.T), r))
+        return np.concatenate((q, u))
+
+    return project
+
+
 #: one-step fixed-step methods, which can be run chunk by chunk with the same numbers
 ONE_STEP = ("euler", "heun", "midpoint", "rk38", "rk4", "verlet", "yoshida4", "yoshida6")
 #: steps per chunk of a one-step fixed-step run
@@ -154,6 +211,21 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride, progress=None):
                          t_stop=t_stop, y_stop=y if y_stop is None else y_stop)
 
 
+def _project_samples(project, t, y):
+    """The samples projected onto the constraints as the steps' ends are (those inside a
+    step come from the unprojected step's dense output); a non-finite one is kept as is."""
+    out = np.array(y, dtype=float)
+    with np.errstate(all="ignore"):
+        for k, tk in enumerate(np.asarray(t, dtype=float).tolist()):
+            try:
+                p = project(tk, out[:, k])
+            except np.linalg.LinAlgError:
+                continue
+            if np.isfinite(p).all():
+                out[:, k] = p
+    return out
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -162,7 +234,7 @@ def _takes(method, option):
 
 
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
-        first_step, max_step, dense_output, progress, values, notes):
+        first_step, max_step, dense_output, progress, values, notes, project=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
     t0, t1 = float(t[0]), float(t[1])
     kinds = {k: ode.methods(k) for k in ("fixed", "second_order")}
@@ -204,6 +276,13 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
+    if project is None:  # default: on, for a constrained system and a method of the loop
+        project = eqs.constraints is not None and method in PROJECTING
+    elif project and method not in PROJECTING:
+        raise ArgumentError(f"`project` needs a method of the solver's loop "
+                            f"({', '.join(PROJECTING)}); got method {method!r}.")
+    if project and eqs.constraints is not None and not fixed:
+        options["project"] = projector(eqs, values)
     prog = None
     if callable(progress) or progress is True or (progress is None and interactive()):
         prog = Progress((t0, t1), callback=progress if callable(progress) else None,
@@ -250,6 +329,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]
+    if options.get("project") is not None and len(t_out):  # samples inside steps too
+        y_out = _project_samples(options["project"], t_out, y_out)
     if fixed and stride > 1:
         keep = np.arange(0, len(t_out), stride)
         if keep[-1] != len(t_out) - 1:

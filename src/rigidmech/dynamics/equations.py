@@ -580,7 +580,8 @@ class EquationsOfMotion:
     def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
                  atol=1e-10, step=None, n_output=1001, t_eval=None, events=None,
                  max_steps=1_000_000, first_step=None, max_step=None, dense_output=None,
-                 progress=None, raise_on_failure=False, params=None, **values) -> Simulation:
+                 progress=None, project=None, raise_on_failure=False, params=None,
+                 **values) -> Simulation:
         """Integrate the equations from (q0, u0) over ``t`` (ch. 27.2.2).
 
         The run never loses work: it returns a :class:`Simulation` however it ends (its
@@ -629,6 +630,17 @@ class EquationsOfMotion:
             stderr is a terminal; ``True``: the bar even when it is not; ``False``: none; a
             callable ``progress(t)``: called about every 0.1 s with the time reached,
             returning False stops the run (status ``"interrupted"``).
+        project : bool or None
+            For equations with :attr:`constraints` (closed loops, rolling): after every step,
+            project the positions onto the closure conditions Φ(q, t) = 0 (Gauss-Newton
+            steps with the constraint Jacobian, compiled once) and the rates onto
+            A(q, t) q' + a = 0, so that the drift of the constraints does not grow (see
+            :func:`rigidmech.ode.solve`'s ``project``); the samples, taken between two
+            steps from the unprojected step's dense output, are projected the same way.
+            ``None``
+            (default): on for constrained equations with a method of the solver's loop
+            (``dop853``, ``dopri5``, ``bs32``, ``gbs``, ``radau``); ``False``: off (Baumgarte's
+            stabilisation alone).
         raise_on_failure : bool
             Raise :class:`~rigidmech._core.errors.NumericalError` on failure (the partial simulation
             attached as its ``simulation`` attribute) instead of returning it.
@@ -700,7 +712,7 @@ class EquationsOfMotion:
         sim = run(self, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
                   n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
                   first_step=first_step, max_step=max_step, dense_output=dense_output,
-                  progress=progress, values=values, notes=fun.notes)
+                  progress=progress, values=values, notes=fun.notes, project=project)
         if sim.result is not None and sim.t.size:
             warn_near_singularities(self.singular_sets, self._coordinates, sim.result, values)
         return sim.check() if raise_on_failure else sim

@@ -36,6 +36,11 @@ class Stops:
         self._end = float(t_span[1])
         self._sign = 1.0 if t_span[1] >= t_span[0] else -1.0
 
+    @property
+    def times(self):
+        """The stops, in order (the samples a method landing on them keeps)."""
+        return self._times
+
     def after(self, t):
         """The first stop strictly beyond `t` in the direction of integration, else the end."""
         times, sign = self._times, self._sign

@@ -46,6 +46,7 @@ The protocol (model: scipy's ``OdeSolver``):
 
 from __future__ import annotations
 
+import contextvars
 import math
 import warnings
 from typing import NamedTuple
@@ -58,7 +59,12 @@ from rigidmech._core.errors import ArgumentError
 from ._driver import Problem, Recorder, SampleRecorder, initial_step
 from ._warnings import stiffness_count
 
-__all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress"]
+__all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress",
+           "PROJECT"]
+
+#: The ``project(t, y) -> y`` of the run in progress (set by :func:`~rigidmech.ode.solve`
+#: around the method's call, read once by :func:`integrate`): a list ``[project, used]``.
+PROJECT = contextvars.ContextVar("rigidmech_ode_project", default=None)
 
 
 def check_progress(progress):
@@ -318,8 +324,11 @@ def integrate(stepper, run, f0=None):
     direction = 1.0 if t_end > t0 else -1.0
     prob = Problem(run.fun, run.y0.shape)
     y0 = run.y0.reshape(-1).copy()
-    if run.t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
-        rec = SampleRecorder(t0, y0, prob.shape, run.events, run.t_eval, caps.dense_form,
+    t_eval = run.t_eval  # the stops a method lands on are its samples (rkn pairs, gbs)
+    if t_eval is None and run.stops is not None:
+        t_eval = run.stops.times
+    if t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
+        rec = SampleRecorder(t0, y0, prob.shape, run.events, t_eval, caps.dense_form,
                              at_steps=run.stops is not None)
     else:
         rec = Recorder(t0, y0, prob.shape, run.dense_output, run.events, caps.dense_form)
@@ -337,7 +346,11 @@ def integrate(stepper, run, f0=None):
                              run.atol, t_end, run.max_step)
     else:
         h_abs = run.first_step
-    state = _Loop(stepper, run, rec, direction, prob)
+    box = PROJECT.get()
+    project = None
+    if box is not None:
+        project, box[1] = box[0], True
+    state = _Loop(stepper, run, rec, direction, prob, project)
     try:
         with warnings.catch_warnings():  # a complex value cast to float raises, not warns
             warnings.simplefilter("error", ComplexWarning)
@@ -355,11 +368,26 @@ class _Loop:
     """The state of the one loop (kept on an object so that an interruption finds it)."""
 
     __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts", "fun",
-                 "shape")
+                 "shape", "prob", "project")
 
-    def __init__(self, stepper, run, rec, direction, prob):
+    def __init__(self, stepper, run, rec, direction, prob, project=None):
         self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
-        self.fun, self.shape = prob.fun, prob.shape
+        self.fun, self.shape, self.prob, self.project = prob.fun, prob.shape, prob, project
+
+    def projected(self, t, y_new):
+        """The state `y_new` projected by ``project(t, y)`` (a fresh flat ndarray), or None if
+        the projection is not finite (the step is then kept unprojected)."""
+        y = np.array(y_new, dtype=float)
+        out = np.array(self.project(t, y.reshape(self.shape)), dtype=float).reshape(-1)
+        if out.shape != y.shape:
+            raise ArgumentError(f"`project(t, y)` must return an array of the shape of y, "
+                                f"{self.shape}; got shape {np.shape(out)}.")
+        return out if np.isfinite(out).all() else None
+
+    def restart(self, t, y):
+        """The stepper restarted from the projected state `y` (its derivative evaluated)."""
+        prob = self.prob
+        return self.stepper.begin(prob, t, y, prob(t, y, np.empty_like(y)))
         self.t = run.t_span[0]
         self.nrej = self.attempts = 0
 
@@ -373,6 +401,7 @@ class _Loop:
         stiff = _Stiffness(stepper.capabilities, run.nstiff)
         nstiff, want = stiff.nstiff, rec.needs_dense
         attempt, progress, stops = stepper.attempt, run.progress, run.stops
+        project = self.project
         finite = getattr(stepper, "finite", None)  # None: the state is a list of floats
         accept = getattr(stepper, "accept", None)
         isfinite, nextafter, inf = math.isfinite, math.nextafter, math.inf
@@ -419,13 +448,16 @@ class _Loop:
                 naccpt += 1
                 if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline
                     stiff.check(stepper.hlamb(h_abs, step), t_new)
+                y_p = None if project is None else self.projected(t_new, y_new)
                 if want:
                     y_rec, coeffs, exact = stepper.dense(t, y, h, step)
-                    stop = rec.accept(t_new, y_rec, coeffs, exact)
+                    stop = rec.accept(t_new, y_rec if y_p is None else y_p, coeffs, exact)
                 else:
-                    stop = rec.accept(t_new, y_new)
+                    stop = rec.accept(t_new, y_new if y_p is None else y_p)
                 if accept is not None:
                     accept(step)
+                if y_p is not None:
+                    y_new, f_new = self.restart(t_new, y_p)
                 t, y, f = t_new, y_new, f_new
                 if stop:
                     return

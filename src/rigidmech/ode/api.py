@@ -44,6 +44,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
 from ._dense import DenseSolution
+from ._loop import PROJECT
 from ._progress import Progress, progress_option
 from ._result import OdeResult
 from .events import EventTracker
@@ -302,6 +303,7 @@ def solve(
     max_step: float = math.inf,
     max_steps: int = 1_000_000,
     args: tuple = (),
+    project: Callable | None = None,
     **options,
 ) -> OdeResult:
     """Integrate ``y' = f(t, y)`` (or ``q'' = a(t, q)``) from ``t_span[0]`` to ``t_span[1]``.
@@ -349,6 +351,17 @@ def solve(
         fixed step that would need more is refused.
     args : tuple
         Extra arguments passed to `fun`.
+    project : callable, optional
+        ``project(t, y) -> y``: a projection of the state applied after every accepted step
+        (e.g. onto the constraints of a mechanism, whose integration drifts off them). The
+        next step starts from the projected state (its derivative evaluated once more, one
+        evaluation of `fun` per step); the samples at the steps' ends, ``t_stop``/``y_stop``
+        and the states given to event functions at the steps' ends are the projected
+        ones, while the dense output *between* two steps (``sol``, samples of ``t_eval``
+        inside a step, event location) is that of the unprojected step. A non-finite
+        projection is ignored for that step. Only for the methods on the one integration
+        loop (``dopri5``, ``dop853``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``);
+        refused by the others.
     **options
         Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
         ``"radau"``), passed on to it; an option the method does not take is refused. Every
@@ -392,6 +405,15 @@ def solve(
     run = validate(fun, t_span, y0, method, step=step, rtol=rtol, atol=atol, t_eval=t_eval,
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
+    box = None
+    if project is not None:
+        if not callable(project):
+            raise ArgumentTypeError(f"`project` must be a callable project(t, y) -> y or "
+                                    f"None; got {project!r}.")
+        if run.entry.kind in _FIXED:
+            raise ArgumentError(f"`project` is for the methods of the integration loop; "
+                                f"method {run.entry.name!r} has a fixed step.")
+        box = [project, False]
     if "progress" in run.options:  # True: a bar; checked once per accepted step
         run.options["progress"] = progress_option(run.options["progress"], (run.t0, run.t1))
     bar = run.options.get("progress")
@@ -400,7 +422,14 @@ def solve(
             res = _zero_length(run)
         else:
             _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-            res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+            token = PROJECT.set(box)
+            try:
+                res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+            finally:
+                PROJECT.reset(token)
+            if box is not None and not box[1]:
+                raise ArgumentError(f"`project` is for the methods of the integration loop; "
+                                    f"method {run.entry.name!r} has its own loop.")
     finally:
         if isinstance(bar, Progress):
             bar.close()
