@@ -66,8 +66,8 @@ def main(argv=None):
     assert np.allclose(r.y[:2], s.q, rtol=0, atol=1e-12), "not the same run"
     print(f"double pendulum, {args.method}, rtol 1e-8, t = {span}, {n_out} samples: "
           f"{r.nsteps} steps, {r.nfev} evaluations")
-    print(f"  ode.solve  (bare)  : {min(a) * 1e3:8.1f} ms CPU  ({min(a) / r.nfev * 1e6:.2f} us/eval)")
-    print(f"  simulate           : {min(b) * 1e3:8.1f} ms CPU  ({min(b) / r.nfev * 1e6:.2f} us/eval)")
+    for name, x in (("ode.solve (bare)", min(a)), ("simulate", min(b))):
+        print(f"  {name:<17}: {x * 1e3:8.1f} ms CPU  ({x / r.nfev * 1e6:.2f} us/eval)")
     print(f"  ratio simulate / solve: {min(b) / min(a):.3f}  "
           f"(+{(min(b) - min(a)) / r.nfev * 1e6:.2f} us per evaluation)")
 

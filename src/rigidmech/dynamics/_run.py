@@ -16,10 +16,10 @@ import numpy as np
 import sympy as sp
 
 from .. import ode
-from ..ode._progress import Progress, interactive
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
+from ..ode._progress import Progress, interactive
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 

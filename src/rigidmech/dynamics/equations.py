@@ -669,11 +669,11 @@ class EquationsOfMotion:
         ``gbs``, ``rkn64`` and ``rkn1210`` land their steps on the sample times: the samples
         are as accurate as the steps, memory follows the samples. ``radau`` and ``adams``
         keep their whole dense output and evaluate it at the end (memory grows with the
-        steps; ``radau``'s interpolant is cubic, less accurate than its steps). Fixed-step methods sample their
-        own grid points (about ``n_output`` of them, evenly spaced by a whole number of
-        steps; with ``t_eval``, a cubic Hermite interpolant of the grid); the one-step ones
-        (``rk4``, ``verlet``, ...) run chunk by chunk (10^4 steps each, same numbers), so
-        memory follows the samples, the multistep ones (``ab4``, ...) keep every
+        steps; ``radau``'s interpolant is cubic, less accurate than its steps). Fixed-step
+        methods sample their own grid points (about ``n_output`` of them, evenly spaced by a
+        whole number of steps; with ``t_eval``, a cubic Hermite interpolant of the grid); the
+        one-step ones (``rk4``, ``verlet``, ...) run chunk by chunk (10^4 steps each, same
+        numbers), so memory follows the samples, the multistep ones (``ab4``, ...) keep every
         ``stride``-th point as they go.
 
         On Ctrl-C (KeyboardInterrupt) the methods built on the solver's one loop (``dop853``,

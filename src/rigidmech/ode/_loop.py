@@ -373,6 +373,8 @@ class _Loop:
     def __init__(self, stepper, run, rec, direction, prob, project=None):
         self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
         self.fun, self.shape, self.prob, self.project = prob.fun, prob.shape, prob, project
+        self.t = run.t_span[0]
+        self.nrej = self.attempts = 0
 
     def projected(self, t, y_new):
         """The state `y_new` projected by ``project(t, y)`` (a fresh flat ndarray), or None if
@@ -388,8 +390,6 @@ class _Loop:
         """The stepper restarted from the projected state `y` (its derivative evaluated)."""
         prob = self.prob
         return self.stepper.begin(prob, t, y, prob(t, y, np.empty_like(y)))
-        self.t = run.t_span[0]
-        self.nrej = self.attempts = 0
 
     def run(self, t, y, f, h_abs):
         """The loop; on any exit (an interruption too) ``t``, ``nrej`` and ``attempts`` hold
