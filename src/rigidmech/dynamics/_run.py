@@ -226,6 +226,25 @@ def _project_samples(project, t, y):
     return out
 
 
+def _loop_options(options, eqs, method, project, progress, span, values):
+    """Add to `options` the projection (by default for constrained equations and a method
+    of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
+    returned, or None) of a run."""
+    if project is None:
+        project = eqs.constraints is not None and method in PROJECTING
+    elif project and method not in PROJECTING:
+        raise ArgumentError(f"`project` needs a method of the solver's loop "
+                            f"({', '.join(PROJECTING)}); got method {method!r}.")
+    if project and eqs.constraints is not None:
+        options["project"] = projector(eqs, values)
+    prog = None
+    if callable(progress) or progress is True or (progress is None and interactive()):
+        prog = Progress(span, callback=progress if callable(progress) else None,
+                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+        options["progress"] = prog
+    return prog
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -276,19 +295,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
-    if project is None:  # default: on, for a constrained system and a method of the loop
-        project = eqs.constraints is not None and method in PROJECTING
-    elif project and method not in PROJECTING:
-        raise ArgumentError(f"`project` needs a method of the solver's loop "
-                            f"({', '.join(PROJECTING)}); got method {method!r}.")
-    if project and eqs.constraints is not None and not fixed:
-        options["project"] = projector(eqs, values)
-    prog = None
-    if callable(progress) or progress is True or (progress is None and interactive()):
-        prog = Progress((t0, t1), callback=progress if callable(progress) else None,
-                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
-    if prog is not None:
-        options["progress"] = prog
+    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values)
     chunks = options.pop("chunks", None)
     if chunks is None:
         options["events"] = compile_events(eqs, events, values)
