@@ -104,3 +104,7 @@ def test_project_is_refused_by_a_method_with_its_own_loop():
     with pytest.raises(ArgumentError, match="method 'adams' has its own loop"):
         ode.solve(lambda t, y: -y, (0.0, 1.0), [1.0], method="adams",
                   project=lambda t, y: y)
+    with pytest.raises(ArgumentError, match="`project` is for first-order methods; method "
+                                            "'rkn64'"):
+        ode.solve(lambda t, q: -q, (0.0, 1.0), [1.0, 0.0], method="rkn64",
+                  project=lambda t, y: y)

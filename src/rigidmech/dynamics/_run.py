@@ -112,8 +112,8 @@ def compile_events(eqs, events, values):
 
 #: largest number of Gauss-Newton iterations of the position projection per step
 PROJECTION_ITERATIONS = 3
-#: methods on the solver's one loop, which take ``project``
-PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau", "rkn64", "rkn1210")
+#: first-order methods on the solver's one loop, which take ``project``
+PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau")
 
 
 def projector(eqs, values):

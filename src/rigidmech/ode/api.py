@@ -359,9 +359,9 @@ def solve(
         and the states given to event functions at the steps' ends are the projected
         ones, while the dense output *between* two steps (``sol``, samples of ``t_eval``
         inside a step, event location) is that of the unprojected step. A non-finite
-        projection is ignored for that step. Only for the methods on the one integration
-        loop (``dopri5``, ``dop853``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``);
-        refused by the others.
+        projection is ignored for that step; ``radau`` forms its Jacobian again after each
+        projected step. Only for the first-order methods of the one integration loop
+        (``dopri5``, ``dop853``, ``bs32``, ``gbs``, ``radau``); refused by the others.
     **options
         Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
         ``"radau"``), passed on to it; an option the method does not take is refused. Every
@@ -413,6 +413,9 @@ def solve(
         if run.entry.kind in _FIXED:
             raise ArgumentError(f"`project` is for the methods of the integration loop; "
                                 f"method {run.entry.name!r} has a fixed step.")
+        if run.entry.kind in _SECOND_ORDER:  # its stepper keeps the acceleration it made
+            raise ArgumentError(f"`project` is for first-order methods; method "
+                                f"{run.entry.name!r} integrates q'' = a(t, q).")
         box = [project, False]
     if "progress" in run.options:  # True: a bar; checked once per accepted step
         run.options["progress"] = progress_option(run.options["progress"], (run.t0, run.t1))
