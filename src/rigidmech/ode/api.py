@@ -45,7 +45,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 from . import _registry
 from ._dense import DenseSolution
 from ._loop import PROJECT
-from ._progress import Progress, progress_option
+from ._progress import progress_option
 from ._result import OdeResult
 from .events import EventTracker
 from .runge_kutta import fixed_step_method
@@ -417,9 +417,11 @@ def solve(
             raise ArgumentError(f"`project` is for first-order methods; method "
                                 f"{run.entry.name!r} integrates q'' = a(t, q).")
         box = [project, False]
-    if "progress" in run.options:  # True: a bar; checked once per accepted step
-        run.options["progress"] = progress_option(run.options["progress"], (run.t0, run.t1))
-    bar = run.options.get("progress")
+    bar = None  # the bar made here for progress=True, closed at the end
+    if "progress" in run.options:  # checked once per accepted step
+        given = run.options["progress"]
+        run.options["progress"] = progress_option(given, (run.t0, run.t1))
+        bar = run.options["progress"] if given is True else None
     try:
         if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
             res = _zero_length(run)
@@ -434,7 +436,7 @@ def solve(
                 raise ArgumentError(f"`project` is for the methods of the integration loop; "
                                     f"method {run.entry.name!r} has its own loop.")
     finally:
-        if isinstance(bar, Progress):
+        if bar is not None:
             bar.close()
     if res.status < 0 and run.y.ndim == 2:
         res = name_failed_member(res, run)
