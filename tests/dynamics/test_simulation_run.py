@@ -495,3 +495,30 @@ def test_connection_action_needs_a_system():
     sim = eqs.simulate(t=(0, 1), q0=[1.0], n_output=3, k=4.0)
     with pytest.raises(ArgumentError, match="`system` is needed"):
         sim.connection_action(None, None)
+
+
+# -- 5. CSV header with units -------------------------------------------------------------
+def test_csv_header_gives_the_units_of_angles_and_those_the_user_passes(tmp_path):
+    # a pendulum's angle q (a rotation of its frame: rad, rad/s) and a slider's x (unknown
+    # to the model: the user says m)
+    q, x = rm.coordinates("q x")
+    m, g = sp.symbols("m g", positive=True)
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    P = R0.origin.moved("P", x * R0.i)
+    bob = rm.Body("bob", frame=R1, mass=m, centre=P.moved("G", R1.i))  # a point mass
+    system = rm.System(galilean=R0)
+    system.add(bob)
+    system.act(rm.gravity(-g * R0.j))
+    eqs = system.equations_of_motion()
+    assert eqs.names == ("q", "x")
+    sim = eqs.simulate(t=(0, 0.5), q0={"q": 0.1, "x": 0.0}, n_output=3, m=1.0, g=9.81)
+    path = sim.save(tmp_path / "run.csv", units={"x": "m"})
+    with open(path) as fh:
+        header = fh.read().splitlines()[1].split(",")
+    assert header == ["t [s]", "q [rad]", "x [m]", "q_dot [rad/s]", "x_dot [m/s]"]
+    back = Simulation.load(path)
+    assert back.names == sim.names and np.array_equal(back.q, sim.q)
+    with pytest.raises(ArgumentError, match=r"`units` names \['y'\], which is not a "
+                                            r"coordinate"):
+        sim.save(tmp_path / "bad.csv", units={"y": "m"})

@@ -1,16 +1,16 @@
 """One run of :meth:`EquationsOfMotion.simulate` (book, ch. 27): the solver's options kept
-apart from the model's values, the right-hand side watched (non-finite and complex values
-named, progress shown, a ``progress`` callback able to stop the run), the samples chosen so
-that memory follows the samples asked for, Ctrl-C turned into a partial result.
+apart from the model's values, the samples chosen so that memory follows the samples asked
+for, a failure's non-finite or complex value named by coordinate, progress shown (a bar or a
+``progress`` callback able to stop the run, both checked by the solver once per accepted
+step), Ctrl-C turned into a partial result. Nothing wraps the right-hand side: the solver's
+loop does the watching, once per accepted step.
 """
 
 from __future__ import annotations
 
 import inspect
 import math
-import sys
 import time
-from math import isfinite
 
 import numpy as np
 import sympy as sp
@@ -19,6 +19,7 @@ from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
+from ..ode._progress import Progress, interactive
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 
@@ -30,114 +31,29 @@ PROGRESS_DELAY = 2.0
 PROGRESS_EVERY = 0.1
 
 
-class _Stopped(Exception):
-    pass
-
-
-class Watch:
-    """The right-hand side as the solver sees it, watched.
-
-    * a complex value is not truncated to its real part: it becomes nan (the solver then
-      fails) and is named with its time and component;
-    * the last non-finite value is named likewise (the solver may recover from one in a
-      rejected trial step; if it fails, this says where the trouble was);
-    * every :data:`PROGRESS_EVERY` seconds, the progress callback or bar is updated; a
-      callback returning False stops the run (as Ctrl-C does).
-    """
-
-    __slots__ = ("fun", "labels", "second", "bad", "t", "calls", "callback", "bar", "start", "last",
-                 "span", "stopped", "bar_wanted")
-
-    def __init__(self, fun, labels, t_span, progress, second=False):
-        self.fun, self.labels, self.second = fun, labels, second
-        self.bad = None
-        self.t = t_span[0]
-        self.calls = 0
-        self.span = t_span
-        self.callback = progress if callable(progress) else None
-        self.bar_wanted = progress is True or (progress is None and _interactive())
-        self.bar = None
-        self.start = self.last = time.monotonic()
-        self.stopped = False
-
-    def __call__(self, t, y):
-        try:
-            out = self.fun(t, y)
-        except (ArithmeticError, ValueError, TypeError) as exc:  # e.g. an input's error
-            self.bad = (f"could not be evaluated ({type(exc).__name__}: {exc})", t, None,
-                        None)
-            return np.full(self.shape(y), np.nan)
-        if out.dtype.kind == "c":
-            out = self._complex(t, out)
-        elif not isfinite(sum(out.tolist() if out.ndim == 1 else out.ravel().tolist())) and (
-                np.isfinite(y).all()):  # where it starts (a sum is nan or inf if one is)
-            flat = out.reshape(-1)
-            bad = ~np.isfinite(flat)
-            if bad.any():
-                k = int(np.argmax(bad))
-                self.bad = ("is not finite", t, k, float(flat[k]))
-        self.t = t
-        self.calls += 1
-        if not self.calls & 31 and (self.callback is not None or self.bar_wanted):
-            self._tick(t)
-        return out
-
-    def _complex(self, t, out):
-        imag = np.imag(out) != 0
-        if imag.any():
-            k = int(np.argmax(imag.reshape(-1)))
-            self.bad = ("has a complex value", t, k, complex(out.reshape(-1)[k]))
-        return np.where(imag, np.nan, np.real(out))
-
-    def shape(self, y):
-        return np.shape(y) if not self.second else (len(self.labels),) + np.shape(y)[1:]
-
-    def _tick(self, t):
-        now = time.monotonic()
-        if now - self.last < PROGRESS_EVERY:
-            return
-        self.last = now
-        if self.callback is not None and self.callback(float(t)) is False:
-            self.stopped = True
-            raise KeyboardInterrupt  # the driver keeps what was computed (status 2)
-        if self.bar_wanted and now - self.start >= PROGRESS_DELAY:
-            if self.bar is None:
-                from tqdm import tqdm  # imported on use
-
-                t0, t1 = self.span
-                self.bar = tqdm(total=abs(t1 - t0), unit="s", desc="rigidmech: integrating",
-                                file=sys.stderr, leave=False, dynamic_ncols=True,
-                                bar_format="{desc} {percentage:3.0f}%|{bar}| t = {n:.4g} of "
-                                "{total:.4g} [{elapsed}<{remaining}]")
-            self.bar.n = abs(t - self.span[0])
-            self.bar.refresh()
-
-    def close(self):
-        if self.bar is not None:
-            self.bar.close()
-            self.bar = None
-
-    def diagnosis(self):
-        """A sentence naming the last bad value of the right-hand side, or ''."""
-        if self.bad is None:
-            return ""
-        what, t, k, value = self.bad
-        if k is None:
-            return f" The right-hand side {what} at t = {float(t)!r}."
-        return (f" The right-hand side {what} ({value}) at t = {float(t)!r}, in the "
-                f"component {self.labels[k]}.")
-
-
-def _interactive():
-    try:
-        return sys.stderr.isatty()
-    except (AttributeError, ValueError):
-        return False
-
-
 def _labels(names, second_order):
     accs = [f"{n}'' (acceleration of {n})" for n in names]
     return accs if second_order else [f"{n}' (rate of {n})" for n in names] + accs
+
+
+def _diagnosis(trouble, culprit, names, second):
+    """A sentence naming why the right-hand side failed: the error it raised (with its time),
+    else the non-finite or complex value the solver found, by coordinate; or ''."""
+    if trouble:
+        what, t = trouble[0]
+        return f" The right-hand side could not be evaluated ({what}) at t = {t!r}."
+    if culprit is None:
+        return ""
+    k, value, t = culprit["component"], culprit["value"], culprit["t"]
+    if culprit["what"] == "derivative":
+        labels = _labels(names, second)
+        label = labels[k] if k < len(labels) else f"component {k}"
+        kind = "has a complex value" if culprit.get("complex") else "is not finite"
+        return (f" The right-hand side {kind} ({value}) at t = {t!r}, in the component "
+                f"{label}.")
+    states = list(names) + [f"{n}'" for n in names]
+    label = states[k] if k < len(states) else f"component {k}"
+    return f" The state became non-finite ({value}) at t = {t!r}, in the component {label}."
 
 
 def merge_values(params, values):
@@ -194,6 +110,63 @@ def compile_events(eqs, events, values):
     return out
 
 
+#: largest number of Gauss-Newton iterations of the position projection per step
+PROJECTION_ITERATIONS = 3
+#: first-order methods on the solver's one loop, which take ``project``
+PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau")
+
+
+def projector(eqs, values):
+    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
+    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
+    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
+    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
+    (exact: c is linear in q'). None if `eqs` has no constraints."""
+    c = eqs.constraints
+    if c is None:
+        return None
+    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    key = "projector"
+    if key not in eqs._cache:
+        hol = [i for i, p in enumerate(c.position) if p is not None]
+        args_q = [_t, list(q_s), *eqs._params, *w_s]
+        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
+        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+        A = xreplace_shared(list(c.jacobian), rule)
+        vel = xreplace_shared(list(c.velocity), rule)
+        m, n = len(c), len(q_s)
+        eqs._cache[key] = (
+            hol,
+            compile_expressions(sp.ImmutableMatrix(len(hol), 1, phi), args_q,
+                                name="closure") if hol else None,
+            compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
+            compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
+    hol, phi_f, A_f, c_f = eqs._cache[key]
+    consts, inputs, _ = eqs._values(values)
+    n = len(q_s)
+    solve, dot = np.linalg.solve, np.dot
+
+    def project(t, y):
+        w = [v(t) if callable(v) else v for v in inputs]
+        q, u = y[:n].copy(), y[n:]
+        if phi_f is not None:
+            last = math.inf
+            for _ in range(PROJECTION_ITERATIONS):
+                r = np.asarray(phi_f(t, q, *consts, *w), dtype=float).reshape(-1)
+                size = float(np.max(np.abs(r)))
+                if not size < last or size == 0.0:
+                    break
+                last = size
+                J = np.asarray(A_f(t, q, *consts, *w), dtype=float)[hol]
+                q -= dot(J.T, solve(dot(J, J.T), r))
+        A = np.asarray(A_f(t, q, *consts, *w), dtype=float)
+        r = np.asarray(c_f(t, q, u, *consts, *w), dtype=float).reshape(-1)
+        u = u - dot(A.T, solve(dot(A, A.T), r))
+        return np.concatenate((q, u))
+
+    return project
+
+
 #: one-step fixed-step methods, which can be run chunk by chunk with the same numbers
 ONE_STEP = ("euler", "heun", "midpoint", "rk38", "rk4", "verlet", "yoshida4", "yoshida6")
 #: steps per chunk of a one-step fixed-step run
@@ -202,7 +175,7 @@ CHUNK = 10_000
 UNSTABLE_DRIFT = 0.5
 
 
-def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
+def _in_chunks(fun, t0, t1, y0, method, nsteps, stride, progress=None):
     """A one-step fixed-step run as successive runs of about :data:`CHUNK` steps (a whole
     number of `stride` steps each), keeping every `stride`-th grid point: memory follows the
     samples, and Ctrl-C keeps the chunks done and the steps of the interrupted one."""
@@ -216,7 +189,7 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
         k = min(per, nsteps - done)
         ta, tb = t0 + done * h, (t0 + (done + k) * h) if done + k < nsteps else t1
         r = ode.solve(fun, (ta, tb), y, method=method, step=abs(tb - ta) / k,
-                      max_steps=k + 1)  # Ctrl-C: status 2, the chunk's steps kept
+                      max_steps=k + 1, progress=progress)  # Ctrl-C: status 2, steps kept
         nfev += r.nfev
         keep = np.arange(stride, len(r.t), stride)
         ts.append(r.t[keep])
@@ -238,6 +211,40 @@ def _in_chunks(fun, t0, t1, y0, method, nsteps, stride):
                          t_stop=t_stop, y_stop=y if y_stop is None else y_stop)
 
 
+def _project_samples(project, t, y):
+    """The samples projected onto the constraints as the steps' ends are (those inside a
+    step come from the unprojected step's dense output); a non-finite one is kept as is."""
+    out = np.array(y, dtype=float)
+    with np.errstate(all="ignore"):
+        for k, tk in enumerate(np.asarray(t, dtype=float).tolist()):
+            try:
+                p = project(tk, out[:, k])
+            except np.linalg.LinAlgError:
+                continue
+            if np.isfinite(p).all():
+                out[:, k] = p
+    return out
+
+
+def _loop_options(options, eqs, method, project, progress, span, values):
+    """Add to `options` the projection (by default for constrained equations and a method
+    of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
+    returned, or None) of a run."""
+    if project is None:
+        project = eqs.constraints is not None and method in PROJECTING
+    elif project and method not in PROJECTING:
+        raise ArgumentError(f"`project` needs a method of the solver's loop "
+                            f"({', '.join(PROJECTING)}); got method {method!r}.")
+    if project and eqs.constraints is not None:
+        options["project"] = projector(eqs, values)
+    prog = None
+    if callable(progress) or progress is True or (progress is None and interactive()):
+        prog = Progress(span, callback=progress if callable(progress) else None,
+                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+        options["progress"] = prog
+    return prog
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -246,7 +253,7 @@ def _takes(method, option):
 
 
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
-        first_step, max_step, dense_output, progress, values, notes):
+        first_step, max_step, dense_output, progress, values, notes, project=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
     t0, t1 = float(t[0]), float(t[1])
     kinds = {k: ode.methods(k) for k in ("fixed", "second_order")}
@@ -288,42 +295,49 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
-    watch = Watch(fun, _labels(eqs.names, second), (t0, t1), progress, second)
+    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values)
     chunks = options.pop("chunks", None)
     if chunks is None:
         options["events"] = compile_events(eqs, events, values)
+    fun.trouble = []  # an error of the right-hand side: kept there, nan returned
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             if chunks is None:
-                res = ode.solve(watch, (t0, t1), y0, method=method, **options)
+                res = ode.solve(fun, (t0, t1), y0, method=method, **options)
             else:
-                res = _in_chunks(watch, t0, t1, y0, method, *chunks)
+                res = _in_chunks(fun, t0, t1, y0, method, *chunks, progress=prog)
                 stride = 1
     except KeyboardInterrupt:  # a method that keeps no partial result: the initial state
-        watch.close()
         elapsed = time.perf_counter() - start
+        t_at = prog.t if prog is not None else t0
         return Simulation(eqs, None, values, elapsed, notes, status="interrupted",
-                          message=f"The integration was interrupted at t = {watch.t!r}; method "
-                          f"{method!r} keeps no partial result: only the initial state is "
-                          "kept.", t=[t0], y=np.asarray(y0, dtype=float)[:, None],
-                          t_events=[], method=method, t_stop=watch.t)
+                          message=f"The integration was interrupted (Ctrl-C) after t = "
+                          f"{t_at!r}; method {method!r} keeps no partial result: only the "
+                          "initial state is kept.", t=[t0],
+                          y=np.asarray(y0, dtype=float)[:, None], t_events=[], method=method,
+                          t_stop=t0)
     finally:
-        watch.close()
+        fun.trouble, trouble = None, fun.trouble
+        if prog is not None:
+            prog.close()
     elapsed = time.perf_counter() - start
     message = res.message
     t_stop = res.t_stop  # the end, the terminal event or the last accepted step
     if res.status == 2:
         t_end = float(res.t[-1]) if len(res.t) else t0
-        who = ("the `progress` callback" if watch.stopped else "Ctrl-C (KeyboardInterrupt)")
+        who = ("the `progress` callback" if prog is not None and prog.stopped
+               else "Ctrl-C (KeyboardInterrupt)")
         message = (f"The integration was stopped by {who} at t = {t_stop!r}; the samples "
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
-        message = message + watch.diagnosis()
+        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second)
     status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]
+    if options.get("project") is not None and len(t_out):  # samples inside steps too
+        y_out = _project_samples(options["project"], t_out, y_out)
     if fixed and stride > 1:
         keep = np.arange(0, len(t_out), stride)
         if keep[-1] != len(t_out) - 1:

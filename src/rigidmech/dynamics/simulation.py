@@ -573,11 +573,40 @@ class Simulation:
         names = list(self._names)
         return ["t", *names, *(f"{n}_dot" for n in names)]
 
-    def save(self, path) -> str:
+    def _units(self, units):
+        """The unit of each coordinate: `units` (by name) first, else rad for an angle of
+        rotation of a body's frame (or of a frame it is built from), else None."""
+        units = dict(units or {})
+        unknown = sorted(set(units) - set(self._names))
+        if unknown:
+            raise ArgumentError(f"`units` names {unknown}, which is not a coordinate; the "
+                                f"coordinates are {', '.join(self._names)}.")
+        angles = set()
+        system = getattr(self._eqs, "system", None) if self._eqs is not None else None
+        for body in (system.bodies if system is not None else ()):
+            frame = body.frame
+            while frame is not None:
+                angles.add(str(frame.angle))
+                frame = frame.parent
+        coords = self._eqs.coordinates if self._eqs is not None else ()
+        out = {}
+        for name, c in zip(self._names, coords or self._names, strict=False):
+            out[name] = units.get(name, "rad" if str(c) in angles else None)
+        for name in self._names:
+            out.setdefault(name, units.get(name))
+        return out
+
+    def save(self, path, *, units=None) -> str:
         """Write the samples to ``path``: ``.npz`` (arrays, names, parameters, status) or
         ``.csv`` (a header line of comments with the status and the parameters, then the
-        columns ``t [s]``, each coordinate, each rate ``<name>_dot``; a parameter given as a
-        callable is written as its repr). Returns the path.
+        columns ``t [s]``, each coordinate, each rate ``<name>_dot``, with their units where
+        known; a parameter given as a callable is written as its repr). Returns the path.
+
+        `units` (a dict by coordinate name, e.g. ``{"x": "m"}``) gives the unit of a
+        coordinate; its rate's is that unit per second. Without it, a coordinate that is the
+        angle of rotation of a body's frame (or of a frame it is built from) is in rad
+        (rate rad/s), the others have no unit in the header: the library does not know the
+        unit system of the model's constants.
 
         Examples
         --------
@@ -604,8 +633,9 @@ class Simulation:
             np.savez(text, t=self.t, q=self.q, u=self.u, meta=np.array(json.dumps(meta)),
                      **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(self._t_events)})
         else:
-            header = self._columns()
-            header[0] = "t [s]"
+            unit = self._units(units)
+            header = ["t [s]"] + [n + (f" [{unit[n]}]" if unit[n] else "") for n in self._names]
+            header += [f"{n}_dot" + (f" [{unit[n]}/s]" if unit[n] else "") for n in self._names]
             with open(text, "w", newline="") as fh:
                 fh.write("# rigidmech simulation " + json.dumps(meta) + "\n")
                 w = csv.writer(fh)

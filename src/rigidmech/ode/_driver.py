@@ -36,6 +36,11 @@ class Stops:
         self._end = float(t_span[1])
         self._sign = 1.0 if t_span[1] >= t_span[0] else -1.0
 
+    @property
+    def times(self):
+        """The stops, in order (the samples a method landing on them keeps)."""
+        return self._times
+
     def after(self, t):
         """The first stop strictly beyond `t` in the direction of integration, else the end."""
         times, sign = self._times, self._sign
@@ -164,7 +169,7 @@ class Recorder:
     """
 
     __slots__ = ("ts", "ys", "cs", "shape", "events", "form", "status", "message",
-                 "_last_full_end")
+                 "_last_full_end", "culprit")
 
     def __init__(self, t0, y0, shape, dense, events, form="power"):
         self.ts = [t0]
@@ -175,6 +180,8 @@ class Recorder:
         self.form = form
         self.status = 0
         self.message = "The integration reached the end of `t_span`."
+        #: where a run failed on a non-finite or complex value (see ``OdeResult.stats``)
+        self.culprit = None
 
     def accept(self, t_new, y_new, coeffs=None, exact=None):
         """Record one accepted step; return True if a terminal event fired.

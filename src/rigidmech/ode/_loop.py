@@ -46,17 +46,25 @@ The protocol (model: scipy's ``OdeSolver``):
 
 from __future__ import annotations
 
+import contextvars
 import math
+import warnings
 from typing import NamedTuple
 
 import numpy as np
+from numpy.exceptions import ComplexWarning
 
 from rigidmech._core.errors import ArgumentError
 
 from ._driver import Problem, Recorder, SampleRecorder, initial_step
 from ._warnings import stiffness_count
 
-__all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress"]
+__all__ = ["Capabilities", "StepResult", "Controller", "integrate", "check_progress",
+           "PROJECT"]
+
+#: The ``project(t, y) -> y`` of the run in progress (set by :func:`~rigidmech.ode.solve`
+#: around the method's call, read once by :func:`integrate`): a list ``[project, used]``.
+PROJECT = contextvars.ContextVar("rigidmech_ode_project", default=None)
 
 
 def check_progress(progress):
@@ -68,8 +76,8 @@ def check_progress(progress):
     True
     """
     if progress is not None and not callable(progress):
-        raise ArgumentError(f"`progress` must be a callable progress(t) or None; got "
-                            f"{progress!r}.")
+        raise ArgumentError(f"`progress` must be a callable progress(t), True (a progress "
+                            f"bar, through solve), False or None; got {progress!r}.")
     return progress
 
 SAFETY = 0.9
@@ -186,10 +194,12 @@ def _underflow_reason(err):
             "step down to the resolution of t (step size underflow), from the state")
 
 
-def _culprit(step, t_new):
+def _culprit(step, t_new, rec):
     """A sentence naming the first non-finite component of the last attempted step's
-    derivative (else of its state), or ''."""
-    for what, values in (("the derivative f(t, y)", step.f), ("the state", step.y)):
+    derivative (else of its state), or ''; the same facts kept as ``rec.culprit`` (a dict:
+    ``what`` "derivative" or "state", ``component``, ``value``, ``t``) for the result's
+    ``stats["culprit"]``."""
+    for what, values in (("derivative", step.f), ("state", step.y)):
         try:
             flat = np.asarray(values, dtype=float).reshape(-1)
         except (TypeError, ValueError):
@@ -197,9 +207,89 @@ def _culprit(step, t_new):
         bad = ~np.isfinite(flat)
         if bad.any():
             k = int(np.argmax(bad))
-            return (f" In the last attempted step, {what} was {flat[k]} in component {k} at "
+            rec.culprit = {"what": what, "component": k, "value": float(flat[k]),
+                           "t": float(t_new)}
+            name = "the derivative f(t, y)" if what == "derivative" else "the state"
+            return (f" In the last attempted step, {name} was {flat[k]} in component {k} at "
                     f"t = {float(t_new)!r}.")
     return ""
+
+
+def _probe(fun, t, y, h, shape):
+    """Where a failure starts, found on the failure path only (no cost otherwise): `fun` at
+    the last accepted state ``(t, y)``, at ``(t + h, y)`` and one Euler step of size `h`
+    beyond it. Returns the :func:`_culprit` dict (with ``complex``) of the first evaluation,
+    from a finite real state, whose output has a complex or a non-finite component, or None.
+
+    Examples
+    --------
+    >>> f = lambda t, y: np.array([y[0], 1j if t > 0.5 else 0.0])
+    >>> c = _probe(f, 0.4, [1.0, 0.0], 0.2, (2,))
+    >>> c["component"], c["complex"], c["t"]
+    (1, True, 0.6000000000000001)
+    """
+    inner, d = getattr(fun, "fun", None), getattr(fun, "d", None)
+    if inner is not None and isinstance(d, int):  # q'' = a(t, q) as y' = (v, a): a itself
+
+        def fun(t, y, _a=inner, _d=d):
+            return np.concatenate([y[_d:], np.asarray(_a(t, y[:_d].copy()))])
+
+    y = np.array(y, dtype=float).reshape(-1)
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        warnings.simplefilter("ignore")
+        try:
+            points = [(t, y), (t + h, y)]
+            for k, (tk, yk) in enumerate(points):
+                out = np.asarray(fun(tk, yk.reshape(shape).copy())).reshape(-1)
+                found = _bad_component(out, tk)
+                if found is not None:
+                    return found
+                if k == 0:
+                    points.append((t + h, y + h * out.real))
+        except Exception:  # noqa: BLE001 - a probe: the failure is reported without it
+            return None
+    return None
+
+
+def _bad_component(out, t):
+    """The first complex, else non-finite, component of `out` as a culprit dict, or None."""
+    if np.iscomplexobj(out):
+        imag = np.imag(out) != 0
+        if imag.any():
+            k = int(np.argmax(imag))
+            return {"what": "derivative", "component": k, "value": complex(out[k]),
+                    "t": float(t), "complex": True}
+        out = out.real
+    bad = ~np.isfinite(out)
+    if bad.any():
+        k = int(np.argmax(bad))
+        return {"what": "derivative", "component": k, "value": float(out[k]), "t": float(t),
+                "complex": False}
+    return None
+
+
+def _complex_failure(rec, culprit, t, y):
+    """End the run on a complex value of the right-hand side (status -1, `y` kept)."""
+    rec.fail("The right-hand side returned a complex value", t, y)
+    rec.culprit = culprit
+    rec.message += (f" It was {culprit['value']} in component {culprit['component']} at "
+                    f"t = {culprit['t']!r}; the methods integrate real equations only (a "
+                    "square root or a logarithm of a negative number?).")
+
+
+def _nonfinite_culprit(loop, step, t, y, t_new, rec):
+    """The sentence naming where a non-finite value started: the probe's evaluation from a
+    finite state if it finds one, else the last attempted step (:func:`_culprit`)."""
+    found = _probe(loop.fun, t, y, t_new - t, loop.shape)
+    if found is None or found["complex"]:
+        if found is not None:
+            rec.culprit = found
+            return (f" The right-hand side has a complex value ({found['value']}) in "
+                    f"component {found['component']} at t = {found['t']!r}.")
+        return _culprit(step, t_new, rec)
+    rec.culprit = found
+    return (f" Evaluated again from a finite state, the derivative f(t, y) was "
+            f"{found['value']} in component {found['component']} at t = {found['t']!r}.")
 
 
 class Run(NamedTuple):
@@ -234,8 +324,11 @@ def integrate(stepper, run, f0=None):
     direction = 1.0 if t_end > t0 else -1.0
     prob = Problem(run.fun, run.y0.shape)
     y0 = run.y0.reshape(-1).copy()
-    if run.t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
-        rec = SampleRecorder(t0, y0, prob.shape, run.events, run.t_eval, caps.dense_form,
+    t_eval = run.t_eval  # the stops a method lands on are its samples (rkn pairs, gbs)
+    if t_eval is None and run.stops is not None:
+        t_eval = run.stops.times
+    if t_eval is not None and not run.dense_output:  # memory ~ samples, not steps
+        rec = SampleRecorder(t0, y0, prob.shape, run.events, t_eval, caps.dense_form,
                              at_steps=run.stops is not None)
     else:
         rec = Recorder(t0, y0, prob.shape, run.dense_output, run.events, caps.dense_form)
@@ -253,24 +346,50 @@ def integrate(stepper, run, f0=None):
                              run.atol, t_end, run.max_step)
     else:
         h_abs = run.first_step
-    state = _Loop(stepper, run, rec, direction)
+    box = PROJECT.get()
+    project = None
+    if box is not None:
+        project, box[1] = box[0], True
+    state = _Loop(stepper, run, rec, direction, prob, project)
     try:
-        state.run(t0, y, f, h_abs)
+        with warnings.catch_warnings():  # a complex value cast to float raises, not warns
+            warnings.simplefilter("error", ComplexWarning)
+            state.run(t0, y, f, h_abs)
     except KeyboardInterrupt:  # everything computed so far is kept
         rec.interrupt("The integration was interrupted (KeyboardInterrupt)", state.t)
     nfev = prob.nfev + stepper.nfev + state.attempts * stepper.nfev_per_attempt
-    return rec.result(caps.name, nfev, state.nrej, stepper.stats())
+    stats = stepper.stats()
+    if rec.culprit is not None:
+        stats = {**stats, "culprit": rec.culprit}
+    return rec.result(caps.name, nfev, state.nrej, stats)
 
 
 class _Loop:
     """The state of the one loop (kept on an object so that an interruption finds it)."""
 
-    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts")
+    __slots__ = ("stepper", "run_", "rec", "direction", "t", "nrej", "attempts", "fun",
+                 "shape", "prob", "project")
 
-    def __init__(self, stepper, run, rec, direction):
+    def __init__(self, stepper, run, rec, direction, prob, project=None):
         self.stepper, self.run_, self.rec, self.direction = stepper, run, rec, direction
+        self.fun, self.shape, self.prob, self.project = prob.fun, prob.shape, prob, project
         self.t = run.t_span[0]
         self.nrej = self.attempts = 0
+
+    def projected(self, t, y_new):
+        """The state `y_new` projected by ``project(t, y)`` (a fresh flat ndarray), or None if
+        the projection is not finite (the step is then kept unprojected)."""
+        y = np.array(y_new, dtype=float)
+        out = np.array(self.project(t, y.reshape(self.shape)), dtype=float).reshape(-1)
+        if out.shape != y.shape:
+            raise ArgumentError(f"`project(t, y)` must return an array of the shape of y, "
+                                f"{self.shape}; got shape {np.shape(out)}.")
+        return out if np.isfinite(out).all() else None
+
+    def restart(self, t, y):
+        """The stepper restarted from the projected state `y` (its derivative evaluated)."""
+        prob = self.prob
+        return self.stepper.begin(prob, t, y, prob(t, y, np.empty_like(y)))
 
     def run(self, t, y, f, h_abs):
         """The loop; on any exit (an interruption too) ``t``, ``nrej`` and ``attempts`` hold
@@ -282,11 +401,13 @@ class _Loop:
         stiff = _Stiffness(stepper.capabilities, run.nstiff)
         nstiff, want = stiff.nstiff, rec.needs_dense
         attempt, progress, stops = stepper.attempt, run.progress, run.stops
+        project = self.project
         finite = getattr(stepper, "finite", None)  # None: the state is a list of floats
         accept = getattr(stepper, "accept", None)
         isfinite, nextafter, inf = math.isfinite, math.nextafter, math.inf
         t_goal = t_end if stops is None else stops.after(t)
         naccpt = nrej = extra = 0
+        t_new = t
         try:
             while direction * (t - t_end) < 0:
                 if naccpt >= max_steps:
@@ -314,7 +435,7 @@ class _Loop:
                     nrej += 1
                 if not accepted:
                     rec.fail(_underflow_reason(err), t, y)
-                    rec.message += _culprit(step, t_new)
+                    rec.message += _nonfinite_culprit(self, step, t, y, t_new, rec)
                     return
                 if not (isfinite(sum(y_new)) if finite is None else finite(step)):
                     extra = 1
@@ -322,18 +443,21 @@ class _Loop:
                     rec.fail("The right-hand side returned non-finite values (nan or inf) at "
                              "the new state" if state_ok else "The state became non-finite",
                              t_new, y_new)
-                    rec.message += _culprit(step, t_new)
+                    rec.message += _nonfinite_culprit(self, step, t, y, t_new, rec)
                     return
                 naccpt += 1
                 if nstiff and (naccpt % nstiff == 0 or stiff.iasti > 0):  # stiff.due, inline
                     stiff.check(stepper.hlamb(h_abs, step), t_new)
+                y_p = None if project is None else self.projected(t_new, y_new)
                 if want:
                     y_rec, coeffs, exact = stepper.dense(t, y, h, step)
-                    stop = rec.accept(t_new, y_rec, coeffs, exact)
+                    stop = rec.accept(t_new, y_rec if y_p is None else y_p, coeffs, exact)
                 else:
-                    stop = rec.accept(t_new, y_new)
+                    stop = rec.accept(t_new, y_new if y_p is None else y_p)
                 if accept is not None:
                     accept(step)
+                if y_p is not None:
+                    y_new, f_new = self.restart(t_new, y_p)
                 t, y, f = t_new, y_new, f_new
                 if stop:
                     return
@@ -342,5 +466,11 @@ class _Loop:
                 if progress is not None and progress(t) is False:
                     rec.interrupt("The integration was stopped by the `progress` callback", t)
                     return
+        except (TypeError, ComplexWarning):  # complex values in the step (cast or summed)
+            found = _probe(self.fun, t, y, t_new - t, self.shape)
+            if found is None or not found["complex"]:
+                raise
+            extra = 1
+            _complex_failure(rec, found, t, y)
         finally:
             self.t, self.nrej, self.attempts = t, nrej, naccpt + nrej + extra

@@ -45,7 +45,10 @@ class OdeResult:
     y_events : list of ndarray
         For each event function, the states where it fired.
     stats : dict
-        Method-specific extra counters (``njev``, ``nlu``, order history, ...).
+        Method-specific extra counters (``njev``, ``nlu``, order history, ...). After a
+        failure on a non-finite or complex value, the methods of the one loop add
+        ``stats["culprit"]``: a dict with ``what`` ("derivative" or "state"), ``component``
+        (flat index), ``value`` and ``t``.
     t_stop : float or None
         The time the integration reached: the end of ``t_span``, the time of a terminal
         event, or, after a failure or an early stop, the last step accepted (the time the

@@ -44,6 +44,8 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
 from ._dense import DenseSolution
+from ._loop import PROJECT
+from ._progress import progress_option
 from ._result import OdeResult
 from .events import EventTracker
 from .runge_kutta import fixed_step_method
@@ -296,7 +298,8 @@ def _restrict(t_eval, t, sol):
 def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | None = None,
           rtol: float = 1e-6, atol=1e-9, t_eval=None, dense_output: bool = False, events=None,
           first_step: float | None = None, max_step: float = math.inf,
-          max_steps: int = 1_000_000, args: tuple = (), **options) -> OdeResult:
+          max_steps: int = 1_000_000, args: tuple = (), project: Callable | None = None,
+          **options) -> OdeResult:
     """Integrate ``y' = f(t, y)`` (or ``q'' = a(t, q)``) from ``t_span[0]`` to ``t_span[1]``.
 
     The equations of motion of Parts IV-V (book, ch. 26-27) by Runge-Kutta methods with fixed
@@ -334,11 +337,25 @@ def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | No
         Largest number of steps (an adaptive run stops there, status -1; a fixed step is refused).
     args : tuple
         Extra arguments passed to `fun`.
+    project : callable, optional
+        ``project(t, y) -> y``: a projection of the state applied after every accepted step
+        (e.g. onto the constraints of a mechanism, whose integration drifts off them). The
+        next step starts from the projected state (its derivative evaluated once more, one
+        evaluation of `fun` per step); the samples at the steps' ends, ``t_stop``/``y_stop``
+        and the states given to event functions at the steps' ends are the projected
+        ones, while the dense output *between* two steps (``sol``, samples of ``t_eval``
+        inside a step, event location) is that of the unprojected step. A non-finite
+        projection is ignored for that step; ``radau`` forms its Jacobian again after each
+        projected step. Only for the first-order methods of the one integration loop
+        (``dopri5``, ``dop853``, ``bs32``, ``gbs``, ``radau``); refused by the others.
     **options
-        Options of the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for ``"radau"``); one
-        it does not take is refused. Every built-in method takes ``progress``, a callable
-        ``progress(t)`` called after every step: a returned False stops the run with status 2
-        and the steps made so far, as Ctrl-C does.
+        Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for
+        ``"radau"``), passed on to it; an option the method does not take is refused. Every
+        built-in method takes ``progress``: a callable ``progress(t)`` called after every
+        step (a returned False stops the run with status 2 and the steps made so far, as
+        Ctrl-C does for every built-in method); ``progress=True`` shows a progress bar
+        (tqdm) on stderr once the run has lasted 2 s. Either is checked once per accepted
+        step, never per evaluation of `fun`.
 
     Returns
     -------
@@ -368,10 +385,44 @@ def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | No
     run = validate(fun, t_span, y0, method, step=step, rtol=rtol, atol=atol, t_eval=t_eval,
                    dense_output=dense_output, events=events, first_step=first_step,
                    max_step=max_step, max_steps=max_steps, args=args, options=options)
-    if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
-        return _finish(_zero_length(run), run)
-    _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
-    return _finish(_run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run), run)
+    box = _projection(project, run)
+    bar = None  # the bar made here for progress=True, closed at the end
+    if "progress" in run.options:  # checked once per accepted step
+        given = run.options["progress"]
+        run.options["progress"] = progress_option(given, (run.t0, run.t1))
+        bar = run.options["progress"] if given is True else None
+    try:
+        if run.t0 == run.t1:  # nothing to integrate: y0 itself, as scipy's solve_ivp returns
+            return _finish(_zero_length(run), run)
+        _check_fun_output(run.fun, run.t0, run.y, run.entry.kind)
+        token = PROJECT.set(box)
+        try:
+            res = _run_fixed(run) if run.entry.kind in _FIXED else _run_adaptive(run)
+        finally:
+            PROJECT.reset(token)
+        if box is not None and not box[1]:
+            raise ArgumentError(f"`project` is for the methods of the integration loop; "
+                                f"method {run.entry.name!r} has its own loop.")
+        return _finish(res, run)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def _projection(project, run):
+    """The box [project, used] the loop reads, or None; `project` checked against the method."""
+    if project is None:
+        return None
+    if not callable(project):
+        raise ArgumentTypeError(f"`project` must be a callable project(t, y) -> y or "
+                                f"None; got {project!r}.")
+    if run.entry.kind in _FIXED:
+        raise ArgumentError(f"`project` is for the methods of the integration loop; "
+                            f"method {run.entry.name!r} has a fixed step.")
+    if run.entry.kind in _SECOND_ORDER:  # its stepper keeps the acceleration it made
+        raise ArgumentError(f"`project` is for first-order methods; method "
+                            f"{run.entry.name!r} integrates q'' = a(t, q).")
+    return [project, False]
 
 
 def _finish(res, run):
