@@ -300,7 +300,8 @@ class System(LinkedParameters):
         Parameters
         ----------
         parent, child : Body or the Galilean Frame (parent only)
-        joint : a joint of ``rm.joints``, a RollingContact or a GearMesh
+        joint : a joint of ``rm.joints``, a RollingContact, a GearMesh, a KnifeEdge or a
+            FrictionContact
         meets : Point or Frame, optional
             For a joint closing a loop: the point of ``child`` that meets ``joint.at``; or a
             frame of ``child`` whose origin meets ``joint.at`` and whose axes (i, j, k) meet

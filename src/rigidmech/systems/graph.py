@@ -85,7 +85,8 @@ def _check_connection(connection):
     if not callable(getattr(connection, "action_torsor", None)):
         raise ArgumentTypeError(
             "`connection` must have an action_torsor(label) method (a joint of rm.joints, a "
-            f"RollingContact, a GearMesh); got {type(connection).__name__}.")
+            "RollingContact, a GearMesh, a KnifeEdge, a FrictionContact); got "
+            f"{type(connection).__name__}.")
 
 
 class Mechanism:
