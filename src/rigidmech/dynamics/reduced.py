@@ -156,8 +156,8 @@ class ReducedEquations:
         >>> wheel = rm.Body("wheel", frame=R1, mass=m, centre=C,
         ...                 inertia=rm.inertia.disk(m, r, axis=R1.k, centre=C))
         >>> s = rm.System(galilean=R0)
-        >>> contact = rm.kinematics.Contact.between(R1, rm.kinematics.Circle(C, r, normal=R0.k),
-        ...                                         R0, rm.Line(R0.origin, Ri.i))
+        >>> contact = rm.kinematics.ContactKinematics.between(
+        ...     R1, rm.kinematics.Circle(C, r, normal=R0.k), R0, rm.Line(R0.origin, Ri.i))
         >>> s.connect(R0, wheel, rm.actions.RollingContact(contact))
         >>> s.act(rm.gravity(-g * R0.j))
         >>> red = s.equations_of_motion().reduced(independent=[x])
