@@ -40,6 +40,7 @@ from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 from .linked import LinkedParameters
+from .reference import _placing as _frame_exprs
 from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
@@ -58,23 +59,6 @@ def _coordinates_in(expr_iterable):
             if is_coordinate(a) and a not in found:
                 found.append(a)
     return found
-
-
-def _frame_exprs(frame):
-    """The expressions that place ``frame``: from the root down, for each frame its origin's
-    position (components in order) and then its rotation from its parent."""
-    chain = []
-    f = frame
-    while f is not None:
-        chain.append(f)
-        f = f.parent
-    out = []
-    for g in reversed(chain):
-        out.extend(x for _, c in g.origin.position.parts for x in c)
-        out.append(g.angle)
-        if g._matrix is not None:
-            out.extend(x for row in g._matrix for x in row)
-    return out
 
 
 def _mechanical_energy(galilean, solids, bodies, actions):
