@@ -26,25 +26,16 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from ..kinematics import Solid
 from ..kinematics.constraints import VelocityConstraint
 from ..kinematics.contact import ContactKinematics
+from ..kinematics.solid import as_solid as _solid
 from ..kinematics.transmissions import GearPair
 from ..torsors import Torsor
-from ..vectors import Frame, Point, Vector
+from ..vectors import Point, Vector
 from ..vectors.points import check_point
 from .contact_laws import Coulomb, PivotingResistance, RollingResistance
 
 __all__ = ["RollingContact", "GearMesh", "FrictionContact"]
-
-
-def _solid(x, argument):
-    if isinstance(x, Solid):
-        return x
-    if isinstance(x, Frame):
-        return Solid(x.name, x)
-    raise ArgumentTypeError(
-        f"`{argument}` must be a Solid, a Body or a Frame; got {type(x).__name__}.")
 
 
 class RollingContact:

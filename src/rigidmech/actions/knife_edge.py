@@ -28,22 +28,13 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from .._core.symbolic import nonzero_somewhere
-from ..kinematics import Solid
 from ..kinematics.constraints import VelocityConstraint
+from ..kinematics.solid import as_solid as _solid
 from ..torsors import Torsor
-from ..vectors import Frame, Point, Vector
+from ..vectors import Point, Vector
 from ..vectors.points import check_point
 
 __all__ = ["KnifeEdge"]
-
-
-def _solid(x, argument):
-    if isinstance(x, Solid):
-        return x
-    if isinstance(x, Frame):
-        return Solid(x.name, x)
-    raise ArgumentTypeError(
-        f"`{argument}` must be a Solid, a Body or a Frame; got {type(x).__name__}.")
 
 
 def _zero(e) -> bool:

@@ -26,22 +26,14 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.deprecation import deprecated_aliases
-from .._core.errors import ArgumentError, ArgumentTypeError
-from ..vectors import Frame, Point, Vector
+from .._core.errors import ArgumentError
+from ..vectors import Point, Vector
 from ..vectors.points import check_point
 from .solid import Solid
+from .solid import as_solid as _solid
 from .surfaces import _unit, _vector, contact_geometry
 
 __all__ = ["ContactKinematics"]
-
-
-def _solid(x, argument):
-    if isinstance(x, Solid):
-        return x
-    if isinstance(x, Frame):
-        return Solid(x.name, x)
-    raise ArgumentTypeError(
-        f"`{argument}` must be a Solid, a Body or a Frame; got {type(x).__name__}.")
 
 
 def _basis_vectors(solids):

@@ -26,6 +26,17 @@ from ..vectors.points import check_point
 __all__ = ["Solid", "KinematicTorsor", "kinematic_torsor"]
 
 
+def as_solid(x, argument):
+    """``x`` as a :class:`Solid`: a Solid (a Body is one) as it is, a Frame as the solid it
+    is fixed in; anything else refused naming ``argument``."""
+    if isinstance(x, Solid):
+        return x
+    if isinstance(x, Frame):
+        return Solid(x.name, x)
+    raise ArgumentTypeError(
+        f"`{argument}` must be a Solid, a Body or a Frame; got {type(x).__name__}.")
+
+
 def _check_frame(frame, argument):
     if not isinstance(frame, Frame):
         raise ArgumentTypeError(f"`{argument}` must be a Frame; got {type(frame).__name__}.")
