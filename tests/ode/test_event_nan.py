@@ -3,6 +3,7 @@ run is not called a success, and the message names the event and the time."""
 
 import math
 import re
+import warnings
 
 import numpy as np
 import pytest
@@ -64,3 +65,33 @@ def test_a_non_finite_right_hand_side_names_its_component(method):
                       r.message)
     assert found, r.message
     assert r.t_stop < float(found.group(1)) <= 3.0 and float(found.group(1)) >= 1.5 - 1e-8
+
+
+def test_adams_names_a_non_finite_right_hand_side_not_underflow_alone():
+    """adams has its own outer loop: a nan of the right-hand side must not be reported as a
+    bare step size underflow either; the component and t are named (stats["culprit"])."""
+
+    def f(t, y):
+        return np.array([1.0, 1.0 if y[0] < 1.5 else np.nan])
+
+    r = ode.solve(f, (0.0, 3.0), [0.0, 0.0], method="adams", rtol=1e-6)
+    assert r.status == -1
+    assert "The right-hand side returned non-finite values (nan or inf)" in r.message
+    found = re.search(r"the derivative f\(t, y\) was nan in component 1 at t = (\S+?)\.( |$)",
+                      r.message)
+    assert found, r.message
+    assert r.stats["culprit"]["component"] == 1 and not r.stats["culprit"]["complex"]
+    assert r.t_stop < float(found.group(1)) <= 3.0 and float(found.group(1)) >= 1.5 - 1e-8
+
+
+def test_adams_names_a_complex_right_hand_side_after_t0():
+    def f(t, y):
+        out = np.array([y[1], -y[0]])
+        return out + np.array([0.0, 1e-3j]) if t > 0.5 else out
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # not one ComplexWarning either
+        r = ode.solve(f, (0.0, 2.0), [1.0, 0.0], method="adams", rtol=1e-10, atol=1e-12)
+    assert r.status == -1 and "complex" in r.message and "component 1" in r.message
+    assert r.stats["culprit"]["complex"] and 0.0 < r.t_stop <= 0.5 + 1e-12
+    np.testing.assert_allclose(r.y[0], np.cos(r.t), atol=1e-8)  # the motion is kept

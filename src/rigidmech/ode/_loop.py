@@ -281,15 +281,30 @@ def _nonfinite_culprit(loop, step, t, y, t_new, rec):
     """The sentence naming where a non-finite value started: the probe's evaluation from a
     finite state if it finds one, else the last attempted step (:func:`_culprit`)."""
     found = _probe(loop.fun, t, y, t_new - t, loop.shape)
-    if found is None or found["complex"]:
-        if found is not None:
-            rec.culprit = found
-            return (f" The right-hand side has a complex value ({found['value']}) in "
-                    f"component {found['component']} at t = {found['t']!r}.")
+    if found is None:
         return _culprit(step, t_new, rec)
+    return _found_sentence(found, rec)
+
+
+def _found_sentence(found, rec):
+    """The sentence for a culprit found by :func:`_probe` (kept as ``rec.culprit``)."""
     rec.culprit = found
+    if found["complex"]:
+        return (f" The right-hand side has a complex value ({found['value']}) in "
+                f"component {found['component']} at t = {found['t']!r}.")
     return (f" Evaluated again from a finite state, the derivative f(t, y) was "
             f"{found['value']} in component {found['component']} at t = {found['t']!r}.")
+
+
+def underflow_failure(rec, fun, t, y, h, shape):
+    """End a run whose step fell below the resolution of t (for a loop that sees no error
+    estimate, adams): the probe from the last accepted state tells a non-finite or complex
+    right-hand side, named with its component, from a plain underflow."""
+    y = np.array(y, dtype=float)
+    found = _probe(fun, t, y, h, shape)
+    rec.fail(_underflow_reason(0.0 if found is None else math.nan), t, y)
+    if found is not None:
+        rec.message += _found_sentence(found, rec)
 
 
 class Run(NamedTuple):

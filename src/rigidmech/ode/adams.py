@@ -64,16 +64,18 @@ order, chosen from the largest error estimates over the batch.
 from __future__ import annotations
 
 import math
+import warnings
 from fractions import Fraction
 
 import numpy as np
+from numpy.exceptions import ComplexWarning
 
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
 from ._driver import Recorder, SampleRecorder, flat_tolerance
 from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
-from ._loop import _underflow_reason, check_progress
+from ._loop import _complex_failure, _probe, check_progress, underflow_failure
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
 from .multistep import adams_gamma
@@ -791,7 +793,10 @@ class _Run:
                 single = True
             code, y_old = self.attempt(single)
             if code is None:
-                rec.fail(_underflow_reason(0.0), self.t, np.array(self.y))
+                # probed over the last accepted step's length (the failing h has underflowed)
+                ts = self.steps_t
+                h = ts[-1] - ts[-2] if len(ts) >= 2 and ts[-1] != ts[-2] else self.h
+                underflow_failure(rec, self.fun, self.t, self.y, h, rec.shape)
                 return
             if code == RUN_NONFINITE:
                 self.nfev += 2
@@ -926,10 +931,20 @@ def _integrate(fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
     rec, start = started
     run = _Run(fun, rec, start, rtol, max_step, max_steps, max_order, nstiff, progress)
     try:
-        run.loop()
+        with warnings.catch_warnings():  # a complex value cast to float raises, not warns
+            warnings.simplefilter("error", ComplexWarning)
+            run.loop()
     except KeyboardInterrupt:
         run.interrupted()
-    return rec.result("adams", run.nfev, run.nrej, run.stats())
+    except (TypeError, ComplexWarning):  # complex values in a step (cast or compared)
+        found = _probe(fun, run.t, np.array(run.y, dtype=float), run.h, rec.shape)
+        if found is None or not found["complex"]:
+            raise
+        _complex_failure(rec, found, run.t, np.array(run.y, dtype=float))
+    stats = run.stats()
+    if rec.culprit is not None:
+        stats["culprit"] = rec.culprit
+    return rec.result("adams", run.nfev, run.nrej, stats)
 
 
 _registry.register("adams", adams, kind="adaptive", capabilities=("t_eval",))
