@@ -95,3 +95,20 @@ def test_adams_names_a_complex_right_hand_side_after_t0():
     assert r.status == -1 and "complex" in r.message and "component 1" in r.message
     assert r.stats["culprit"]["complex"] and 0.0 < r.t_stop <= 0.5 + 1e-12
     np.testing.assert_allclose(r.y[0], np.cos(r.t), atol=1e-8)  # the motion is kept
+
+
+@pytest.mark.parametrize("method", ["euler", "rk4", "ab4", "abm4"])
+def test_a_fixed_step_run_names_the_non_finite_component(method):
+    """A fixed step that meets a nan of the right-hand side says which component and when,
+    not only that the state became non-finite."""
+
+    def f(t, y):
+        return np.array([1.0, 1.0 if y[0] < 1.5 else np.nan])
+
+    r = ode.solve(f, (0.0, 3.0), [0.0, 0.0], method=method, step=0.01)
+    assert r.status == -1 and "The state became non-finite" in r.message
+    found = re.search(r"the derivative f\(t, y\) was nan in component 1 at t = (\S+?)\.( |$)",
+                      r.message)
+    assert found, r.message
+    assert r.stats["culprit"]["component"] == 1
+    assert 1.5 - 1e-9 <= float(found.group(1)) <= 1.5 + 0.02 + 1e-9

@@ -18,6 +18,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from ._dense import DenseSolution, hermite_coefficients
 from ._driver import fail_message
+from ._loop import _found_sentence, _probe
 from ._result import OdeResult
 
 __all__ = ["check_fixed", "FixedRecorder", "fixed_loop"]
@@ -96,7 +97,7 @@ class FixedRecorder:
     """
 
     __slots__ = ("ts", "ys", "fs", "dense", "save_every", "status", "message", "shape",
-                 "coefficients")
+                 "coefficients", "culprit")
 
     def __init__(self, t0, y0, f0, save_every, dense, shape=None, coefficients=None):
         self.ts = [t0]
@@ -108,6 +109,7 @@ class FixedRecorder:
         self.message = "The integration reached the end of `t_span`."
         self.shape = y0.shape if shape is None else shape
         self.coefficients = coefficients or hermite_coefficients
+        self.culprit = None  # where a non-finite right-hand side was found (fixed_loop)
 
     def add(self, t, y, f=None):
         """Record the state `y` (a fresh array or list, kept) at `t`, with `f` if dense."""
@@ -134,7 +136,8 @@ class FixedRecorder:
         return OdeResult(
             t=t, y=y, nfev=int(nfev), nsteps=int(nsteps),
             nrejected=0, status=self.status, message=self.message, method=method, sol=sol,
-            stats=dict(stats or {}), t_stop=float(t[-1]), y_stop=Y[-1].copy(),
+            stats={**(stats or {}), **({"culprit": self.culprit} if self.culprit else {})},
+            t_stop=float(t[-1]), y_stop=Y[-1].copy(),
         )
 
 
@@ -150,7 +153,8 @@ def _list_finite(y):
     return math.isfinite(sum(y))
 
 
-def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=None):
+def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=None,
+               fun=None):
     """The one loop of the fixed-step methods: `nsteps` steps of size `h` from `t0`.
 
     ``advance(t, h) -> (y, f)`` makes the step from ``t = t0 + (i - 1) h`` (the method keeps
@@ -162,8 +166,10 @@ def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=No
     (status 2; both keep everything computed so far, the last step made included). The time
     of step ``i`` is ``t0 + i h``; the last one is `t1` if given.
 
-    `finite(y)` defaults to a check of the sum of an array. Returns the number of steps
-    made.
+    `finite(y)` defaults to a check of the sum of an array. Given the right-hand side `fun`
+    of y' = f(t, y), a non-finite state is explained by evaluating it again from the last
+    finite state (a nan or complex component of f named, ``stats["culprit"]``). Returns the
+    number of steps made.
 
     Examples
     --------
@@ -190,6 +196,8 @@ def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=No
                 bad = y if isinstance(y, np.ndarray) else np.array(y, dtype=float)
                 rec.status = -1
                 rec.message = fail_message("The state became non-finite", t, bad, rec.shape)
+                if fun is not None:
+                    _explain(rec, fun, t_prev, rec.ys[-1] if y_last is None else y_last, h)
                 return i - 1
             if every == 1 or i % every == 0 or i == nsteps:
                 if dense:
@@ -207,6 +215,14 @@ def fixed_loop(advance, rec, t0, h, nsteps, *, t1=None, progress=None, finite=No
         _interrupt(rec, "The integration was interrupted (KeyboardInterrupt)", t_prev)
         return i - 1
     return nsteps
+
+
+def _explain(rec, fun, t, y, h):
+    """Name the component of `fun` that is not finite (or complex) near the last finite
+    state ``(t, y)``, on the failure path only (:func:`rigidmech.ode._loop._probe`)."""
+    found = _probe(fun, t, np.asarray(y, dtype=float).reshape(-1), h, rec.shape)
+    if found is not None:
+        rec.message += _found_sentence(found, rec)
 
 
 def _keep(rec, t, y, f):

@@ -224,7 +224,7 @@ def _run(fun, t_span, y0, step, order, corrector, max_steps, save_every, dense_o
 
     # overflow to inf/nan is reported in the result (status -1), not raised as a warning
     with np.errstate(over="ignore", invalid="ignore"):
-        done = fixed_loop(advance, rec, t0, h, nsteps, progress=progress)
+        done = fixed_loop(advance, rec, t0, h, nsteps, progress=progress, fun=fun)
     return rec.result(name, box["nfev"], done, stats={"step": abs(h), "order": order})
 
 

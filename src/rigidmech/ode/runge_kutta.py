@@ -67,11 +67,11 @@ def integrate_fixed(tableau, fun, t_span, y0, *, step, max_steps=None,
         if type(f0) is np.ndarray and f0.shape == shape and f0.dtype == np.float64:
             advance, stages = _float_steps(tableau, fun, y0, f0)
             done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress,
-                              finite=_list_finite)
+                              finite=_list_finite, fun=fun)
             attempted = done + (rec.status == -1)  # a non-finite step was made, not kept
             return rec.result(tableau.name, max(1, attempted * stages), done)
     advance, nfev = _array_steps(tableau, Problem(fun, shape), y0, f0, h)
-    done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress)
+    done = fixed_loop(advance, rec, t0, h, nsteps, t1=t1, progress=progress, fun=fun)
     return rec.result(tableau.name, nfev(), done)
 
 
