@@ -34,26 +34,7 @@ def sleigh(a=None, *, gravity=True):
 def sleigh_kane():
     """The same sleigh with KanesMethod: u_i = q_i' for (x, y, theta), the speed of y
     dependent, the lateral condition as the velocity constraint."""
-    q = me.dynamicsymbols("x y theta")
-    u = me.dynamicsymbols("ux uy utheta")
-    x, y, th = q
-    m, r, g = sp.symbols("m r g", positive=True)
-    a = sp.Symbol("a", real=True)
-    N = me.ReferenceFrame("N")
-    B = N.orientnew("B", "Axis", (th, N.z))
-    B.set_ang_vel(N, u[2] * N.z)
-    O = me.Point("O")
-    O.set_vel(N, 0)
-    G = O.locatenew("G", x * N.x + y * N.y)
-    G.set_vel(N, u[0] * N.x + u[1] * N.y)
-    P = G.locatenew("P", -a * B.x)
-    P.v2pt_theory(G, N, B)
-    inertia = me.inertia(B, m * r**2 / 4, m * r**2 / 4, m * r**2 / 2)
-    body = me.RigidBody("sleigh", G, B, m, (inertia, G))
-    kane = me.KanesMethod(N, q_ind=list(q), u_ind=[u[0], u[2]], u_dependent=[u[1]],
-                          kd_eqs=[qi.diff() - ui for qi, ui in zip(q, u, strict=True)],
-                          velocity_constraints=[P.vel(N).dot(B.y)])
-    kane.kanes_equations([body], [(G, -m * g * N.z)])
+    kane, q, u, (m, r, g, a, _) = _kane_sleigh(0, 0)
     return kane, q, u, (m, r, g, a)
 
 
@@ -79,11 +60,17 @@ def sleigh_on_incline(beta):
 
 def sleigh_on_incline_kane(beta):
     """The same with KanesMethod (u = q', the speed of y dependent)."""
+    return _kane_sleigh(beta, sp.Symbol("b", real=True))
+
+
+def _kane_sleigh(beta, b):
+    """The sleigh with KanesMethod on a plane inclined by beta about N.x, the blade a behind
+    G and b to its left; returns (kane, q, u, (m, r, g, a, b))."""
     q = me.dynamicsymbols("x y theta")
     u = me.dynamicsymbols("ux uy utheta")
     x, y, th = q
     m, r, g = sp.symbols("m r g", positive=True)
-    a, b = sp.symbols("a b", real=True)
+    a = sp.Symbol("a", real=True)
     N = me.ReferenceFrame("N")
     Ni = N.orientnew("Ni", "Axis", (beta, N.x))
     B = Ni.orientnew("B", "Axis", (th, Ni.z))
