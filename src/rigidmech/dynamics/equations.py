@@ -11,45 +11,24 @@ symbols stand for q and q' only inside the compiled code.
 Functions of time that are not parameters of situation, such as a force ``F(t)`` or a control
 torque ``u(t)``, are the *inputs* of the equations: their values are given with the
 parameters' (a number, or a Python callable of t).
+
+Developers: this module holds the value type; the compiled world is in
+:mod:`rigidmech.dynamics._compiled`, the symbolic forms (arguments read, symbolic
+accelerations, printing) in :mod:`rigidmech.dynamics._forms`, the entry of ``simulate`` in
+:mod:`rigidmech.dynamics._simulate` (see "Where each concern lives" in the API docs).
 """
 
 from __future__ import annotations
 
-import logging
-
-import numpy as np
+import numpy as np  # noqa: F401 (the doctest of simulate uses np)
 import sympy as sp
 
-from .. import ode
-from .._core.compile import compile_linear_solve
-from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
-from .._core.symbolic import atoms_shared, xreplace_shared
-from ..vectors import t as _t
-from ._singularities import warn_near_singularities
+from . import _compiled, _forms, _simulate
+from ._compiled import coordinate_name as _name
 from .simulation import Simulation
 
 __all__ = ["EquationsOfMotion", "Simulation"]
 
-_log = logging.getLogger("rigidmech")
-
-
-def _name(q):
-    """The name of a coordinate: ``q`` for q(t) or for a plain symbol q."""
-    return q.func.__name__ if isinstance(q, sp.core.function.AppliedUndef) else q.name
-
-
-def _is_function_of_time(q):
-    return isinstance(q, sp.core.function.AppliedUndef) and q.args == (_t,)
-
-
-
-def _trouble(fun, exc, t, shape):
-    """An error of the right-hand side during a simulation: kept (the first one) in
-    ``fun.trouble`` with its time, and nan returned so that the solver stops there and keeps
-    the motion computed so far (the error is named in the simulation's message)."""
-    if not fun.trouble:
-        fun.trouble.append((f"{type(exc).__name__}: {exc}", float(t)))
-    return np.full(shape, np.nan)
 
 class EquationsOfMotion:
     """M(q) q'' = f(q, q', t), free of connection unknowns (ch. 20.2, 27.2.1).
@@ -120,62 +99,15 @@ class EquationsOfMotion:
     def __init__(self, *, coordinates, mass_matrix, forcing, energy=None, parameters=None,
                  q=None, u=None, model_parameters=None, singular_sets=None,
                  kinetic_energy=None, system=None, constraints=None):
-        self._coordinates = tuple(coordinates)
+        (self._coordinates, self._M, self._f, self._u, self._a, self._energy, self._params,
+         self._inputs, input_derivatives) = _forms.read(
+            coordinates, mass_matrix, forcing, energy, parameters, q, u, constraints)
+        self._q = self._coordinates
         self._constraints = constraints
-        n = len(self._coordinates)
-        for c in self._coordinates:
-            if not (_is_function_of_time(c) or isinstance(c, sp.Symbol)):
-                raise ArgumentTypeError(
-                    f"`coordinates` must be functions of time q(t) (rm.coordinates or "
-                    f"dynamicsymbols) or plain symbols; got {c!r}.")
-        self._M = sp.ImmutableMatrix(mass_matrix)
-        self._f = sp.ImmutableMatrix(forcing)
-        if self._M.shape != (n, n) or self._f.shape != (n, 1):
-            raise ArgumentError(
-                f"`mass_matrix` must be {n}x{n} and `forcing` {n}x1; got {self._M.shape} "
-                f"and {self._f.shape}.")
-        if q is not None and len(tuple(q)) != n or u is not None and len(tuple(u)) != n:
-            raise ArgumentError(f"`q` and `u` must hold {n} symbols, one per coordinate.")
-        rates, accs, back = [], [], {}
-        for k, c in enumerate(self._coordinates):
-            if isinstance(c, sp.Symbol):
-                if u is None:
-                    raise ArgumentError(
-                        f"`u` must name the rates of the plain-symbol coordinates; got none "
-                        f"for {c}.")
-                rates.append(tuple(u)[k])
-                accs.append(None)
-            else:
-                rates.append(sp.Derivative(c, _t))
-                accs.append(sp.Derivative(c, (_t, 2)))
-            if q is not None and tuple(q)[k] != c:
-                back[tuple(q)[k]] = c
-            if u is not None and tuple(u)[k] != rates[-1]:
-                back[tuple(u)[k]] = rates[-1]
-        self._q, self._u, self._a = self._coordinates, tuple(rates), tuple(accs)
-        if back:  # expressions written with stand-in symbols: back to the user's q(t)
-            memo = {}
-            self._M = sp.ImmutableMatrix(n, n, xreplace_shared(list(self._M), back, memo))
-            self._f = sp.ImmutableMatrix(n, 1, xreplace_shared(list(self._f), back, memo))
-            if isinstance(energy, sp.Basic):
-                energy = xreplace_shared([energy], back, memo)[0]
-        self._energy = energy
-        extra = [] if constraints is None else (
-            list(constraints.jacobian) + list(constraints.stabilized_bias()))
-        symbols, functions, derivatives = atoms_shared(list(self._M) + list(self._f) + extra)
-        own = {x for x in self._q + self._u if isinstance(x, sp.Symbol)}
-        if parameters is None:
-            free = symbols - own - {_t}
-        else:
-            free = set(parameters)
-        self._params = tuple(sorted(free, key=lambda s: s.name))
-        coords = set(self._coordinates)
-        self._inputs = tuple(sorted(functions - coords, key=str))
         self._model = model_parameters
         self._kinetic = kinetic_energy
         self._system = system
-        self._cache = {"input_derivatives": tuple(sorted(
-            (d for d in derivatives if d.expr not in coords), key=str))}
+        self._cache = {"input_derivatives": input_derivatives}
         self._singular = singular_sets
 
     @property
@@ -306,16 +238,7 @@ class EquationsOfMotion:
     def accelerations(self, simplify: bool = False) -> sp.ImmutableMatrix:
         """q'' = M^-1 f symbolically (small systems: the expressions grow fast); with
         constraints, the first n unknowns of the augmented system."""
-        if self._constraints is not None:
-            c = self._constraints
-            n, m = len(self._q), len(c)
-            K = sp.BlockMatrix([[self._M, c.jacobian.T],
-                                [c.jacobian, sp.zeros(m, m)]]).as_explicit()
-            sol = K.LUsolve(sp.Matrix(list(self._f) + list(c.bias)))
-            acc = sol[:n, :]
-            return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
-        acc = self._M.LUsolve(self._f)
-        return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
+        return _forms.accelerations(self, simplify)
 
     def count_ops(self) -> int:
         """Number of operations in M and f as compiled, q and q' being plain symbols
@@ -326,98 +249,21 @@ class EquationsOfMotion:
     # -- the compiled world -------------------------------------------------------------
     def _stand_ins(self):
         """Plain symbols for q, q', q'' and the inputs inside compiled code, and the rule that
-        puts them in place of the user's q(t), Derivative(q(t), t), ... (Dummy symbols: no
-        clash with a constant of the same name)."""
-        if "stand_ins" not in self._cache:
-            rule = {}
-            q_s, u_s, a_s = [], [], []
-            for q, u, a in zip(self._q, self._u, self._a, strict=True):
-                name = _name(q)
-                qs = q if isinstance(q, sp.Symbol) else sp.Dummy(name, real=True)
-                us = u if isinstance(u, sp.Symbol) else sp.Dummy(name + "_dot", real=True)
-                as_ = sp.Dummy(name + "_ddot", real=True)
-                if a is not None:
-                    rule[a] = as_
-                rule[u], rule[q] = us, qs
-                q_s.append(qs)
-                u_s.append(us)
-                a_s.append(as_)
-            w_s = []
-            for w in self._inputs:
-                ws = sp.Dummy(_name(w), real=True)
-                rule[w] = ws
-                w_s.append(ws)
-            self._cache["stand_ins"] = (tuple(q_s), tuple(u_s), tuple(a_s), tuple(w_s), rule)
-        return self._cache["stand_ins"]
+        puts them in place of the user's q(t), Derivative(q(t), t), ... (cached)."""
+        return _compiled.stand_ins(self)
 
     def _symbolic(self):
         """M and f with the stand-in symbols (computed once, sharing subexpressions)."""
-        if "symbolic" not in self._cache:
-            q_s, u_s, a_s, w_s, rule = self._stand_ins()
-            n = len(q_s)
-            memo = {}
-            M = xreplace_shared(list(self._M), rule, memo)
-            f = xreplace_shared(list(self._f), rule, memo)
-            self._cache["symbolic"] = (q_s, u_s, w_s, rule, sp.ImmutableMatrix(n, n, M),
-                                       sp.ImmutableMatrix(n, 1, f))
-        return self._cache["symbolic"]
-
-    def _check_compilable(self):
-        bad = self._cache["input_derivatives"]
-        if bad:
-            raise CompilationError(
-                f"the equations contain {', '.join(map(str, bad))}: derivatives of inputs "
-                "cannot be given as values; substitute an expression of t for the input "
-                "first (eqs.forcing.subs(F(t), ...)) or make it a parameter of situation.")
-
-    def _model_names(self):
-        if "model" not in self._cache:
-            model = self._model() if callable(self._model) else self._model
-            self._cache["model"] = {s.name for s in (model or ())}
-        return self._cache["model"]
+        return _compiled.symbolic(self)
 
     def _values(self, params):
         """(parameter values, input values, notes) from keyword values, checked."""
-        names = {p.name for p in self._params}
-        input_names = [_name(w) for w in self._inputs]
-        missing = [p.name for p in self._params if p.name not in params]
-        missing_inputs = [w for w in input_names if w not in params]
-        if missing or missing_inputs:
-            parts = []
-            if missing:
-                parts.append(f"parameters {missing}")
-            if missing_inputs:
-                parts.append(f"inputs {missing_inputs} (numbers or callables of t)")
-            example = ", ".join(f"{m}=1.0" for m in missing + missing_inputs)
-            raise ArgumentError(
-                f"missing values for {' and '.join(parts)}; pass them as keywords, e.g. "
-                f"{example}.")
-        extra = sorted(set(params) - names - set(input_names))
-        dropped = [x for x in extra if x in self._model_names()]
-        unknown = [x for x in extra if x not in dropped]
-        if unknown:
-            raise ArgumentError(
-                f"unknown parameters {unknown}; the equations depend on "
-                f"{[p.name for p in self._params] + input_names}.")
-        def number(name, kind):
-            try:
-                return float(params[name])
-            except (TypeError, ValueError):
-                raise ArgumentTypeError(
-                    f"the value of {kind} `{name}` must be a real number"
-                    f"{' or a callable of t' if kind == 'input' else ''}; got "
-                    f"{params[name]!r}.") from None
+        return _compiled.given_values(self, params)
 
-        values = [number(p.name, "parameter") for p in self._params]
-        inputs = [params[w] if callable(params[w]) else number(w, "input")
-                  for w in input_names]
-        notes = ()
-        if dropped:
-            notes = (f"parameters {', '.join(dropped)} do not enter the equations of motion "
-                     "(they dropped out of the derivation): their values are ignored.",)
-            for note in notes:
-                _log.info(note)
-        return values, inputs, notes
+    def _solver(self):
+        """The compiled q''(t, q, q', parameters, inputs) (with constraints, its ``full``
+        gives the multipliers as well)."""
+        return _compiled.solver(self)
 
     @property
     def constraints(self):
@@ -434,45 +280,6 @@ class EquationsOfMotion:
         if key not in self._cache:
             self._cache[key] = reduce_equations(self, independent)
         return self._cache[key]
-
-    def _augmented(self):
-        """The augmented matrix [[M, A^T], [A, 0]] and right-hand side [f; b_stabilized],
-        with the stand-in symbols."""
-        q_s, u_s, w_s, rule, M, f = self._symbolic()
-        c = self._constraints
-        memo = {}
-        m, n = len(c), len(q_s)
-        A = sp.ImmutableMatrix(m, n, xreplace_shared(list(c.jacobian), rule, memo))
-        b = xreplace_shared(list(c.stabilized_bias()), rule, memo)
-        K = sp.BlockMatrix([[M, A.T], [A, sp.zeros(m, m)]]).as_explicit()
-        F = sp.ImmutableMatrix(n + m, 1, list(f) + b)
-        return sp.ImmutableMatrix(K), F
-
-    def _constrained_solver(self):
-        q_s, u_s, w_s, _, _, _ = self._symbolic()
-        K, F = self._augmented()
-        full = compile_linear_solve(
-            K, F, [_t, list(q_s), list(u_s), *self._params, *w_s], symmetric=False,
-            name="accelerations_and_multipliers")
-        n = len(q_s)
-
-        def solve(*args):
-            return full(*args)[:n]
-
-        solve.full = full
-        return solve
-
-    def _solver(self):
-        if "solver" not in self._cache and self._constraints is not None:
-            self._check_compilable()
-            self._cache["solver"] = self._constrained_solver()
-        if "solver" not in self._cache:
-            self._check_compilable()
-            q_s, u_s, w_s, _, M, f = self._symbolic()
-            self._cache["solver"] = compile_linear_solve(
-                M, f, [_t, list(q_s), list(u_s), *self._params, *w_s],
-                symmetric=True, name="accelerations")
-        return self._cache["solver"]
 
     def rhs(self, **params):
         """The first-order right-hand side ``f(t, y)`` with y = (q, q'), compiled once.
@@ -493,100 +300,7 @@ class EquationsOfMotion:
         >>> eqs.rhs(k=4.0)(0.0, np.array([1.0, 0.0]))
         array([ 0., -4.])
         """
-        self._check_compilable()
-        values, inputs, notes = self._values(params)
-        solve = self._solver()
-        n = len(self._q)
-        if not any(callable(w) for w in inputs):
-            values = values + inputs
-
-            def fun(t, y):
-                try:  # free unless raised
-                    acc = solve(t, y[:n], y[n:], *values)
-                except (ArithmeticError, ValueError, TypeError) as exc:
-                    if fun.trouble is None:
-                        raise
-                    return _trouble(fun, exc, t, np.shape(y))
-                return np.concatenate((y[n:], acc), axis=0)
-        else:
-            def fun(t, y):
-                try:
-                    w = [v(t) if callable(v) else v for v in inputs]
-                    acc = solve(t, y[:n], y[n:], *values, *w)
-                except (ArithmeticError, ValueError, TypeError) as exc:
-                    if fun.trouble is None:
-                        raise
-                    return _trouble(fun, exc, t, np.shape(y))
-                return np.concatenate((y[n:], acc), axis=0)
-
-        fun.notes = notes
-        fun.trouble = None  # a list: errors kept there, nan returned (see _trouble)
-        return fun
-
-    def _acceleration_only(self, method, params):
-        """q'' = a(t, q) for the geometric (second-order) methods, which need accelerations
-        independent of the velocities (separable systems)."""
-        q_s, u_s, _, _, _, f = self._symbolic()
-        if any(f.has(u) for u in u_s):
-            raise ArgumentError(
-                f"method {method!r} integrates q'' = a(t, q) only, but these equations "
-                "depend on q' (velocity products); use an explicit method such as 'dop853'.")
-        values, inputs, notes = self._values(params)
-        solve = self._solver()
-        zeros = np.zeros(len(self._u))
-
-        def acc(t, q):
-            try:
-                w = [v(t) if callable(v) else v for v in inputs]
-                return solve(t, q, np.zeros_like(q) if np.ndim(q) > 1 else zeros, *values, *w)
-            except (ArithmeticError, ValueError, TypeError) as exc:
-                if acc.trouble is None:
-                    raise
-                return _trouble(acc, exc, t, np.shape(q))
-
-        acc.notes = notes
-        acc.trouble = None
-        return acc
-
-    def _initial(self, values, what, default_zero):
-        """Initial coordinates or rates from a sequence (in the order of :attr:`coordinates`)
-        or a mapping by name (missing names: 0)."""
-        n = len(self._q)
-        names = self.names
-        if values is None:
-            if default_zero:
-                return np.zeros(n)
-            raise ArgumentError(
-                f"`{what}` must give {n} initial values (a sequence in the order "
-                f"{', '.join(names)}, or a dict by name); got None.")
-        if isinstance(values, dict):
-            out = np.zeros(n)
-            unknown = []
-            for key, value in values.items():
-                if isinstance(key, str) and key in names:
-                    k = names.index(key)
-                elif key in self._coordinates:
-                    k = self._coordinates.index(key)
-                else:
-                    unknown.append(key)
-                    continue
-                out[k] = float(value)
-            if unknown:
-                raise ArgumentError(
-                    f"`{what}` names {', '.join(repr(str(x)) for x in unknown)}, which "
-                    f"{'are' if len(unknown) > 1 else 'is'} not a coordinate; the coordinates "
-                    f"are {', '.join(names)}.")
-            return out
-        try:
-            out = np.asarray(values, dtype=float)
-        except (TypeError, ValueError):
-            raise ArgumentError(
-                f"`{what}` must be {n} numbers or a dict by name; got {values!r}.") from None
-        if out.shape != (n,):
-            raise ArgumentError(
-                f"`{what}` must give {n} initial values (in the order {', '.join(names)}, or "
-                f"a dict by name); got {values!r}.")
-        return out
+        return _compiled.rhs(self, params)
 
     def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
                  atol=1e-10, step=None, n_output=1001, t_eval=None, events=None,
@@ -706,30 +420,12 @@ class EquationsOfMotion:
         >>> sim.status, round(float(sim.q[0, -1]), 6), round(float(np.cos(2.0)), 6)
         ('finished', -0.416147, -0.416147)
         """
-        from ._run import merge_values, run
-
-        values = merge_values(params, values)
-        inputs = {_name(w) for w in self._inputs}
-        _check_simulation_inputs(len(self._q), t, q0, u0, method, n_output,
-                                 {k: v for k, v in values.items() if k not in inputs})
-        q0 = self._initial(q0, "q0", default_zero=False)
-        u0 = self._initial(u0, "u0", default_zero=True)
-        y0 = np.concatenate((q0, u0))
-        if not isinstance(method, str):
-            raise ArgumentTypeError(f"`method` must be a method name; got {method!r}.")
-        if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
-            fun = self._acceleration_only(method, values)
-        else:
-            fun = self.rhs(**values)
-        if dense_output is None:
-            dense_output = bool(self.singular_sets)
-        sim = run(self, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
-                  n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
-                  first_step=first_step, max_step=max_step, dense_output=dense_output,
-                  progress=progress, values=values, notes=fun.notes, project=project)
-        if sim.result is not None and sim.t.size:
-            warn_near_singularities(self.singular_sets, self._coordinates, sim.result, values)
-        return sim.check() if raise_on_failure else sim
+        return _simulate.simulate(
+            self, t, q0, u0, method=method, rtol=rtol, atol=atol, step=step,
+            n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
+            first_step=first_step, max_step=max_step, dense_output=dense_output,
+            progress=progress, project=project, raise_on_failure=raise_on_failure,
+            params=params, values=values)
 
     def display_rule(self) -> dict:
         """Symbols to print q(t), q'(t), q''(t) as q, q_dot, q_ddot (for reading only: they
@@ -745,27 +441,10 @@ class EquationsOfMotion:
         >>> eqs.forcing.xreplace(eqs.display_rule())
         Matrix([[-k*x*x_dot]])
         """
-        rule = {}
-        for q, u, a in zip(self._q, self._u, self._a, strict=True):
-            name = _name(q)
-            if a is not None:
-                rule[a] = sp.Symbol(name + "_ddot", real=True)
-            rule[u] = sp.Symbol(name + "_dot", real=True) if not isinstance(u, sp.Symbol) else u
-            rule[q] = sp.Symbol(name, real=True) if not isinstance(q, sp.Symbol) else q
-        return rule
+        return _forms.display_rule(self)
 
     def _latex(self, printer=None):
-        rule = {}
-        for q, u, a in zip(self._q, self._u, self._a, strict=True):
-            name = sp.latex(sp.Symbol(_name(q)))
-            if a is not None:
-                rule[a] = sp.Symbol(rf"\ddot{{{name}}}")
-            rule[u] = sp.Symbol(rf"\dot{{{name}}}")
-            rule[q] = sp.Symbol(name)
-        acc = sp.Matrix([sp.Symbol(rf"\ddot{{{sp.latex(sp.Symbol(_name(q)))}}}")
-                         for q in self._q])
-        return (sp.latex(sp.Matrix(self._M).xreplace(rule)) + sp.latex(acc) + " = "
-                + sp.latex(sp.Matrix(self._f).xreplace(rule)))
+        return _forms.latex(self)
 
     def _repr_latex_(self):
         """M(q) q'' = f(q, q', t) rendered in Jupyter and in the docs, q(t) and its rates
@@ -789,45 +468,3 @@ class EquationsOfMotion:
         inputs = f", inputs={list(self._inputs)}" if self._inputs else ""
         return (f"EquationsOfMotion(coordinates={list(self._coordinates)}, "
                 f"n={len(self._q)}, parameters={list(self._params)}{inputs})")
-
-
-def _finite_reals(values, argument, n=None):
-    """Raise unless ``values`` is a sequence (of length ``n``) of finite real numbers."""
-    if isinstance(values, str | bytes) or not hasattr(values, "__len__"):
-        raise ArgumentTypeError(
-            f"`{argument}` must be a sequence of {n or 'several'} numbers; got "
-            f"{type(values).__name__} {values!r}.")
-    if n is not None and len(values) != n:
-        raise ArgumentError(f"`{argument}` must give {n} initial values; got {values!r}.")
-    for v in values:
-        _finite_real_number(v, f"`{argument}` must hold finite real numbers")
-
-
-def _finite_real_number(v, rule):
-    if isinstance(v, bool) or not isinstance(v, int | float | np.integer | np.floating
-                                             | sp.Number):
-        raise ArgumentTypeError(f"{rule}; got {type(v).__name__} {v!r}.")
-    if not np.isfinite(float(v)):
-        raise ArgumentError(f"{rule}; got {v!r}.")
-
-
-def _check_simulation_inputs(n, t, q0, u0, method, n_output, params):
-    """The checks of :meth:`EquationsOfMotion.simulate` on the values it is given (numbers
-    finite and real, a time span of two numbers, a method name, a count of outputs), so that a
-    wrong value is an error here rather than a nan motion or an error from numpy."""
-    _finite_reals(t, "t", 2)
-    if q0 is not None and not isinstance(q0, dict):
-        _finite_reals(q0, "q0")
-    if u0 is not None and not isinstance(u0, dict):
-        _finite_reals(u0, "u0")
-    if not isinstance(method, str):
-        raise ArgumentTypeError(
-            f"`method` must be the name of a method of rigidmech.ode.solve (such as "
-            f"'dop853'); got {type(method).__name__} {method!r}.")
-    if isinstance(n_output, bool) or not isinstance(n_output, int | np.integer) \
-            or n_output < 2:
-        raise ArgumentError(
-            f"`n_output` must be an integer >= 2 (the output times include both ends of "
-            f"`t`); got {n_output!r}.")
-    for name, value in params.items():
-        _finite_real_number(value, f"`{name}` must be a finite real number")

@@ -6,31 +6,26 @@ its :attr:`~Simulation.status` says how the run ended (``"finished"``, ``"event"
 it evaluates any expression of the motion (:meth:`~Simulation.evaluate`), the energy and its
 drift, the action of a connection (:meth:`~Simulation.connection_action`); it saves to and loads
 from ``.npz`` and ``.csv`` files.
+
+Developers: this module holds the result value (and :class:`Event`); what is computed along
+the motion is in :mod:`rigidmech.dynamics._along`, saving, loading and plotting in
+:mod:`rigidmech.dynamics._files` (see "Where each concern lives" in the API docs).
 """
 
 from __future__ import annotations
 
-import csv
-import json
 import math
-import os
 
 import numpy as np
 import sympy as sp
 
-from .._core.compile import compile_expressions
-from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError, NumericalError
-from .._core.symbolic import atoms_shared, xreplace_shared
-from ..vectors import t as _t
+from .._core.errors import ArgumentTypeError, NumericalError
+from . import _along, _files
 
 __all__ = ["Simulation", "Event", "load_simulation"]
 
 #: ``OdeResult.status`` -> :attr:`Simulation.status`
 _STATUS = {0: "finished", 1: "event", -1: "failed", 2: "interrupted"}
-
-
-def _name(q):
-    return q.func.__name__ if isinstance(q, sp.core.function.AppliedUndef) else q.name
 
 
 class Event:
@@ -218,25 +213,6 @@ class Simulation:
         return self
 
     # -- along the motion ---------------------------------------------------------------
-    def _need_equations(self, what):
-        if self._eqs is None:
-            raise ArgumentError(
-                f"{what} needs the equations of motion, which a simulation loaded from a "
-                "file does not have; simulate again to get them.")
-        return self._eqs
-
-    def _input_values(self):
-        out = []
-        for w in self._eqs.inputs:
-            v = self._params[_name(w)]
-            if callable(v):
-                try:
-                    v = np.asarray(v(self.t), dtype=float)
-                except (TypeError, ValueError):  # a callable of one float only
-                    v = np.array([float(v(x)) for x in self.t])
-            out.append(np.broadcast_to(np.asarray(v, dtype=float), self.t.shape))
-        return out
-
     def evaluate(self, expr, frame=None):
         """Evaluate a symbolic expression along the motion; returns an array over the sample
         times (for a Matrix, its shape followed by the times; for a
@@ -261,54 +237,7 @@ class Simulation:
         >>> sim.evaluate(P.velocity(R0), frame=R0).shape     # (vx, vy, vz) at the 3 samples
         (3, 3)
         """
-        from ..vectors import Frame, Vector
-
-        if isinstance(expr, Vector):
-            if not isinstance(frame, Frame):
-                raise ArgumentTypeError(
-                    f"`frame` must be a Frame to evaluate a Vector's components in; got "
-                    f"{type(frame).__name__}.")
-            return self.evaluate(expr.components(frame))[:, 0]
-        eqs = self._need_equations("evaluate()")
-        q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
-        if isinstance(expr, sp.MatrixBase):
-            shape = expr.shape
-            flat = xreplace_shared(list(expr), rule)
-            e = sp.ImmutableMatrix(*shape, flat)
-        else:
-            try:
-                flat = xreplace_shared([sp.sympify(expr)], rule)
-            except (sp.SympifyError, TypeError) as exc:
-                raise ArgumentTypeError(
-                    f"`expr` must be a sympy expression or Matrix; got {type(expr).__name__}."
-                ) from exc
-            e = flat[0]
-        symbols, functions, derivatives = atoms_shared(flat)
-        if functions or derivatives:
-            raise CompilationError(
-                f"`expr` contains {', '.join(sorted(map(str, functions | derivatives)))}, "
-                "which is neither a coordinate of the equations, one of its first two "
-                "derivatives nor an input.")
-        known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t}
-        constants = sorted(symbols - known, key=lambda s: s.name)
-        missing = [c.name for c in constants if c.name not in self._params]
-        if missing:
-            raise ArgumentError(
-                f"`expr` depends on {missing}, which the simulation has no value for; give "
-                "them to simulate().")
-        values = [float(self._params[c.name]) for c in constants]
-        f = compile_expressions(e, [_t, list(q_s), list(u_s), list(a_s), *constants,
-                                    *w_s])
-        inputs = self._input_values()
-        if any(e.has(a) for a in a_s):
-            params = [float(self._params[p.name]) for p in eqs.parameters]
-            acc = eqs._solver()(self.t, self.q, self.u, *params, *inputs)
-        else:
-            acc = np.zeros_like(self.q)
-        out = f(self.t, self.q, self.u, acc, *values, *inputs)
-        if isinstance(e, sp.MatrixBase):
-            return np.broadcast_to(out, tuple(e.shape) + self.t.shape).copy()
-        return np.broadcast_to(out, self.t.shape).copy()
+        return _along.evaluate(self, expr, frame)
 
     def connection_action(self, parent, child, *, basis=None, system=None) -> dict:
         """The action of ``parent`` on ``child`` through their connection (ch. 18.2) along the
@@ -346,40 +275,11 @@ class Simulation:
         >>> bool(np.allclose(N["X"], -2.0 * 9.81))       # at rest below the pivot: -m g
         True
         """
-        eqs = self._need_equations("connection_action()")
-        system = system if system is not None else getattr(eqs, "system", None)
-        if system is None:
-            raise ArgumentError(
-                "`system` is needed: these equations were not derived by "
-                "System.equations_of_motion(); pass system=... .")
-        if system.equations_of_motion() is not eqs:
-            raise ArgumentError(
-                "`system` has changed since these equations were derived (or is another "
-                "system): its connection actions would not match this motion.")
-        if basis is None:
-            comps = system.connection_components(parent, child)
-            keys = list(comps)
-            exprs = [comps[k] for k in keys]
-        else:
-            from ..vectors import Frame
-
-            if not isinstance(basis, Frame):
-                raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
-                                        f"{type(basis).__name__}.")
-            torsor = system.connection_action(parent, child)
-            moment = torsor.moment_at(torsor.point)   # at the connection's point
-            keys = ["X", "Y", "Z", "L", "M", "N"]
-            exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
-        values = self.evaluate(sp.ImmutableMatrix(len(exprs), 1, exprs))
-        return {k: values[i, 0] for i, k in enumerate(keys)}
+        return _along.connection_action(self, parent, child, basis, system)
 
     def energy(self):
         """Total mechanical energy T + V along the motion."""
-        e = self._need_equations("energy()").energy
-        if e is None:
-            raise ArgumentError("the system's actions have no potential energy: no energy "
-                                "to follow.")
-        return self.evaluate(e)
+        return _along.energy(self)
 
     def energy_scale(self) -> float:
         """The scale of :meth:`energy_drift`: ``T(0) + |V(0)|``, the kinetic energy plus the
@@ -397,18 +297,7 @@ class Simulation:
         >>> eqs.simulate(t=(0, 1), q0=[1.0], n_output=3).energy_scale()   # |E(0)| = 2
         2.0
         """
-        eqs = self._need_equations("energy_scale()")
-        e = self.energy()
-        kinetic = getattr(eqs, "kinetic_energy", None)
-        if kinetic is not None:
-            T = self.evaluate(kinetic)
-            s = np.abs(T) + np.abs(e - T)
-        else:
-            s = np.abs(e)
-        scale = float(s[0])
-        if scale == 0.0:
-            scale = float(np.max(s))
-        return scale
+        return _along.energy_scale(self)
 
     def energy_drift(self, scale=None) -> float:
         """Largest change of the total energy along the motion, relative to ``scale``:
@@ -438,22 +327,7 @@ class Simulation:
             explicitly (a prescribed motion, a field that turns), or a damper of the system
             dissipates. Use :meth:`energy_balance`.
         """
-        reason = self.energy_not_conserved()
-        if reason is not None:
-            raise ArgumentError(
-                f"energy_drift() would misreport: {reason}, so T + V changes without any "
-                "error of the integration. Use energy_balance(), which accounts for it.")
-        e = self.energy()
-        delta = float(np.max(np.abs(e - e[0])))
-        if scale is None:
-            scale = self.energy_scale()
-        else:
-            scale = float(scale)
-            if not (math.isfinite(scale) and scale > 0):
-                raise ArgumentError(f"`scale` must be a finite number > 0; got {scale}.")
-        if scale == 0.0:
-            return 0.0 if delta == 0.0 else math.inf
-        return delta / scale
+        return _along.energy_drift(self, scale)
 
     def energy_not_conserved(self):
         """Why T + V is not conserved along an exact motion, or None: :meth:`time_dependence`,
@@ -470,18 +344,7 @@ class Simulation:
         >>> eqs.simulate(t=(0, 1), q0=[1.0], n_output=3).energy_not_conserved() is None
         True
         """
-        reason = self.time_dependence()
-        if reason is not None:
-            return reason
-        system = getattr(self._need_equations("energy_not_conserved()"), "system", None)
-        if system is None:
-            return None
-        dissipative = [a for a in system.actions
-                       if callable(getattr(a, "dissipation_function", None))]
-        if not dissipative:
-            return None
-        names = ", ".join(type(a).__name__ for a in dissipative)
-        return f"the system's dissipative actions ({names}) dissipate energy"
+        return _along.energy_not_conserved(self)
 
     def time_dependence(self):
         """Why T + V changes along a correct motion even without non-conservative actions,
@@ -499,15 +362,7 @@ class Simulation:
         >>> eqs.simulate(t=(0, 1), q0=[0.0], n_output=3).time_dependence()
         'the energy T + V depends on time explicitly (a prescribed motion or a field that varies)'
         """
-        from .energy import time_dependence
-
-        eqs = self._need_equations("time_dependence()")
-        cache = eqs._cache   # decided once for the equations
-        if "time_dependence" not in cache:
-            _, u_s, _, _, rule = eqs._stand_ins()
-            cache["time_dependence"] = time_dependence(
-                getattr(eqs, "kinetic_energy", None), eqs.energy, u_s, rule)
-        return cache["time_dependence"]
+        return _along.time_dependence(self)
 
     def energy_balance(self):
         """The energy balance along the motion, E(t) - E(0) - W(t), a time series that stays
@@ -543,59 +398,9 @@ class Simulation:
         >>> bool(np.max(np.abs(sim.energy_balance())) < 1e-8)
         True
         """
-        from scipy.integrate import cumulative_simpson, cumulative_trapezoid
-
-        from .energy import energy_terms
-
-        eqs = self._need_equations("energy_balance()")
-        system = getattr(eqs, "system", None)
-        if system is None:
-            raise ArgumentError(
-                "energy_balance() needs equations derived by System.equations_of_motion(): "
-                "the work of the non-conservative actions is taken from the system.")
-        if system.equations_of_motion() is not eqs:
-            raise ArgumentError(
-                "the system has changed since these equations were derived: its energy "
-                "would not match this motion.")
-        E, P = energy_terms(system)
-        e = self.evaluate(E)
-        p = self.evaluate(P)
-        if self.t.size >= 3:
-            W = cumulative_simpson(p, x=self.t, initial=0.0)
-        elif self.t.size == 2:
-            W = cumulative_trapezoid(p, x=self.t, initial=0.0)
-        else:
-            W = np.zeros_like(self.t)
-        return e - e[0] - W
+        return _along.energy_balance(self)
 
     # -- files --------------------------------------------------------------------------
-    def _columns(self):
-        names = list(self._names)
-        return ["t", *names, *(f"{n}_dot" for n in names)]
-
-    def _units(self, units):
-        """The unit of each coordinate: `units` (by name) first, else rad for an angle of
-        rotation of a body's frame (or of a frame it is built from), else None."""
-        units = dict(units or {})
-        unknown = sorted(set(units) - set(self._names))
-        if unknown:
-            raise ArgumentError(f"`units` names {unknown}, which is not a coordinate; the "
-                                f"coordinates are {', '.join(self._names)}.")
-        angles = set()
-        system = getattr(self._eqs, "system", None) if self._eqs is not None else None
-        for body in (system.bodies if system is not None else ()):
-            frame = body.frame
-            while frame is not None:
-                angles.add(str(frame.angle))
-                frame = frame.parent
-        coords = self._eqs.coordinates if self._eqs is not None else ()
-        out = {}
-        for name, c in zip(self._names, coords or self._names, strict=False):
-            out[name] = units.get(name, "rad" if str(c) in angles else None)
-        for name in self._names:
-            out.setdefault(name, units.get(name))
-        return out
-
     def save(self, path, *, units=None) -> str:
         """Write the samples to ``path``: ``.npz`` (arrays, names, parameters, status) or
         ``.csv`` (a header line of comments with the status and the parameters, then the
@@ -620,30 +425,7 @@ class Simulation:
         >>> bool((back.q == sim.q).all()), back.names, back.parameters, back.status
         (True, ('x',), {'k': 4.0}, 'finished')
         """
-        text = os.fspath(path)
-        ext = os.path.splitext(text)[1].lower()
-        if ext not in (".npz", ".csv"):
-            raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
-        params = {k: (float(v) if not callable(v) else repr(v)) for k, v in self._params.items()}
-        meta = {"names": list(self._names), "parameters": params, "status": self.status,
-                "message": self.message, "method": self._method, "elapsed": self.elapsed,
-                "t_stop": self._t_stop,
-                "notes": list(self.notes)}
-        if ext == ".npz":
-            np.savez(text, t=self.t, q=self.q, u=self.u, meta=np.array(json.dumps(meta)),
-                     **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(self._t_events)})
-        else:
-            unit = self._units(units)
-            header = ["t [s]"] + [n + (f" [{unit[n]}]" if unit[n] else "") for n in self._names]
-            header += [f"{n}_dot" + (f" [{unit[n]}/s]" if unit[n] else "") for n in self._names]
-            with open(text, "w", newline="") as fh:
-                fh.write("# rigidmech simulation " + json.dumps(meta) + "\n")
-                w = csv.writer(fh)
-                w.writerow(header)
-                data = np.vstack([self.t, self.q, self.u]).T
-                for row in data:
-                    w.writerow([repr(float(x)) for x in row])
-        return text
+        return _files.save(self, path, units)
 
     @classmethod
     def load(cls, path) -> Simulation:
@@ -666,32 +448,7 @@ class Simulation:
         >>> back.t.tolist() == [0.0, 1 / 3, 2 / 3, 1.0], back.equations, back.method
         (True, None, 'dop853')
         """
-        text = os.fspath(path)
-        ext = os.path.splitext(text)[1].lower()
-        if ext == ".npz":
-            with np.load(text) as data:
-                meta = json.loads(str(data["meta"]))
-                t, y = data["t"], np.vstack([data["q"], data["u"]])
-                events = [data[k] for k in sorted(
-                    (k for k in data.files if k.startswith("t_events_")),
-                    key=lambda k: int(k.rsplit("_", 1)[1]))]
-        elif ext == ".csv":
-            with open(text, newline="") as fh:
-                first = fh.readline()
-                prefix = "# rigidmech simulation "
-                if not first.startswith(prefix):
-                    raise ArgumentError(f"`path` {text!r} is not a CSV file written by "
-                                        "Simulation.save (no rigidmech header line).")
-                meta = json.loads(first[len(prefix):])
-                rows = list(csv.reader(fh))[1:]
-            data = np.array(rows, dtype=float).reshape(len(rows), -1)
-            t, y = data[:, 0], data[:, 1:].T
-            events = []
-        else:
-            raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
-        return cls(None, None, meta["parameters"], meta.get("elapsed", 0.0), meta["notes"],
-                   status=meta["status"], message=meta["message"], names=meta["names"], t=t,
-                   y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"))
+        return _files.load(cls, path)
 
     # -- display ------------------------------------------------------------------------
     def plot(self, path=None, *, ax=None):
@@ -700,25 +457,7 @@ class Simulation:
         With ``path`` and no ``ax`` the figure is drawn off-screen (no pyplot state, works
         headless); with neither, pyplot makes a figure to show. Returns the Axes.
         """
-        if ax is None:
-            if path is not None:
-                from matplotlib.figure import Figure  # imported on use (slow import)
-
-                ax = Figure(figsize=(7, 4)).subplots()
-            else:
-                import matplotlib.pyplot as plt  # imported on use (slow import)
-
-                ax = plt.subplots(figsize=(7, 4))[1]
-        for i, name in enumerate(self._names):
-            ax.plot(self.t, self.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
-        ax.set_xlabel("t")
-        ax.set_ylabel("parameters of situation")
-        ax.legend()
-        ax.grid(True, alpha=0.3)
-        if path is not None:
-            ax.figure.tight_layout()
-            ax.figure.savefig(path, dpi=100)
-        return ax
+        return _files.plot(self, path, ax)
 
     def __repr__(self):
         span = f"[{self.t[0]}, {self.t[-1]}]" if self.t.size else "[]"

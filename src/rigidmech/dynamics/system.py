@@ -19,84 +19,40 @@ exerted on them. It derives, on demand and each only once:
   grows polynomially with the number of bodies (no expression swell);
 * the action in one connection (ch. 18.2), only when asked: the fundamental principle for the
   set of bodies carried by that connection.
+
+Where each concern lives (the methods of :class:`System` carry the documentation and
+delegate to functions of private modules):
+
+* this module: the system's state, its public methods and read-only views;
+* :mod:`rigidmech.dynamics._tree`: the tree of bodies and coordinates (which connection moves
+  each coordinate, their order) and how :meth:`System.connect` files a connection: a tree
+  joint, a linking connection (closing joint, rolling contact, gear mesh, knife edge: its
+  condition rows) or a one-sided contact with friction;
+* :mod:`rigidmech.dynamics.linked`: what the linking connections give once filed (closure
+  conditions, constraints, loops, mobility, assembly, Lagrange multipliers), a base class;
+* :mod:`rigidmech.dynamics.reference`: the reference, Galilean or not, and its inertial
+  actions;
+* :mod:`rigidmech.dynamics._derivation`: partial velocities, mass matrix and forcing,
+  energies, generalized forces, constants of the model;
+* :mod:`rigidmech.dynamics._connection_actions`: the connection actions, on demand.
 """
 
 from __future__ import annotations
 
-import re
-from functools import partial
-
-import sympy as sp
-
-from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.symbolic import free_symbols_shared
-from ..actions import Action, Joint
+from .._core.errors import ArgumentError, ConnectionError_
+from ..actions import Action
 from ..kinetics import Body
-from ..systems import Mechanism, closure_conditions
+from ..systems import Mechanism
 from ..torsors import Torsor
-from ..vectors import Frame, Vector, partial_rotation_vector, t
-from ..vectors.symbols import declared_order, declared_ranks, is_coordinate
-from . import _euler_parameters
+from ..vectors import Frame
+from ..vectors.symbols import is_coordinate
+from . import _connection_actions, _derivation, _tree
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 from .linked import LinkedParameters
-from .reference import _placing as _frame_exprs
 from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
-
-
-def _natural(name):
-    """Sort key: q2 before q10."""
-    return [int(p) if p.isdigit() else p for p in re.split(r"(\d+)", name)]
-
-
-def _coordinates_in(expr_iterable):
-    found = []
-    for e in expr_iterable:
-        atoms = sp.sympify(e).atoms(sp.core.function.AppliedUndef)
-        for a in sorted(atoms, key=lambda a: _natural(str(a))):
-            if is_coordinate(a) and a not in found:
-                found.append(a)
-    return found
-
-
-def _mechanical_energy(galilean, solids, bodies, actions):
-    """T + V of ``bodies`` under ``actions`` (values, not the system: a snapshot)."""
-    T = sp.Add(*[b.kinetic_energy(galilean) for b in bodies if b.mass])
-    V = []
-    for action in actions:
-        pe = action.potential_energy(solids, galilean)
-        if pe is None:
-            return None
-        V.append(pe)
-    return T + sp.Add(*V)
-
-
-def _kinetic_energy(galilean, bodies):
-    """Kinetic energy of `bodies` relative to `galilean` (a snapshot, for the equations)."""
-    return sp.Add(*[b.kinetic_energy(galilean) for b in bodies if b.mass])
-
-
-def _constants(bodies, contributions):
-    """The constant symbols of bodies (mass, inertia, centre, frames) and action torsors."""
-    exprs = []
-    for b in bodies:
-        exprs.extend(_frame_exprs(b.frame))
-        exprs.extend(x for _, c in b.centre.position.parts for x in c)
-        if b.mass is not None:
-            exprs.append(b.mass)
-        if b.inertia is not None:
-            exprs.extend(b.inertia.matrix)
-    for _, torsor, _ in contributions:
-        for v in (torsor.resultant, torsor.moment, torsor.point.position):
-            exprs.extend(x for _, c in v.parts for x in c)
-    return tuple(sorted(free_symbols_shared(exprs) - {t}, key=lambda s: s.name))
-def _body_coordinates(body):
-    """The parameters of situation q(t) on which the body's frame or mass centre depends."""
-    exprs = _frame_exprs(body.frame)
-    exprs.extend(x for _, c in body.centre.position.parts for x in c)
-    return _coordinates_in(exprs)
 
 
 class System(LinkedParameters):
@@ -207,14 +163,6 @@ class System(LinkedParameters):
         """
         return self._graph
 
-    def _solid(self, s, argument):
-        if isinstance(s, Frame):
-            return self._graph.solid(s, argument)
-        if not isinstance(s, Body):
-            raise ArgumentTypeError(
-                f"`{argument}` must be a Body or the Galilean frame; got {type(s).__name__}.")
-        return s
-
     def add(self, body: Body) -> None:
         """Add a body that is not connected to anything (a free body, ch. 18.4).
 
@@ -234,29 +182,7 @@ class System(LinkedParameters):
         >>> len(s.bodies)
         1
         """
-        body = self._solid(body, "body")
-        if body is self._ground:
-            raise ConnectionError_("the Galilean reference is not a body to add.")
-        self._graph.check_body(body)
-        self._claim(body, _body_coordinates(body), f"the free body {body.name}")
-        self._graph = self._graph.with_body(body)
-        for q, rank in declared_ranks(_body_coordinates(body)).items():
-            self._ranks.setdefault(q, rank)
-        self._cache.clear()
-
-    # -- validation (issue: never silently wrong) ---------------------------------------
-    def _claim(self, body, coordinates, owner):
-        """Record that ``owner`` (a connection or a free body) moves ``coordinates``; a
-        coordinate moved by two connections would be counted twice in the equations."""
-        for q in coordinates:
-            known = self._owners.get(q)
-            if known is not None and known[0] is not body:
-                raise ConnectionError_(
-                    f"the coordinate {q} of body {body.name} is already moved by {known[1]}: "
-                    "each parameter of situation belongs to one connection (or free body). "
-                    "Build the body's frame from its parent's, or give it its own coordinate.")
-        for q in coordinates:
-            self._owners[q] = (body, owner)
+        _tree.add(self, body)
 
     def connect(self, parent, child, joint, *, meets=None, label: str | None = None
                 ) -> None:
@@ -323,87 +249,7 @@ class System(LinkedParameters):
         >>> [c[0] for c in s.closure_conditions()]
         ['4.u', '4.v']
         """
-        parent = self._solid(parent, "parent")
-        child = self._solid(child, "child")
-        if getattr(joint, "one_sided", False):
-            return self._touch(parent, child, joint)
-        linking = callable(getattr(joint, "velocity_constraints", None))
-        if not (isinstance(joint, Joint) or linking):
-            raise ArgumentTypeError(
-                f"`joint` must be a connection from rm.joints, a RollingContact or a "
-                f"GearMesh; got {type(joint).__name__}.")
-        if child is self._ground:
-            raise ConnectionError_(
-                "`child` cannot be the Galilean reference: connect bodies to it as parent.")
-        if parent is not self._ground and parent not in self._bodies:
-            raise ConnectionError_(
-                f"connect the parent {parent.name} before its children.")
-        if meets is not None and not (isinstance(joint, Joint) and child in self._joints):
-            raise ArgumentError(
-                "`meets` is the point of `child` that closes a loop: give it only for a joint "
-                f"between two solids already connected; got it for {child.name}, which has no "
-                "connection yet.")
-        if linking:
-            self._check_linking_solids(parent, child, joint)
-        new_body = child not in self._bodies
-        if new_body:
-            self._graph.check_body(child)
-        closing = not new_body and (bool(self._graph.links_of(child)) or linking)
-        graph = self._graph.with_connection(parent, child, joint, label=label)
-        link = graph.links[-1]
-        if closing or linking:
-            rows = closure_conditions(link, meets=meets)
-        if not closing:
-            if not linking:
-                R = self._galilean
-                at = joint.at
-                motion = child.kinematic_torsor(relative_to=R, at=at) + (
-                    -parent.kinematic_torsor(relative_to=R, at=at))
-                joint.check(motion)
-            parent_coordinates = set() if parent is self._ground else set(
-                _body_coordinates(parent))
-            self._claim(child, [q for q in _body_coordinates(child)
-                                if q not in parent_coordinates],
-                        f"the connection {parent.name} -> {child.name}")
-            if not linking:
-                self._joints[child] = (parent, joint)
-        if closing or linking:
-            self._closures.append((link, tuple(rows)))
-            if meets is not None:
-                self._meets[id(link)] = meets
-        self._graph = graph
-        if new_body:
-            for q, rank in declared_ranks(_body_coordinates(child)).items():
-                self._ranks.setdefault(q, rank)
-        self._cache.clear()
-
-    def _check_linking_solids(self, parent, child, conn):
-        ends = tuple(s.frame for s in conn.solids)
-        # RollingContact: (moving S2, other S1); GearMesh: (first S1, second S2)
-        expected = (child.frame, parent.frame) if hasattr(conn, "contact") else (
-            parent.frame, child.frame)
-        if ends != expected:
-            raise ConnectionError_(
-                f"{type(conn).__name__} joins the frames {ends[0].name} and {ends[1].name}, "
-                f"but connects {parent.name} (frame {parent.frame.name}) and {child.name} "
-                f"(frame {child.frame.name}) here: build it on the frames of the two bodies "
-                "(the rolling solid as `child`, the driven gear as `child`).")
-
-    def _touch(self, parent, child, contact):
-        """Record a one-sided contact with friction (a :class:`~rigidmech.actions.
-        FrictionContact`): its action depends on the regime (stick, slip, open), so it is
-        left out of :meth:`equations_of_motion`; :func:`rigidmech.regimes.contact_motion`
-        derives each regime from the system."""
-        if child is self._ground:
-            raise ConnectionError_(
-                "`child` cannot be the Galilean reference: connect bodies to it as parent.")
-        if parent is not self._ground and parent not in self._bodies:
-            raise ConnectionError_(f"connect the parent {parent.name} before its children.")
-        self._check_linking_solids(parent, child, contact)
-        if child not in self._bodies:
-            self.add(child)
-        self._contacts.append((parent, child, contact))
-        self._cache.clear()
+        _tree.connect(self, parent, child, joint, meets, label)
 
     @property
     def contacts(self) -> tuple:
@@ -477,69 +323,17 @@ class System(LinkedParameters):
         >>> s.coordinates
         (x(t), y(t), z(t), psi(t), theta(t), phi(t))
         """
-        if self._given_coordinates is not None:
-            return self._given_coordinates
-        if "coordinates" in self._cache:
-            return self._cache["coordinates"]
-        exprs = []
-        for b in self._bodies:
-            exprs.extend(_frame_exprs(b.frame))
-            exprs.extend(x for _, c in b.centre.position.parts for x in c)
-        found = declared_order(_coordinates_in(exprs), ranks=self._ranks)
-        if not found:
-            raise ArgumentError("the system has no parameter of situation: nothing moves.")
-        self._cache["coordinates"] = tuple(found)
-        return self._cache["coordinates"]
+        return _tree.ordered_coordinates(self)
 
     # -- derivations --------------------------------------------------------------------
-    def _symbols(self):
-        """Plain symbols q, q_dot, q_ddot for q(t), q'(t), q''(t) and the rule between
-        them: not used in the results (which keep q(t)), offered by :meth:`symbols`."""
-        if "symbols" not in self._cache:
-            qs = self.coordinates
-            names = [q.func.__name__ for q in qs]
-            q_sym = tuple(sp.Symbol(n, real=True) for n in names)
-            u_sym = tuple(sp.Symbol(n + "_dot", real=True) for n in names)
-            a_sym = tuple(sp.Symbol(n + "_ddot", real=True) for n in names)
-            rule = {}
-            for q, qs_, us, as_ in zip(qs, q_sym, u_sym, a_sym, strict=True):
-                rule[q.diff(t, 2)] = as_
-                rule[q.diff(t)] = us
-                rule[q] = qs_
-            self._cache["symbols"] = (q_sym, u_sym, a_sym, rule)
-        return self._cache["symbols"]
-
     def _contributions(self):
-        if "contributions" not in self._cache:
-            solids = [self._ground, *self._bodies]
-            out = []
-            for action in self._actions:
-                for solid, torsor in action.contributions(solids):
-                    if solid is not self._ground:
-                        out.append((solid, torsor, action))
-            self._cache["contributions"] = out
-        return self._cache["contributions"]
+        """The actions' contributions (solid, torsor, action) on the bodies (cached)."""
+        return _derivation.contributions(self)
 
     def _partials(self, solid, point):
         """Partial kinematic torsor elements (Omega_i, V_i(point)) of ``solid`` for each
-        parameter q_i, in function form (ch. 25.1.2).
-
-        V_i(P) = d(O_R P)/dq_i |_R for the anchor of the solid, transported to P with
-        Omega_i = d omega / d q_i': no differentiation of velocity expressions is needed.
-        """
-        key = ("partials", solid, point)
-        if key not in self._cache:
-            R = self._galilean
-            anchor_pos = solid.anchor - R.origin
-            out = []
-            for q in self.coordinates:
-                W = partial_rotation_vector(solid.frame, R, q)
-                V = anchor_pos.diff(q, R)
-                if point != solid.anchor and not W.is_zero:
-                    V = V + W.cross(point - solid.anchor)
-                out.append((W, V))
-            self._cache[key] = out
-        return self._cache[key]
+        parameter q_i (ch. 25.1.2; cached)."""
+        return _derivation.partials(self, solid, point)
 
     def equations_of_motion(self, *, open_contacts: bool = False) -> EquationsOfMotion:
         """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns,
@@ -555,70 +349,7 @@ class System(LinkedParameters):
         is a snapshot: changing the system afterwards (``act``, ``connect``) leaves it as it
         is, its energy included.
         """
-        if self._contacts and not open_contacts:
-            raise ConnectionError_(
-                f"the system has {len(self._contacts)} one-sided contact(s) with friction "
-                "whose equations change with the regime (stick, slip, lift-off): integrate it "
-                "with rigidmech.regimes.contact_motion, or pass open_contacts=True for the "
-                "equations with the contacts open.")
-        if "eom" in self._cache:
-            return self._cache["eom"]
-        R = self._galilean
-        n = len(self.coordinates)
-        no_acc = {sp.Derivative(q, (t, 2)): 0 for q in self.coordinates}  # no diff: cheap
-        # Terms are collected in lists and summed once: adding to a growing sympy sum
-        # re-sorts it at every step.
-        M_terms = [[[] for _ in range(n)] for _ in range(n)]
-        f_terms = [[] for _ in range(n)]
-        for body in self._bodies:
-            if not body.mass:
-                continue
-            parts = self._partials(body, body.centre)
-            m = body.mass
-            # accelerations without the q'' terms (they make up M q'')
-            a0 = body.centre.velocity(R).dt(R).xreplace(no_acc)
-            J = body.inertia
-            if J is not None:
-                w = body.rotation_vector(R)
-                d0 = J.apply(w).dt(R).xreplace(no_acc)
-                JW = [J.apply(Wi) if not Wi.is_zero else Vector.zero() for Wi, _ in parts]
-            for i in range(n):
-                Wi, Vi = parts[i]
-                if Wi.is_zero and Vi.is_zero:
-                    continue
-                f_terms[i].append(-m * a0.dot(Vi))
-                if J is not None:
-                    f_terms[i].append(-d0.dot(Wi))
-                for j in range(i, n):
-                    Wj, Vj = parts[j]
-                    M_terms[i][j].append(m * Vi.dot(Vj))
-                    if J is not None:
-                        M_terms[i][j].append(JW[j].dot(Wi))
-        for solid, torsor, _ in self._contributions():
-            parts = self._partials(solid, torsor.point)
-            for i in range(n):
-                Wi, Vi = parts[i]
-                f_terms[i].append(torsor.resultant.dot(Vi))
-                f_terms[i].append(torsor.moment.dot(Wi))
-        M = [[sp.Add(*M_terms[i][j]) if j >= i else None for j in range(n)] for i in range(n)]
-        for i in range(n):
-            for j in range(i):
-                M[i][j] = M[j][i]
-        f = [sp.Add(*terms) for terms in f_terms]
-        bodies, actions = tuple(self._bodies), tuple(self._actions)
-        eqs = EquationsOfMotion(
-            coordinates=self.coordinates, mass_matrix=sp.ImmutableMatrix(M),
-            forcing=sp.ImmutableMatrix(n, 1, f),
-            energy=partial(_mechanical_energy, R, (self._ground, *bodies), bodies, actions),
-            model_parameters=partial(_constants, bodies, tuple(self._contributions())),
-            singular_sets=partial(orientation_singularities, tuple(bodies), R),
-            kinetic_energy=partial(_kinetic_energy, R, bodies), system=self,
-            constraints=self.constraints())
-        # frames oriented by Euler parameters: add e . e'' = -e' . e' (their M is singular)
-        eqs = _euler_parameters.complete(eqs, _euler_parameters.euler_parameter_groups(
-            bodies, self.coordinates))
-        self._cache["eom"] = eqs
-        return eqs
+        return _derivation.equations_of_motion(self, open_contacts)
 
     @property
     def parameters(self) -> tuple:
@@ -637,33 +368,23 @@ class System(LinkedParameters):
         >>> s.parameters, s.equations_of_motion().parameters
         ((a, m), (m,))
         """
-        if "parameters" not in self._cache:
-            self._cache["parameters"] = _constants(tuple(self._bodies),
-                                                   tuple(self._contributions()))
-        return self._cache["parameters"]
+        return _derivation.parameters(self)
 
     def mechanical_energy(self):
         """Total mechanical energy T + V with q(t), q'(t), or None if an action has no
         potential."""
-        return _mechanical_energy(self._galilean, (self._ground, *self._bodies),
-                                  tuple(self._bodies), tuple(self._actions))
+        return _derivation.mechanical_energy(self)
 
     def kinetic_energy(self):
         """Kinetic energy of the set of bodies relative to the reference of the equations
         (:attr:`reference`, the Galilean one by default; ch. 16.3.3), in terms of q(t) and
         q'(t)."""
-        return sp.Add(*[b.kinetic_energy(self._galilean) for b in self._bodies if b.mass])
+        return _derivation.kinetic_energy_of(self)
 
     def generalized_forces(self):
         """Power coefficients Q_i of the given actions (ch. 25.1.3), with q(t), q'(t): the
         power of the actions is sum Q_i q_i'."""
-        n = len(self.coordinates)
-        Q = [[] for _ in range(n)]
-        for solid, torsor, _ in self._contributions():
-            parts = self._partials(solid, torsor.point)
-            for i, (Wi, Vi) in enumerate(parts):
-                Q[i].append(torsor.resultant.dot(Vi) + torsor.moment.dot(Wi))
-        return sp.ImmutableMatrix(n, 1, [sp.Add(*terms) for terms in Q])
+        return _derivation.generalized_forces(self)
 
     def orientation_singularities(self) -> tuple:
         """The singular sets of the angles orienting the bodies (book, ch. 9.1.2): for each
@@ -688,16 +409,9 @@ class System(LinkedParameters):
         derivatives, and the rule that replaces q(t) and its derivatives by them, for whoever
         wants expressions in plain symbols: ``expr.xreplace(rule)``. rigidmech's own results
         keep q(t)."""
-        return self._symbols()
+        return _derivation.symbols(self)
 
     # -- connection actions -------------------------------------------------------------
-    def _subtree(self, body):
-        out = [body]
-        for child, (parent, _) in self._joints.items():
-            if parent is body:
-                out.extend(self._subtree(child))
-        return out
-
     def connection_action(self, parent, child, *, label=None) -> Torsor:
         """The action exerted by ``parent`` on ``child`` through their connection (ch. 18.2),
         reduced at the joint's point.
@@ -738,62 +452,7 @@ class System(LinkedParameters):
         >>> s.connection_action(R0, s.bodies[0]).resultant
         -L*m*Derivative(q(t), t)**2*R1.i + L*m*Derivative(q(t), (t, 2))*R1.j - g*m*R0.i
         """
-        parent = self._solid(parent, "parent")
-        child = self._solid(child, "child")
-        if self._contacts:
-            raise ConnectionError_(
-                "the system has one-sided contacts with friction whose actions depend on the "
-                "regime: its connection actions would miss them (see "
-                "rigidmech.regimes.contact_motion and ContactMotion.contact_actions).")
-        link = self._link(parent, child, label)
-        key = ("action", id(link))
-        if key in self._cache:
-            return self._cache[key]
-        actions = self._closure_actions()
-        own = next((rows for k, rows in actions if k is link), None)
-        tree = any(k is link for k in self._graph.tree_links())
-        if own is not None and any(f is None for _, f in own) or (
-                actions and any(f is None for k, rows in actions if k is not link
-                                for _, f in rows)):
-            raise ConnectionError_(
-                "a linking connection of this system has no action torsor for its multiplier "
-                "(a gear mesh whose power is not proportional to its ratio condition): its "
-                "connection actions are not derived.")
-        if not tree:
-            P = self._meets.get(id(link))
-            P = P.origin if isinstance(P, Frame) else P
-            if P is None:
-                P = next((T.point for _, forces in own for solid, T in forces
-                          if solid is child), None) or link.connection.at
-            total = Torsor.zero(P)
-            for lam, forces in own:
-                for solid, T in forces:
-                    if solid is child:
-                        total = total + lam * T
-            result = total.at(P)
-        else:
-            conn = link.connection
-            P = conn.contact.point if hasattr(conn, "contact") else conn.at
-            carried = (self._subtree(child) if not self._closures
-                       else list(self._graph.carried_by(link)))
-            total = Torsor.zero(P)
-            for b in carried:
-                if b.mass:
-                    total = total + b.dynamic_torsor(self._galilean, at=P)
-            for solid, torsor, _ in self._contributions():
-                if solid in carried:
-                    total = total - torsor
-            for k, rows in actions:
-                if k is link:
-                    continue
-                for lam, forces in rows:
-                    for solid, T in forces:
-                        if solid in carried:
-                            total = total - lam * T
-            result = Torsor(total.resultant.compact(), total.moment.compact(), P)
-        self._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
-                                  result.point)
-        return self._cache[key]
+        return _connection_actions.connection_action(self, parent, child, label)
 
     def connection_components(self, parent, child, *, label=None) -> dict:
         """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
@@ -802,18 +461,11 @@ class System(LinkedParameters):
         perfect joint the components it cannot transmit (N for a pivot) vanish once q''
         satisfies the equations of motion.
         """
-        T = self.connection_action(parent, child, label=label)
-        child = self._solid(child, "child")
-        joint = self._link(self._solid(parent, "parent"), child, label).connection
-        if not callable(getattr(joint, "components", None)):
-            raise ConnectionError_(
-                f"the connection to {child.name} has no local components (a rolling contact "
-                "or a gear mesh): use connection_action.")
-        return dict(joint.components(T))
+        return _connection_actions.connection_components(self, parent, child, label)
 
     def joint(self, child):
         """The (parent solid, joint) of a body."""
-        child = self._solid(child, "child")
+        child = _tree.solid(self, child, "child")
         if child not in self._joints:
             raise ConnectionError_(f"body {child.name} has no parent connection.")
         return self._joints[child]
