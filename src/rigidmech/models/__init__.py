@@ -5,7 +5,8 @@ bodies, connections, actions) and returns a :class:`Model`: the system and its h
 (coordinates, constants, frames, bodies, points). The scenes, the tests, the benchmarks and
 the examples import these builders rather than building their own copies.
 
-* :mod:`~rigidmech.models.chains`: compound pendulum, double pendulum, n-link pendulum;
+* :mod:`~rigidmech.models.chains`: compound pendulum, double pendulum (rods or point
+  masses), n-link pendulum;
 * :mod:`~rigidmech.models.loops`: four-bar, chain of four-bars, slider-crank;
 * :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline;
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
@@ -16,7 +17,7 @@ Examples
 --------
 >>> from rigidmech import models
 >>> models.names()[:3]
-('compound_pendulum', 'double_pendulum', 'n_link_pendulum')
+('compound_pendulum', 'double_pendulum', 'point_mass_double_pendulum')
 >>> models.get("four_bar").section
 'ch. 13.2, 25.3.3'
 """
@@ -28,14 +29,19 @@ from typing import NamedTuple
 from .._core.errors import ArgumentError
 from ._model import Model
 from .bicycle import BENCHMARK_BICYCLE, whipple_bicycle
-from .chains import compound_pendulum, double_pendulum, n_link_pendulum
+from .chains import (
+    compound_pendulum,
+    double_pendulum,
+    n_link_pendulum,
+    point_mass_double_pendulum,
+)
 from .contacts import eccentric_disc, sliding_ball
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
 from .loops import CHAIN_COUPLER, FOUR_BAR_LENGTHS, four_bar, four_bar_chain, slider_crank
 from .rolling import rolling_disc, wheel_on_incline
 
 __all__ = ["Model", "Entry", "catalogue", "names", "get",
-           "compound_pendulum", "double_pendulum", "n_link_pendulum",
+           "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
            "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
@@ -64,6 +70,7 @@ class Entry(NamedTuple):
 _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) for f, section in (
     (compound_pendulum, "ch. 22.2.1"),
     (double_pendulum, "ch. 25.4.3, 27.5"),
+    (point_mass_double_pendulum, "ch. 25.4.3, 27.5.2"),
     (n_link_pendulum, "ch. 25.3"),
     (four_bar, "ch. 13.2, 25.3.3"),
     (four_bar_chain, "ch. 25.3.3"),
@@ -99,7 +106,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    14
+    15
     """
     return tuple(_BY_NAME)
 

@@ -1,8 +1,8 @@
 """Open chains of rods on pivots: the compound pendulum, the double pendulum and the planar
 n-link pendulum (book, ch. 22.2.1, 25.3, 25.4.3).
 
-Every rod is uniform (:func:`rigidmech.inertia.rod`), lies along its frame's ``i`` and is
-pivoted about ``k`` at its first end.
+Every rod lies along its frame's ``i`` and is pivoted about ``k`` at its first end; it is
+uniform (:func:`rigidmech.inertia.rod`) but in the point-mass double pendulum (massless rods).
 """
 
 from __future__ import annotations
@@ -17,7 +17,8 @@ from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates
 from ._model import Model
 
-__all__ = ["compound_pendulum", "double_pendulum", "n_link_pendulum"]
+__all__ = ["compound_pendulum", "double_pendulum", "point_mass_double_pendulum",
+           "n_link_pendulum"]
 
 
 def _rod(name, frame, at, m, length, centre_name):
@@ -96,6 +97,42 @@ def double_pendulum() -> Model:
     system.act(gravity(g * R0.i))
     return Model(system, (theta1, theta2), (m, L, g), (R0, R1, R2), (bar1, bar2),
                  (O, A, bar1.centre, bar2.centre))
+
+
+def point_mass_double_pendulum() -> Model:
+    """Two point masses m on massless rods of length l, absolute angles, gravity ``g R0.i``.
+
+    The double pendulum of ch. 25.4.3 and 27.5.2 with the masses concentrated at the rods'
+    ends: q1, q2 the angles of the rods from the downward vertical i about k; the bodies b1
+    and b2 are points at A = O + l i1 and B = A + l i2. Its natural frequencies about the
+    lower equilibrium are w^2 = (g / l)(2 -+ sqrt 2).
+
+    Returns
+    -------
+    Model
+        coordinates (q1, q2), constants (m, l, g), frames (R0, R1, R2), bodies (b1, b2),
+        points (O, A, B).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> models.point_mass_double_pendulum().system.equations_of_motion().mass_matrix[1, 1]
+    l**2*m
+    """
+    q1, q2 = coordinates("q1 q2")
+    m, l, g = constants("m l g", positive=True)
+    R0 = Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    R2 = R0.rotated("R2", about=R0.k, angle=q2)
+    A = R0.origin.moved("A", l * R1.i)
+    B = A.moved("B", l * R2.i)
+    s = System(galilean=R0)
+    b1 = Body("b1", frame=R1, mass=m, centre=A)
+    b2 = Body("b2", frame=R2, mass=m, centre=B)
+    s.connect(R0, b1, Pivot(at=R0.origin, axis=R0.k))
+    s.connect(b1, b2, Pivot(at=A, axis=R0.k))
+    s.act(gravity(g * R0.i))
+    return Model(s, (q1, q2), (m, l, g), (R0, R1, R2), (b1, b2), (R0.origin, A, B))
 
 
 def n_link_pendulum(n: int) -> Model:

@@ -32,7 +32,7 @@ def _bar(name, frame, length, origin, m):
                 inertia=inertia.rod(m, length, axis=frame.i, centre=G))
 
 
-def four_bar(lengths=FOUR_BAR_LENGTHS, gravity=True) -> Model:
+def four_bar(lengths=FOUR_BAR_LENGTHS, gravity=True, stabilization=(5.0, 5.0)) -> Model:
     """The four-bar linkage: crank O-B (q1), coupler B-C (q2, relative to the crank), rocker
     D-C (q3), ground O-D along i; the loop is closed by the pivot at C.
 
@@ -44,6 +44,9 @@ def four_bar(lengths=FOUR_BAR_LENGTHS, gravity=True) -> Model:
         Ground OD, crank OB, coupler BC, rocker DC.
     gravity : bool, default True
         Apply gravity ``-g R0.j`` (without it, g is still among the constants).
+    stabilization : (float, float), default (5.0, 5.0)
+        Baumgarte's coefficients of the closure, passed to
+        :class:`~rigidmech.dynamics.System`.
 
     Returns
     -------
@@ -71,7 +74,7 @@ def four_bar(lengths=FOUR_BAR_LENGTHS, gravity=True) -> Model:
     R3 = R0.rotated("R3", about=k, angle=q3, origin=D)
     crank, coupler, rocker = (_bar("crank", R1, l1, R0.origin, m), _bar("coupler", R2, l2, B, m),
                               _bar("rocker", R3, l3, D, m))
-    s = System(galilean=R0)
+    s = System(galilean=R0, stabilization=stabilization)
     s.connect(R0, crank, Pivot(at=R0.origin, axis=k))
     s.connect(crank, coupler, Pivot(at=B, axis=k))
     s.connect(R0, rocker, Pivot(at=D, axis=k))
@@ -102,7 +105,8 @@ def four_bar_chain(n: int, lengths=FOUR_BAR_LENGTHS, coupler=CHAIN_COUPLER,
     coupler : float, default 2.2
         Length of the couplers after the first.
     stabilization : (float, float), default (5.0, 5.0)
-        Passed to :class:`~rigidmech.dynamics.System`.
+        Baumgarte's coefficients of the closures, passed to
+        :class:`~rigidmech.dynamics.System`.
 
     Returns
     -------
