@@ -15,7 +15,7 @@ def test_sliding_ball_contact_point_is_r_below_the_centre():
     R0 = model.frame("R0")
     assert list(model.point("I").coordinates(R0)) == [x, y, z - r]
     assert model.body("ball").inertia.matrix == sp.eye(3) * 2 * m * r**2 / 5
-    M = model.system.equations_of_motion().mass_matrix
+    M = model.system.equations_of_motion(open_contacts=True).mass_matrix
     assert M[:3, :3] == sp.eye(3) * m
 
 
@@ -39,5 +39,5 @@ def test_eccentric_disc_gap_is_the_height_of_its_centre_minus_r():
     assert sp.simplify(xc - (x - ecc * sp.sin(th))) == 0
     assert sp.simplify(yc - (y + ecc * sp.cos(th))) == 0
     assert sp.simplify(model.point("I").coordinates(R0)[1] - (yc - r)) == 0
-    M = model.system.equations_of_motion().mass_matrix
+    M = model.system.equations_of_motion(open_contacts=True).mass_matrix
     assert sp.simplify(M - sp.diag(m, m, m * r**2 / 2)) == sp.zeros(3, 3)

@@ -7,7 +7,7 @@ from rigidmech import models
 
 
 def _condition(system):
-    (row,) = [phi for _, _, phi in system.closure_conditions()]
+    (row,) = [condition for _, condition, _ in system.closure_conditions()]
     return row
 
 

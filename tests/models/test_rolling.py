@@ -9,7 +9,7 @@ from rigidmech.errors import ArgumentError
 
 
 def _conditions(system):
-    return [phi for _, _, phi in system.closure_conditions()]
+    return [condition for _, condition, _ in system.closure_conditions()]
 
 
 @pytest.mark.parametrize("contact", ["between", "given"])
