@@ -11,6 +11,7 @@ the examples import these builders rather than building their own copies.
 * :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline;
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
 * :mod:`~rigidmech.models.contacts`: a ball sliding then rolling, an eccentric disc rocking;
+* :mod:`~rigidmech.models.tops`: the symmetric heavy top on a ball joint;
 * :mod:`~rigidmech.models.bicycle`: the Whipple bicycle (Meijaard et al. 2007).
 
 Examples
@@ -39,13 +40,14 @@ from .contacts import eccentric_disc, sliding_ball
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
 from .loops import CHAIN_COUPLER, FOUR_BAR_LENGTHS, four_bar, four_bar_chain, slider_crank
 from .rolling import rolling_disc, wheel_on_incline
+from .tops import heavy_top
 
 __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
            "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
-           "sliding_ball", "eccentric_disc",
+           "sliding_ball", "eccentric_disc", "heavy_top",
            "whipple_bicycle", "BENCHMARK_BICYCLE"]
 
 
@@ -82,6 +84,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (sleigh_on_turntable, "ch. 13.1, 25.3.3"),
     (sliding_ball, "ch. 13.1.2"),
     (eccentric_disc, "ch. 13.1, 23.4"),
+    (heavy_top, "ch. 9.4.4, 20"),
     (whipple_bicycle, "ch. 13.1, 25.3.3"),
 ))
 _BY_NAME = {e.name: e for e in _ENTRIES}
@@ -94,7 +97,7 @@ def catalogue() -> tuple:
     --------
     >>> from rigidmech import models
     >>> sorted({e.family for e in models.catalogue()})
-    ['bicycle', 'chains', 'contacts', 'knife', 'loops', 'rolling']
+    ['bicycle', 'chains', 'contacts', 'knife', 'loops', 'rolling', 'tops']
     """
     return _ENTRIES
 
@@ -106,7 +109,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    15
+    16
     """
     return tuple(_BY_NAME)
 
