@@ -102,3 +102,16 @@ def test_model_lookup_by_an_unknown_name_lists_the_known_ones():
     assert model.point("A").name == "A" and model.body("bar2").name == "bar2"
     with pytest.raises(ArgumentError, match=r"one of the model's frames \('R0', 'R1', 'R2'\)"):
         model.frame("R3")
+
+
+def test_cart_pendulum_matches_lagrange_by_hand():
+    # P = (x + L sin th, -L cos th): T = M x'^2 / 2 + m (x'^2 + 2 L cos th x' th' + L^2 th'^2) / 2,
+    # V = -m g L cos th
+    model = models.cart_pendulum()
+    (_, th), (M, m, L, g) = model.coordinates, model.constants
+    eqs = model.system.equations_of_motion()
+    c, s = sp.cos(th), sp.sin(th)
+    assert sp.simplify(eqs.mass_matrix - sp.Matrix([[M + m, m * L * c], [m * L * c, m * L**2]])) \
+        == sp.zeros(2, 2)
+    f = sp.Matrix([m * L * s * th.diff(t) ** 2, -m * g * L * s])
+    assert sp.simplify(eqs.forcing - f) == sp.zeros(2, 1)

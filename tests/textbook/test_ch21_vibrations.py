@@ -125,17 +125,8 @@ def test_ch25_4_3_double_pendulum_natural_modes():
 def test_cart_pendulum_linearised_frequency():
     """Cart M free to slide, point mass m on a rod L: besides the free translation (w = 0),
     w^2 = (M + m) g / (M L)."""
-    x, th = rm.coordinates("x theta")
-    M, m, L, g = rm.constants("M m L g", positive=True)
-    R0 = rm.Frame("R0")
-    Rc = R0.translated("Rc", R0.point("C", x, 0, 0))
-    Rp = Rc.rotated("Rp", about=R0.k, angle=th)
-    s = rm.System(galilean=R0)
-    cart = rm.Body("cart", frame=Rc, mass=M)
-    bob = rm.Body("bob", frame=Rp, mass=m, centre=Rc.origin.moved("P", -L * Rp.j))
-    s.connect(R0, cart, rm.joints.Prismatic(at=Rc.origin, axis=R0.i))
-    s.connect(cart, bob, rm.joints.Pivot(at=Rc.origin, axis=R0.k))
-    s.act(rm.gravity(-g * R0.j))
+    model = models.cart_pendulum()
+    s, (M, m, L, g) = model.system, model.constants
     w0, w1 = linearize(s.equations_of_motion()).modes().frequencies
     assert w0 == 0
     assert sp.simplify(w1**2 - (M + m) * g / (M * L)) == 0

@@ -6,7 +6,7 @@ bodies, connections, actions) and returns a :class:`Model`: the system and its h
 the examples import these builders rather than building their own copies.
 
 * :mod:`~rigidmech.models.chains`: compound pendulum, double pendulum (rods or point
-  masses), n-link pendulum;
+  masses), n-link pendulum, pendulum on a cart;
 * :mod:`~rigidmech.models.loops`: four-bar, chain of four-bars, slider-crank;
 * :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline;
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
@@ -31,6 +31,7 @@ from .._core.errors import ArgumentError
 from ._model import Model
 from .bicycle import BENCHMARK_BICYCLE, whipple_bicycle
 from .chains import (
+    cart_pendulum,
     compound_pendulum,
     double_pendulum,
     n_link_pendulum,
@@ -44,6 +45,7 @@ from .tops import heavy_top
 
 __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
+           "cart_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
            "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
@@ -74,6 +76,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (double_pendulum, "ch. 25.4.3, 27.5"),
     (point_mass_double_pendulum, "ch. 25.4.3, 27.5.2"),
     (n_link_pendulum, "ch. 25.3"),
+    (cart_pendulum, "ch. 21, 24.3"),
     (four_bar, "ch. 13.2, 25.3.3"),
     (four_bar_chain, "ch. 25.3.3"),
     (slider_crank, "ch. 13.2, 25.3.3"),
@@ -109,7 +112,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    16
+    17
     """
     return tuple(_BY_NAME)
 

@@ -1,5 +1,5 @@
-"""Open chains of rods on pivots: the compound pendulum, the double pendulum and the planar
-n-link pendulum (book, ch. 22.2.1, 25.3, 25.4.3).
+"""Open chains of rods on pivots: the compound pendulum, the double pendulum, the planar
+n-link pendulum and the pendulum on a cart (book, ch. 21, 22.2.1, 24.3, 25.3, 25.4.3).
 
 Every rod lies along its frame's ``i`` and is pivoted about ``k`` at its first end; it is
 uniform (:func:`rigidmech.inertia.rod`) but in the point-mass double pendulum (massless rods).
@@ -11,14 +11,14 @@ import sympy as sp
 
 from .. import inertia
 from .._core.errors import ArgumentError
-from ..actions import Pivot, gravity
+from ..actions import Pivot, Prismatic, gravity
 from ..dynamics import System
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates
 from ._model import Model
 
 __all__ = ["compound_pendulum", "double_pendulum", "point_mass_double_pendulum",
-           "n_link_pendulum"]
+           "n_link_pendulum", "cart_pendulum"]
 
 
 def _rod(name, frame, at, m, length, centre_name):
@@ -191,3 +191,38 @@ def n_link_pendulum(n: int) -> Model:
         points.append(P)
     system.act(gravity(-g * R0.j))
     return Model(system, qs, tuple(consts), tuple(frames), tuple(bodies), tuple(points))
+
+
+def cart_pendulum() -> Model:
+    """A cart of mass M sliding along R0.i (x), carrying a point mass m on a massless rod of
+    length L pivoted at the cart's centre C (theta about k, 0 hanging down along -R0.j);
+    gravity ``-g R0.j``.
+
+    Coupled motions of two solids (book, ch. 24.3, 21): besides the free translation, the
+    small oscillations have w^2 = (M + m) g / (M L).
+
+    Returns
+    -------
+    Model
+        coordinates (x, theta), constants (M, m, L, g), frames (R0, Rc, Rp), bodies (cart,
+        bob), points (C, P): P the point mass.
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> models.cart_pendulum().system.equations_of_motion().mass_matrix[0, 0]
+    M + m
+    """
+    x, th = coordinates("x theta")
+    M, m, L, g = constants("M m L g", positive=True)
+    R0 = Frame("R0")
+    Rc = R0.translated("Rc", R0.point("C", x, 0, 0))
+    Rp = Rc.rotated("Rp", about=R0.k, angle=th)
+    cart = Body("cart", frame=Rc, mass=M)
+    P = Rc.origin.moved("P", -L * Rp.j)
+    bob = Body("bob", frame=Rp, mass=m, centre=P)
+    s = System(galilean=R0)
+    s.connect(R0, cart, Prismatic(at=Rc.origin, axis=R0.i))
+    s.connect(cart, bob, Pivot(at=Rc.origin, axis=R0.k))
+    s.act(gravity(-g * R0.j))
+    return Model(s, (x, th), (M, m, L, g), (R0, Rc, Rp), (cart, bob), (Rc.origin, P))
