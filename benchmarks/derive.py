@@ -159,30 +159,12 @@ def _best(func, budget=0.5, repeat=7):
 
 def n_link_pendulum(n):
     """The planar n-link pendulum with rigidmech: uniform rods (masses m_i, lengths l_i) along
-    their frames' x axes, revolute joints, relative angles q_i, gravity -g y. Returns the
-    System (also used by ``costly_rhs.py``)."""
-    import sympy as sp
+    their frames' x axes, revolute joints, relative angles q_i, gravity -g y -- the
+    catalogue's :func:`rigidmech.models.n_link_pendulum`. Returns the System (also used by
+    ``costly_rhs.py``)."""
+    from rigidmech import models
 
-    import rigidmech as rm
-
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
-    if not isinstance(qs, tuple):
-        qs = (qs,)
-    g = sp.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    frame, P, parent = R0, R0.origin, R0
-    system = rm.System(galilean=R0)
-    for i, q in enumerate(qs):
-        m, l = sp.symbols(f"m{i + 1} l{i + 1}", positive=True)
-        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
-        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
-        system.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
-        P = P.moved(f"P{i + 1}", l * frame.i)
-        parent = body
-    system.act(rm.gravity(-g * R0.j))
-    return system
+    return models.n_link_pendulum(n).system
 
 
 def case_ours(n):

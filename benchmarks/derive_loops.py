@@ -32,6 +32,7 @@ Run::
 """
 
 import argparse
+import contextlib
 import json
 import math
 import os
@@ -42,15 +43,13 @@ import time
 import sympy as sp
 import sympy.physics.mechanics as me
 
-import rigidmech as rm
+from rigidmech import models
 from rigidmech.dynamics import System
-from rigidmech.kinematics import ContactKinematics
-from rigidmech.kinematics.surfaces import Circle
 
-L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5
+L0, L1, L2, L3 = models.FOUR_BAR_LENGTHS
 #: coupler of the loops after the first (2.0 would make them parallelograms, whose
 #: singular branch points are no fair test)
-L2B = 2.2
+L2B = models.CHAIN_COUPLER
 
 
 def four_bar_rigidmech():
@@ -60,12 +59,6 @@ def four_bar_rigidmech():
 def four_bar_system(stabilization=(5.0, 5.0)):
     """The four-bar as a rigidmech System (the loop closed by the pivot at C)."""
     return chain_system(1, stabilization)
-
-
-def _bar(name, F, L, O, m):
-    G = O.moved("G" + name, L / 2 * F.i)
-    return rm.Body(name, frame=F, mass=m, centre=G,
-                   inertia=rm.inertia.rod(m, L, axis=F.i, centre=G))
 
 
 class _Clock:
@@ -81,40 +74,35 @@ class _Clock:
             self._last = now
 
 
+@contextlib.contextmanager
+def _timed_connections(clock):
+    """Charge the time before each ``System.connect`` to building frames and bodies, and the
+    call itself to the tree joints or, with ``meets=``, to the closure conditions (the
+    phases of the catalogue's builder, which knows no clock)."""
+    original = System.connect
+
+    def connect(self, *args, **kwargs):
+        clock.mark("frames and bodies")
+        out = original(self, *args, **kwargs)
+        clock.mark("closure conditions" if kwargs.get("meets") is not None
+                   else "tree joints (checked)")
+        return out
+
+    System.connect = connect
+    try:
+        yield
+    finally:
+        System.connect = original
+
+
 def chain_system(n, stabilization=(5.0, 5.0), clock=None):
     """A chain of n four-bars as a rigidmech System (parameters q1, q2, q3, ...: the crank's
     absolute angle, then per loop the coupler's angle relative to its driver and the rocker's
-    absolute angle)."""
-    clock = clock or _Clock()
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, 2 * n + 2)))
-    qs = (qs,) if n == 0 else qs
-    m, g = rm.constants("m g", positive=True)
-    R0 = rm.Frame("R0")
-    k = R0.k
-    s = System(galilean=R0, stabilization=stabilization)
-    R1 = R0.rotated("R1", about=k, angle=qs[0])
-    driver, driver_length = _bar("b1", R1, L1, R0.origin, m), L1
-    clock.mark("frames and bodies")
-    s.connect(R0, driver, rm.joints.Pivot(at=R0.origin, axis=k))
-    clock.mark("tree joints (checked)")
-    for j in range(1, n + 1):
-        a, b = qs[2 * j - 1], qs[2 * j]
-        B = driver.frame.origin.moved(f"B{j}", driver_length * driver.frame.i)
-        Rc = driver.frame.rotated(f"R{2 * j}", about=k, angle=a, origin=B)
-        D = R0.point(f"D{j}", j * L0, 0, 0)
-        Rr = R0.rotated(f"R{2 * j + 1}", about=k, angle=b, origin=D)
-        lc = L2 if j == 1 else L2B
-        coupler, rocker = _bar(f"b{2 * j}", Rc, lc, B, m), _bar(f"b{2 * j + 1}", Rr, L3, D, m)
-        clock.mark("frames and bodies")
-        s.connect(driver, coupler, rm.joints.Pivot(at=B, axis=k))
-        s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))
-        clock.mark("tree joints (checked)")
-        s.connect(coupler, rocker, rm.joints.Pivot(at=B.moved(f"C{j}", lc * Rc.i), axis=k),
-                  meets=D.moved(f"E{j}", L3 * Rr.i))
-        clock.mark("closure conditions")
-        driver, driver_length = rocker, L3
-    s.act(rm.gravity(-g * R0.j))
-    return s
+    absolute angle): the catalogue's :func:`rigidmech.models.four_bar_chain`."""
+    if clock is None:
+        return models.four_bar_chain(n, (L0, L1, L2, L3), L2B, stabilization).system
+    with _timed_connections(clock):
+        return models.four_bar_chain(n, (L0, L1, L2, L3), L2B, stabilization).system
 
 
 def chain_rigidmech(n):
@@ -190,23 +178,9 @@ def four_bar_kane():
 
 def disc_rigidmech(between=False):
     """The rolling disc; with ``between``, its contact point and normal found by
-    ``ContactKinematics.between`` from the disc's rim (a circle) and the plane."""
-    x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
-    m, g, r = rm.constants("m g r", positive=True)
-    R0 = rm.Frame("R0")
-    A = R0.rotated("A", about=R0.k, angle=psi)
-    B = A.rotated("B", about=A.i, angle=th)
-    I0 = R0.point("I0", x, y, 0)
-    G = I0.moved("G", r * B.j)
-    D = B.rotated("D", about=B.k, angle=phi, origin=G)
-    disc = rm.Body("disc", frame=D, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-    s = System(galilean=R0)
-    contact = (ContactKinematics.between(D, Circle(G, r, normal=D.k), R0, rm.Plane(R0.origin, R0.k))
-               if between else ContactKinematics(D, R0, at=I0, normal=R0.k))
-    s.connect(R0, disc, rm.actions.RollingContact(contact))
-    s.act(rm.gravity(-g * R0.k))
-    return s.equations_of_motion()
+    ``ContactKinematics.between`` from the disc's rim (a circle) and the plane (the
+    catalogue's :func:`rigidmech.models.rolling_disc`)."""
+    return models.rolling_disc("between" if between else "given").system.equations_of_motion()
 
 
 def disc_kane():

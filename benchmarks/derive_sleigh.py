@@ -28,24 +28,12 @@ import numpy as np
 import sympy as sp
 import sympy.physics.mechanics as me
 
-import rigidmech as rm
-from rigidmech.dynamics import System
+from rigidmech import models
 
 
 def sleigh_rigidmech():
-    x, y, th = rm.coordinates("x y theta")
-    m, r, g = rm.constants("m r g", positive=True)
-    a = sp.Symbol("a", real=True)
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.rotated("R1", about=R0.k, angle=th, origin=G)
-    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
-    s = System(galilean=R0)
-    s.connect(R0, body, rm.actions.KnifeEdge(body, R0, at=G.moved("P", -a * R1.i),
-                                             direction=R1.i, normal=R0.k))
-    s.act(rm.gravity(-g * R0.k))
-    return s.equations_of_motion()
+    """The catalogue's :func:`rigidmech.models.sleigh` (the blade a behind G, a a symbol)."""
+    return models.sleigh().system.equations_of_motion()
 
 
 def sleigh_kane():

@@ -34,24 +34,11 @@ VALUES = {"m": 1.3, "g": 9.81, "r": 0.7, "Omega": -3.0}
 def case_ours():
     import sympy as sp
 
-    import rigidmech as rm
-    from rigidmech.kinematics import ContactKinematics
+    from rigidmech import models
     from rigidmech.vibrations import linearize
 
     start = time.process_time()
-    x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
-    m, g, r = rm.constants("m g r", positive=True)
-    R0 = rm.Frame("R0")
-    A = R0.rotated("A", about=R0.k, angle=psi)
-    B = A.rotated("B", about=A.i, angle=th)
-    I0 = R0.point("I0", x, y, 0)
-    G = I0.moved("G", r * B.j)
-    D = B.rotated("D", about=B.k, angle=phi, origin=G)
-    disc = rm.Body("disc", frame=D, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-    s = rm.System(galilean=R0)
-    s.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I0, normal=R0.k)))
-    s.act(rm.gravity(-g * R0.k))
+    s = models.rolling_disc("given").system          # contact point and normal given
     lin = linearize(s.equations_of_motion(), about={"theta": sp.pi / 2},
                     velocities={"phi": sp.Symbol("Omega")})
     elapsed = time.process_time() - start

@@ -19,22 +19,16 @@ method with dependent speeds.
 import matplotlib.pyplot as plt
 import numpy as np
 
-import rigidmech as rm
-from rigidmech.kinematics import ContactKinematics
+from rigidmech import models
 
-x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
-m, g, r = rm.constants("m g r", positive=True)
-R0 = rm.Frame("R0")
-A = R0.rotated("A", about=R0.k, angle=psi)             # heading
-B = A.rotated("B", about=A.i, angle=theta)             # lean, about the line of nodes
-I = R0.point("I", x, y, 0)                             # contact point
-G = I.moved("G", r * B.j)                              # centre, in the disc's plane
-D = B.rotated("D", about=B.k, angle=phi, origin=G)     # spin about the disc's axis
-disc = rm.Body("disc", frame=D, mass=m, centre=G,
-               inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-system = rm.System(galilean=R0)
-system.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I, normal=R0.k)))
-system.act(rm.gravity(-g * R0.k))
+# The disc is the catalogue's rolling disc (rigidmech.models.rolling_disc): frames A (heading
+# psi about k), B (lean theta about the line of nodes A.i), D (spin phi about B.k), the contact
+# point I0 = (x, y, 0), the centre G = I0 + r B.j, in the disc's plane; its rolling contact is
+# a RollingContact given the contact point and the normal k of the table.
+model = models.rolling_disc(contact="given")
+system = model.system
+x, y, psi, theta, phi = model.coordinates
+m, g, r = model.constants
 for label, condition, _ in system.closure_conditions():
     print(label, ":", condition, "= 0")
 print(system.mobility())

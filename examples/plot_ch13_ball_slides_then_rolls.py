@@ -19,27 +19,16 @@ import math
 
 import matplotlib.pyplot as plt
 import numpy as np
-import sympy as sp
 
-import rigidmech as rm
-from rigidmech.actions import Coulomb, FrictionContact
-from rigidmech.kinematics import ContactKinematics
+from rigidmech import models
 from rigidmech.regimes import contact_motion
 
-x, y, z, a, b, c = rm.coordinates("x y z a b c")
-m, r, g = sp.symbols("m r g", positive=True)
-R0 = rm.Frame("R0")
-C = R0.point("C", x, y, z)
-Ra = R0.rotated("Ra", about=R0.i, angle=a, origin=C)
-Rb = Ra.rotated("Rb", about=Ra.j, angle=b)
-Rc = Rb.rotated("Rc", about=Rb.k, angle=c)
-ball = rm.Body("ball", frame=Rc, mass=m, centre=C,
-               inertia=rm.inertia.sphere(m, r, frame=Rc, centre=C))
-system = rm.System(galilean=R0)
+# the catalogue's ball (rigidmech.models.sliding_ball): centre C = (x, y, z), orientation by
+# the rotations a (about i), b (about the new j), c (about the new k); a FrictionContact with
+# Coulomb's law at I = (x, y, z - r), normal k, and gravity -g k
 mu = 0.3
-system.connect(R0, ball, FrictionContact(ContactKinematics(
-    Rc, R0, at=R0.point("I", x, y, z - r), normal=R0.k), friction=Coulomb(mu)))
-system.act(rm.gravity(-g * R0.k))
+model = models.sliding_ball(mu)
+system = model.system
 
 # %%
 # Launched without spin, then with a spin across the velocity

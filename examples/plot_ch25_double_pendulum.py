@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech import scenes
+from rigidmech import models, scenes
 
 theta1, theta2 = rm.coordinates("theta1 theta2")
 m, L, g = rm.constants("m L g", positive=True)
@@ -95,7 +95,12 @@ fig.tight_layout()
 # %%
 # The same from the catalogue
 # ---------------------------
-# The scene ``double-pendulum`` builds this very system; ``python -m rigidmech run
-# double-pendulum`` prints the report below from the command line.
+# The catalogue's builder :func:`rigidmech.models.double_pendulum` builds this very system
+# (same symbols, same equations) and returns it with its handles (coordinates, constants,
+# frames, bodies, points); the scene ``double-pendulum`` uses it, and ``python -m rigidmech
+# run double-pendulum`` prints the report below from the command line.
+model = models.double_pendulum()
+same = model.system.equations_of_motion()
+print(same.mass_matrix == eqs.mass_matrix and same.forcing == eqs.forcing)
 report = scenes.run("double-pendulum", t_end=10.0)
 print(report)

@@ -15,23 +15,15 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-import rigidmech as rm
+from rigidmech import models
 from rigidmech.vibrations import linearize
 
-theta1, theta2 = rm.coordinates("theta1 theta2")
-m, L, g = rm.constants("m L g", positive=True)
-R0 = rm.Frame("R0")                                       # i0 points down
-R1 = R0.rotated("R1", about=R0.k, angle=theta1)
-R2 = R0.rotated("R2", about=R0.k, angle=theta2)
-A = R0.origin.moved("A", L * R1.i)
-G1 = R0.origin.moved("G1", L / 2 * R1.i)
-G2 = A.moved("G2", L / 2 * R2.i)
-bar1 = rm.Body("bar1", frame=R1, mass=m, centre=G1, inertia=rm.inertia.rod(m, L, axis=R1.i))
-bar2 = rm.Body("bar2", frame=R2, mass=m, centre=G2, inertia=rm.inertia.rod(m, L, axis=R2.i))
-system = rm.System(galilean=R0)
-system.connect(R0, bar1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-system.connect(bar1, bar2, rm.joints.Pivot(at=A, axis=R0.k))
-system.act(rm.gravity(g * R0.i))
+# the catalogue's double pendulum (rigidmech.models.double_pendulum): absolute angles theta1,
+# theta2 from the downward vertical i0, uniform rods, gravity g i0
+model = models.double_pendulum()
+system = model.system
+theta1, theta2 = model.coordinates
+m, L, g = model.constants
 
 lin = linearize(system.equations_of_motion())
 print(lin.M)

@@ -17,36 +17,19 @@ curve drawn by a point of the coupler.
 import matplotlib.pyplot as plt
 import numpy as np
 
-import rigidmech as rm
+from rigidmech import models
 
+# the catalogue's four-bar (rigidmech.models.four_bar): crank R1 (q1), coupler R2 (q2,
+# relative to the crank) pivoted at B, rocker R3 (q3) pivoted at D = (L0, 0); the pivot at C
+# closes the loop: the coupler's C meets the rocker's C3
 L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5          # ground, crank, coupler, rocker
-q1, q2, q3 = rm.coordinates("q1 q2 q3")
-m, g = rm.constants("m g", positive=True)
-R0 = rm.Frame("R0")
+model = models.four_bar(lengths=(L0, L1, L2, L3))
+system = model.system
+q1, q2, q3 = model.coordinates
+m, g = model.constants
+R0, R1, R2, R3 = model.frames
+B = model.point("B")
 k = R0.k
-R1 = R0.rotated("R1", about=k, angle=q1)              # crank
-B = R0.origin.moved("B", L1 * R1.i)
-R2 = R1.rotated("R2", about=k, angle=q2, origin=B)   # coupler, angle relative to the crank
-D = R0.point("D", L0, 0, 0)
-R3 = R0.rotated("R3", about=k, angle=q3, origin=D)   # rocker
-
-
-def rod(name, frame, length, start):
-    G = start.moved("G" + name, length / 2 * frame.i)
-    return rm.Body(name, frame=frame, mass=m, centre=G,
-                   inertia=rm.inertia.rod(m, length, axis=frame.i, centre=G))
-
-
-crank, coupler, rocker = rod("crank", R1, L1, R0.origin), rod("coupler", R2, L2, B), rod(
-    "rocker", R3, L3, D)
-system = rm.System(galilean=R0)
-system.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
-system.connect(crank, coupler, rm.joints.Pivot(at=B, axis=k))
-system.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))
-# the pivot at C closes the loop: C of the coupler meets C of the rocker
-system.connect(coupler, rocker, rm.joints.Pivot(at=B.moved("C", L2 * R2.i), axis=k),
-               meets=D.moved("C3", L3 * R3.i))
-system.act(rm.gravity(-g * R0.j))
 for label, _, phi in system.closure_conditions():
     print(label, ":", phi, "= 0")
 

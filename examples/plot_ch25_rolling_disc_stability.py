@@ -21,23 +21,15 @@ import matplotlib.pyplot as plt
 import numpy as np
 import sympy as sp
 
-import rigidmech as rm
-from rigidmech.kinematics import ContactKinematics
+from rigidmech import models
 from rigidmech.vibrations import linearize
 
-x, y, psi, theta, phi = rm.coordinates("x y psi theta phi")
-m, g, r = rm.constants("m g r", positive=True)
-R0 = rm.Frame("R0")
-A = R0.rotated("A", about=R0.k, angle=psi)             # heading
-B = A.rotated("B", about=A.i, angle=theta)             # lean: pi/2 is upright
-I = R0.point("I", x, y, 0)                             # contact point
-G = I.moved("G", r * B.j)
-D = B.rotated("D", about=B.k, angle=phi, origin=G)     # spin
-disc = rm.Body("disc", frame=D, mass=m, centre=G,
-               inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-system = rm.System(galilean=R0)
-system.connect(R0, disc, rm.actions.RollingContact(ContactKinematics(D, R0, at=I, normal=R0.k)))
-system.act(rm.gravity(-g * R0.k))
+# the catalogue's disc (rigidmech.models.rolling_disc): heading psi, lean theta (pi/2 is
+# upright), spin phi; the contact point (x, y, 0) and the normal of the table given
+model = models.rolling_disc(contact="given")
+system = model.system
+x, y, psi, theta, phi = model.coordinates
+m, g, r = model.constants
 eqs = system.equations_of_motion()
 
 Omega = sp.Symbol("Omega")                             # spin rate: v = -r Omega along x

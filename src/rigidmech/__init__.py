@@ -78,6 +78,10 @@ from .systems import Mechanism  # noqa: E402
 
 __all__ += ["systems", "Mechanism"]
 
+from . import models  # noqa: E402
+
+__all__ += ["models"]
+
 from ._core.deprecation import deprecated_aliases  # noqa: E402
 
 # ``rm.Contact`` was ContactLaws (rigidmech.kinematics.Contact another class): renamed

@@ -7,6 +7,7 @@ import pytest
 import sympy as sp
 
 import rigidmech as rm
+from rigidmech import models
 from rigidmech._core.errors import ArgumentError
 from rigidmech.actions import Damper, TorsionalDamper, TorsionSpring, wire_torsional_stiffness
 from rigidmech.vibrations import linearize
@@ -15,18 +16,12 @@ from rigidmech.vibrations import linearize
 def cart_pendulum_with_dampers():
     """A cart (x) with a pendulum (theta); an oblique damper from a fixed point to the bob,
     a torsional damper and a torsion spring at the pivot, a spring to the wall."""
-    x, th = rm.coordinates("x theta")
-    M, m, L, g, c1, c2, k, kt = rm.constants("M m L g c1 c2 k k_t", positive=True)
-    R0 = rm.Frame("R0")
-    Rc = R0.translated("Rc", R0.point("C", x, 0, 0))
-    Rp = Rc.rotated("Rp", about=R0.k, angle=th)
-    cart = rm.Body("cart", frame=Rc, mass=M)
-    P = Rc.origin.moved("P", -L * Rp.j)
-    bob = rm.Body("bob", frame=Rp, mass=m, centre=P)
-    s = rm.System(galilean=R0)
-    s.connect(R0, cart, rm.joints.Prismatic(at=Rc.origin, axis=R0.i))
-    s.connect(cart, bob, rm.joints.Pivot(at=Rc.origin, axis=R0.k))
-    s.act(rm.gravity(-g * R0.j))
+    model = models.cart_pendulum()
+    s, (x, th) = model.system, model.coordinates
+    c1, c2, k, kt = rm.constants("c1 c2 k k_t", positive=True)
+    R0, Rc, _ = model.frames
+    cart, bob = model.bodies
+    P = model.point("P")
     s.act(rm.Spring(k, 0, a=R0.origin, b=Rc.origin, on_b=cart))
     dampers = [Damper(c1, a=R0.point("A", -2, -3, 0), b=P, on_b=bob),
                TorsionalDamper(c2, axis=R0.k, on=bob, reaction_on=cart)]

@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech import scenes
+from rigidmech import models, scenes
 from rigidmech._core.errors import (
     RigidmechWarning,
     SingularityWarning,
@@ -29,18 +29,9 @@ TOP = dict(m=1.0, g=9.81, l=0.3, A=0.05, C=0.02)
 
 def heavy_top():
     """Symmetric heavy top: fixed point O, mass centre at l on its axis R.k, gravity -g k0,
-    moments A (about axes through G normal to the axis) and C (about the axis)."""
-    psi, theta, phi = rm.coordinates("psi theta phi")
-    m, g, l, A, C = rm.constants("m g l A C", positive=True)
-    R0 = rm.Frame("R0")
-    R = R0.euler("R", psi, theta, phi)
-    G = R0.origin.moved("G", l * R.k)
-    top = rm.Body("top", frame=R, mass=m, centre=G,
-                  inertia=InertiaOperator.from_products(A, A, C, frame=R, at=G))
-    system = rm.System(galilean=R0)
-    system.connect(R0, top, rm.joints.Spherical(at=R0.origin))
-    system.act(rm.gravity(-g * R0.k))
-    return system
+    moments A (about axes through G normal to the axis) and C (about the axis): the
+    catalogue's :func:`rigidmech.models.heavy_top`."""
+    return models.heavy_top().system
 
 
 def free_body():

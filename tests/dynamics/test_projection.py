@@ -12,40 +12,14 @@ rounding level (< 1e-8 is the claim), without it and without Baumgarte it drifts
 import numpy as np
 import pytest
 
-import rigidmech as rm
-from rigidmech import ode
+from rigidmech import models, ode
 from rigidmech._core.errors import ArgumentError
-from rigidmech.dynamics import System
 
 L0, L1, L2, L3 = 2.0, 1.0, 2.0, 1.5
 
 
 def four_bar(stabilization):
-    q1, q2, q3 = rm.coordinates("q1 q2 q3")
-    m, g = rm.constants("m g", positive=True)
-    R0 = rm.Frame("R0")
-    k = R0.k
-    R1 = R0.rotated("R1", about=k, angle=q1)
-    B = R0.origin.moved("B", L1 * R1.i)
-    R2 = R1.rotated("R2", about=k, angle=q2, origin=B)
-    D = R0.point("D", L0, 0, 0)
-    R3 = R0.rotated("R3", about=k, angle=q3, origin=D)
-
-    def bar(name, F, L, O):
-        G = O.moved("G" + name, L / 2 * F.i)
-        return rm.Body(name, frame=F, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, L, axis=F.i, centre=G))
-
-    crank, coupler, rocker = (bar("crank", R1, L1, R0.origin), bar("coupler", R2, L2, B),
-                              bar("rocker", R3, L3, D))
-    s = System(galilean=R0, stabilization=stabilization)
-    s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
-    s.connect(crank, coupler, rm.joints.Pivot(at=B, axis=k))
-    s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))
-    s.connect(coupler, rocker, rm.joints.Pivot(at=B.moved("C", L2 * R2.i), axis=k),
-              meets=D.moved("C3", L3 * R3.i))
-    s.act(rm.gravity(-g * R0.j))
-    return s
+    return models.four_bar((L0, L1, L2, L3), stabilization=stabilization).system
 
 
 def run(stabilization, project, t_end=100.0):

@@ -372,28 +372,10 @@ def test_no_stiffness_warning_on_non_stiff_problems(problem):
 
 def _n_link_pendulum(n):
     """fun(t, y) of the planar n-link pendulum, derived and compiled by rigidmech (unit rods)."""
-    import sympy as sp
+    from rigidmech import models
 
-    import rigidmech as rm
-
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
-    g = sp.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    frame, P, parent = R0, R0.origin, R0
-    system = rm.System(galilean=R0)
-    params = {"g": 9.81}
-    for i, q in enumerate(qs):
-        m, l = sp.symbols(f"m{i + 1} l{i + 1}", positive=True)
-        params |= {m.name: 1.0, l.name: 1.0}
-        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
-        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
-        system.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
-        P = P.moved(f"P{i + 1}", l * frame.i)
-        parent = body
-    system.act(rm.gravity(-g * R0.j))
-    return system.equations_of_motion().rhs(**params)
+    params = {"g": 9.81} | {f"{c}{i}": 1.0 for i in range(1, n + 1) for c in "ml"}
+    return models.n_link_pendulum(n).system.equations_of_motion().rhs(**params)
 
 
 def test_no_stiffness_warning_from_rounding_at_tight_tolerance():

@@ -13,6 +13,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 import rigidmech as rm
+from rigidmech import models
 from rigidmech.actions import Coulomb, Force, FrictionContact, Spring
 from rigidmech.errors import ArgumentError, ArgumentTypeError, ConnectionError_
 from rigidmech.kinematics import ContactKinematics
@@ -66,21 +67,9 @@ def cylinder_system(law, beta_body="disk"):
 
 def ball_system(mu):
     """A solid ball of radius r on the plane z = 0, centre (x, y, z), oriented by the
-    rotations a (about i), b (about the new j), c (about the new k)."""
-    x, y, z, a, b, c = rm.coordinates("x y z a b c")
-    m, r, g = sp.symbols("m r g", positive=True)
-    R0 = rm.Frame("R0")
-    C = R0.point("C", x, y, z)
-    Ra = R0.rotated("Ra", about=R0.i, angle=a, origin=C)
-    Rb = Ra.rotated("Rb", about=Ra.j, angle=b)
-    Rc = Rb.rotated("Rc", about=Rb.k, angle=c)
-    ball = rm.Body("ball", frame=Rc, mass=m, centre=C,
-                   inertia=rm.inertia.sphere(m, r, frame=Rc, centre=C))
-    s = rm.System(galilean=R0)
-    s.connect(R0, ball, FrictionContact(ContactKinematics(
-        Rc, R0, at=R0.point("I", x, y, z - r), normal=R0.k), friction=Coulomb(mu)))
-    s.act(rm.gravity(-g * R0.k))
-    return s
+    rotations a (about i), b (about the new j), c (about the new k): the catalogue's
+    :func:`rigidmech.models.sliding_ball`."""
+    return models.sliding_ball(mu).system
 
 
 RENAME = {"stick": "stick", "rolling": "stick", "slipping+": "slip+", "slipping-": "slip-",

@@ -11,10 +11,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-import rigidmech as rm
-from rigidmech.actions import Coulomb, FrictionContact
+from rigidmech import models
 from rigidmech.errors import ArgumentError
-from rigidmech.kinematics import ContactKinematics
 from rigidmech.regimes import contact_motion
 
 R, E, TH0 = 0.1, 0.03, 0.5
@@ -22,19 +20,10 @@ R, E, TH0 = 0.1, 0.03, 0.5
 
 @pytest.fixture(scope="module")
 def rocking():
-    x, y, th = rm.coordinates("x y theta")
-    m, r, ecc, g = sp.symbols("m r ecc g", positive=True)
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.rotated("R1", about=R0.k, angle=th, origin=G)
-    xc, yc, _ = G.moved("C", ecc * R1.j).coordinates(R0)
-    disk = rm.Body("disk", frame=R1, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
-    s = rm.System(galilean=R0)
-    s.connect(R0, disk, FrictionContact(
-        ContactKinematics(R1, R0, at=R0.point("I", xc, yc - r, 0), normal=R0.j),
-        friction=Coulomb(0.8), gap=yc - r))
-    s.act(rm.gravity(-g * R0.j))
+    model = models.eccentric_disc(0.8)
+    s = model.system
+    r, ecc = model.constant("r"), model.constant("ecc")
+    xc, yc, _ = model.point("C").coordinates(model.frame("R0"))
     q_sym, _, _, rule = s.symbols()
     centre = sp.lambdify(q_sym, [e.xreplace(rule).subs({ecc: E, r: R}) for e in (xc, yc)])
     return s, centre

@@ -1,50 +1,27 @@
 """Rolling models shared by the tests: a wheel on an incline (planar) and a disc rolling on a
-plane (3D), built with rigidmech and with sympy.physics.mechanics."""
+plane (3D), from the catalogue :mod:`rigidmech.models` and, independently, with
+sympy.physics.mechanics (the Kane route is never built from the catalogue)."""
 
 import sympy as sp
 import sympy.physics.mechanics as me
 
-import rigidmech as rm
-from rigidmech.dynamics import System
-from rigidmech.kinematics import Circle, ContactKinematics
-from rigidmech.kinematics.surfaces import Plane
+from rigidmech import models
 
 
 def wheel_on_incline(alpha, inertia="disk"):
     """A wheel of radius r on the line through O along Ri.i, inclined by -alpha: x along the
-    slope (downwards positive), theta its rotation."""
-    x, th = rm.coordinates("x theta")
-    m, g, r = rm.constants("m g r", positive=True)
-    R0 = rm.Frame("R0")
-    Ri = R0.rotated("Ri", about=R0.k, angle=-alpha)
-    C = R0.origin.moved("C", x * Ri.i + r * Ri.j)
-    R1 = Ri.rotated("R1", about=R0.k, angle=th, origin=C)
-    J = getattr(rm.inertia, inertia)(m, r, axis=R1.k, centre=C)
-    wheel = rm.Body("wheel", frame=R1, mass=m, centre=C, inertia=J)
-    contact = ContactKinematics.between(R1, Circle(C, r, normal=R0.k), R0, rm.Line(R0.origin, Ri.i))
-    s = System(galilean=R0)
-    s.connect(R0, wheel, rm.actions.RollingContact(contact))
-    s.act(rm.gravity(-g * R0.j))
-    return s, (x, th), (m, g, r)
+    slope (downwards positive), theta its rotation (:func:`rigidmech.models.wheel_on_incline`).
+    Returns ``(system, (x, theta), (m, g, r))``."""
+    m = models.wheel_on_incline(alpha, inertia)
+    return m.system, m.coordinates, m.constants
 
 
 def rolling_disc():
-    """Disc of radius r: contact point (x, y), heading psi, lean theta, spin phi."""
-    x, y, psi, th, phi = rm.coordinates("x y psi theta phi")
-    m, g, r = rm.constants("m g r", positive=True)
-    R0 = rm.Frame("R0")
-    A = R0.rotated("A", about=R0.k, angle=psi)
-    B = A.rotated("B", about=A.i, angle=th)
-    I0 = R0.point("I0", x, y, 0)
-    G = I0.moved("G", r * B.j)
-    D = B.rotated("D", about=B.k, angle=phi, origin=G)
-    disc = rm.Body("disc", frame=D, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=D.k, centre=G))
-    contact = ContactKinematics.between(D, Circle(G, r, normal=D.k), R0, Plane(R0.origin, R0.k))
-    s = System(galilean=R0)
-    s.connect(R0, disc, rm.actions.RollingContact(contact))
-    s.act(rm.gravity(-g * R0.k))
-    return s, (x, y, psi, th, phi), (m, g, r)
+    """Disc of radius r: contact point (x, y), heading psi, lean theta, spin phi, the contact
+    found from the rim and the plane (:func:`rigidmech.models.rolling_disc`). Returns
+    ``(system, (x, y, psi, theta, phi), (m, g, r))``."""
+    m = models.rolling_disc("between")
+    return m.system, m.coordinates, m.constants
 
 
 def rolling_disc_kane():

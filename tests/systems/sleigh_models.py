@@ -1,34 +1,20 @@
 """The Chaplygin sleigh shared by the tests: a body moving on a horizontal plane, its blade
-at the point P = G - a i1 along its axis i1 (G the mass centre), built with rigidmech and
-with sympy.physics.mechanics."""
+at the point P = G - a i1 along its axis i1 (G the mass centre), from the catalogue
+:mod:`rigidmech.models` and, independently, with sympy.physics.mechanics (the Kane route is
+never built from the catalogue)."""
 
 import sympy as sp
 import sympy.physics.mechanics as me
 
-import rigidmech as rm
-from rigidmech.dynamics import System
+from rigidmech import models
 
 
 def sleigh(a=None, *, gravity=True):
     """Coordinates (x, y) of G and heading theta; a uniform disc of mass m and radius r in
-    the plane (moment of inertia J = m r^2 / 2 about the vertical through G); the blade at a
-    distance a behind G (a symbol unless given)."""
-    x, y, th = rm.coordinates("x y theta")
-    m, r, g = rm.constants("m r g", positive=True)
-    if a is None:
-        a = sp.Symbol("a", real=True)
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.rotated("R1", about=R0.k, angle=th, origin=G)
-    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
-    s = System(galilean=R0)
-    knife = rm.actions.KnifeEdge(body, R0, at=G.moved("P", -a * R1.i), direction=R1.i,
-                                 normal=R0.k)
-    s.connect(R0, body, knife)
-    if gravity:
-        s.act(rm.gravity(-g * R0.k))
-    return s, (x, y, th), (m, r, g, a), knife
+    the plane; the blade at a distance a behind G (:func:`rigidmech.models.sleigh`). Returns
+    ``(system, (x, y, theta), (m, r, g, a), knife)``."""
+    m = models.sleigh(a, gravity=gravity)
+    return m.system, m.coordinates, m.constants, m.connections[0]
 
 
 def sleigh_kane():
@@ -39,23 +25,11 @@ def sleigh_kane():
 
 
 def sleigh_on_incline(beta):
-    """The sleigh on a plane inclined by beta about R0.i (normal Ri.k), gravity -g R0.k:
-    G = (x, y) in the plane's axes (Ri.i, Ri.j), heading theta about Ri.k, the blade a
-    behind G and b to its left (P = G - a i1 + b j1)."""
-    x, y, th = rm.coordinates("x y theta")
-    m, r, g = rm.constants("m r g", positive=True)
-    a, b = sp.symbols("a b", real=True)
-    R0 = rm.Frame("R0")
-    Ri = R0.rotated("Ri", about=R0.i, angle=beta)
-    G = R0.origin.moved("G", x * Ri.i + y * Ri.j)
-    R1 = Ri.rotated("R1", about=Ri.k, angle=th, origin=G)
-    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
-    s = System(galilean=R0)
-    s.connect(R0, body, rm.actions.KnifeEdge(body, R0, at=G.moved("P", -a * R1.i + b * R1.j),
-                                             direction=R1.i, normal=Ri.k))
-    s.act(rm.gravity(-g * R0.k))
-    return s, (x, y, th), (m, r, g, a, b)
+    """The sleigh on a plane inclined by beta about R0.i, the blade a behind G and b to its
+    left (:func:`rigidmech.models.sleigh_on_incline`). Returns ``(system, (x, y, theta),
+    (m, r, g, a, b))``."""
+    m = models.sleigh_on_incline(beta)
+    return m.system, m.coordinates, m.constants
 
 
 def sleigh_on_incline_kane(beta):
@@ -91,25 +65,11 @@ def _kane_sleigh(beta, b):
 
 
 def sleigh_on_turntable():
-    """The sleigh on a turntable (a disc of mass M and radius R pivoted about R0.k, angle phi):
-    G = (x, y) in the table's axes, heading theta relative to the table, the blade a behind
-    G; the knife edge joins the table (a body) and the sleigh."""
-    phi, x, y, th = rm.coordinates("phi x y theta")
-    m, r, M, R = rm.constants("m r M R", positive=True)
-    a = sp.Symbol("a", real=True)
-    R0 = rm.Frame("R0")
-    Rt = R0.rotated("Rt", about=R0.k, angle=phi)
-    table = rm.Body("table", frame=Rt, mass=M, centre=Rt.origin,
-                    inertia=rm.inertia.disk(M, R, axis=Rt.k, centre=Rt.origin))
-    G = Rt.origin.moved("G", x * Rt.i + y * Rt.j)
-    R1 = Rt.rotated("R1", about=Rt.k, angle=th, origin=G)
-    body = rm.Body("sleigh", frame=R1, mass=m, centre=G,
-                   inertia=rm.inertia.disk(m, r, axis=R1.k, centre=G))
-    s = System(galilean=R0)
-    s.connect(R0, table, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-    s.connect(table, body, rm.actions.KnifeEdge(body, table, at=G.moved("P", -a * R1.i),
-                                                direction=R1.i, normal=Rt.k))
-    return s, (phi, x, y, th), (m, r, M, R, a)
+    """The sleigh on a turntable pivoted about R0.k by phi
+    (:func:`rigidmech.models.sleigh_on_turntable`). Returns ``(system, (phi, x, y, theta),
+    (m, r, M, R, a))``."""
+    m = models.sleigh_on_turntable()
+    return m.system, m.coordinates, m.constants
 
 
 def sleigh_on_turntable_kane():

@@ -15,6 +15,7 @@ import sympy as sp
 from numpy.testing import assert_allclose
 
 import rigidmech as rm
+from rigidmech import models
 from rigidmech.actions import Damper
 from rigidmech.vibrations import (
     coulomb_stop,
@@ -111,18 +112,8 @@ def test_ch21_5_4_equivalent_damping_of_dry_friction():
 def test_ch25_4_3_double_pendulum_natural_modes():
     """Two equal point masses m on rods l, absolute angles: w^2 = (g/l)(2 -+ sqrt 2),
     shapes (1, +-sqrt 2) (ch. 25.4.3, 27.5.2)."""
-    q1, q2 = rm.coordinates("q1 q2")
-    m, l, g = rm.constants("m l g", positive=True)
-    R0 = rm.Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=q1)
-    R2 = R0.rotated("R2", about=R0.k, angle=q2)
-    A = R0.origin.moved("A", l * R1.i)
-    s = rm.System(galilean=R0)
-    b1 = rm.Body("b1", frame=R1, mass=m, centre=A)
-    b2 = rm.Body("b2", frame=R2, mass=m, centre=A.moved("B", l * R2.i))
-    s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-    s.connect(b1, b2, rm.joints.Pivot(at=A, axis=R0.k))
-    s.act(rm.gravity(g * R0.i))
+    model = models.point_mass_double_pendulum()
+    s, (_, l, g) = model.system, model.constants
     modes = linearize(s.equations_of_motion()).modes()
     w1, w2 = modes.frequencies
     assert sp.simplify(w1**2 - g / l * (2 - sp.sqrt(2))) == 0
@@ -134,17 +125,8 @@ def test_ch25_4_3_double_pendulum_natural_modes():
 def test_cart_pendulum_linearised_frequency():
     """Cart M free to slide, point mass m on a rod L: besides the free translation (w = 0),
     w^2 = (M + m) g / (M L)."""
-    x, th = rm.coordinates("x theta")
-    M, m, L, g = rm.constants("M m L g", positive=True)
-    R0 = rm.Frame("R0")
-    Rc = R0.translated("Rc", R0.point("C", x, 0, 0))
-    Rp = Rc.rotated("Rp", about=R0.k, angle=th)
-    s = rm.System(galilean=R0)
-    cart = rm.Body("cart", frame=Rc, mass=M)
-    bob = rm.Body("bob", frame=Rp, mass=m, centre=Rc.origin.moved("P", -L * Rp.j))
-    s.connect(R0, cart, rm.joints.Prismatic(at=Rc.origin, axis=R0.i))
-    s.connect(cart, bob, rm.joints.Pivot(at=Rc.origin, axis=R0.k))
-    s.act(rm.gravity(-g * R0.j))
+    model = models.cart_pendulum()
+    s, (M, m, L, g) = model.system, model.constants
     w0, w1 = linearize(s.equations_of_motion()).modes().frequencies
     assert w0 == 0
     assert sp.simplify(w1**2 - (M + m) * g / (M * L)) == 0
@@ -185,20 +167,8 @@ def test_ch25_4_3_double_pendulum_of_two_uniform_rods_natural_modes():
     """Two uniform rods m, L, absolute angles: M = m L^2 [[4/3, 1/2], [1/2, 1/3]],
     K = m g L [[3/2, 0], [0, 1/2]]; with x = w^2 L/g, det(K - w^2 M) = 0 reads
     7 x^2 - 42 x + 27 = 0, x = 3 -+ 6 sqrt(7)/7; theta2/theta1 = (-1 +- 2 sqrt 7)/3."""
-    th1, th2 = rm.coordinates("theta1 theta2")
-    m, L, g = rm.constants("m L g", positive=True)
-    R0 = rm.Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=th1)
-    R2 = R0.rotated("R2", about=R0.k, angle=th2)
-    A = R0.origin.moved("A", L * R1.i)
-    G1 = R0.origin.moved("G1", L / 2 * R1.i)
-    G2 = A.moved("G2", L / 2 * R2.i)
-    s = rm.System(galilean=R0)
-    b1 = rm.Body("b1", frame=R1, mass=m, centre=G1, inertia=rm.inertia.rod(m, L, axis=R1.i))
-    b2 = rm.Body("b2", frame=R2, mass=m, centre=G2, inertia=rm.inertia.rod(m, L, axis=R2.i))
-    s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-    s.connect(b1, b2, rm.joints.Pivot(at=A, axis=R0.k))
-    s.act(rm.gravity(g * R0.i))
+    model = models.double_pendulum()
+    s, (m, L, g) = model.system, model.constants
     lin = linearize(s.equations_of_motion())
     assert lin.M == sp.Matrix([[4, sp.Rational(3, 2)], [sp.Rational(3, 2), 1]]) * m * L**2 / 3
     assert lin.K == sp.Matrix([[3, 0], [0, 1]]) * m * g * L / 2

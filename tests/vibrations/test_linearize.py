@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 import rigidmech as rm
+from rigidmech import models
 from rigidmech._core.errors import ArgumentError, SingularMassMatrixError
 from rigidmech.actions import Damper, TorsionalDamper
 from rigidmech.vibrations import damping_ratio, linearize
@@ -76,20 +77,7 @@ def _eqs_with_functions_of_time(eqs):
 
 def double_pendulum():
     """Two point masses m on massless rods l, absolute angles (ch. 25.4.3)."""
-    q1, q2 = rm.coordinates("q1 q2")
-    m, l, g = rm.constants("m l g", positive=True)
-    R0 = rm.Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=q1)
-    R2 = R0.rotated("R2", about=R0.k, angle=q2)
-    A = R0.origin.moved("A", l * R1.i)
-    B = A.moved("B", l * R2.i)
-    s = rm.System(galilean=R0)
-    b1 = rm.Body("b1", frame=R1, mass=m, centre=A)
-    b2 = rm.Body("b2", frame=R2, mass=m, centre=B)
-    s.connect(R0, b1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-    s.connect(b1, b2, rm.joints.Pivot(at=A, axis=R0.k))
-    s.act(rm.gravity(g * R0.i))
-    return s.equations_of_motion()
+    return models.point_mass_double_pendulum().system.equations_of_motion()
 
 
 def test_linearisation_does_not_depend_on_how_q_and_q_dot_are_written():
@@ -129,23 +117,7 @@ def test_linearised_frequencies_equal_small_amplitude_simulation(mode):
 
 
 def n_link(n):
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
-    qs = qs if isinstance(qs, tuple) else (qs,)
-    g = sp.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    frame, P, parent = R0, R0.origin, R0
-    s = rm.System(galilean=R0)
-    for i, q in enumerate(qs):
-        m, l = sp.symbols(f"m{i + 1} l{i + 1}", positive=True)
-        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
-        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
-        s.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
-        P = P.moved(f"P{i + 1}", l * frame.i)
-        parent = body
-    s.act(rm.gravity(-g * R0.j))
-    return s.equations_of_motion()
+    return models.n_link_pendulum(n).system.equations_of_motion()
 
 
 _N_LINK = {n: n_link(n) for n in (2, 3)}

@@ -6,7 +6,8 @@ M q'' + v C1 q' + (g K0 + v^2 K2) q = 0 with the matrices published in the paper
 benchmark parameters, g = 9.81 m/s^2). Posed here with a System: eight parameters (rear
 contact x, y, yaw psi, roll phi, pitch theta, steer delta, wheel angles theta_R, theta_F),
 four rolling conditions and the front contact (a loop closed by a point contact), reduced to
-the independent speeds (phi', delta', theta_R') and linearised with the pitch eliminated.
+the independent speeds (phi', delta', theta_R') and linearised with the pitch eliminated; the
+model is the catalogue's :func:`rigidmech.models.whipple_bicycle`.
 
 Conventions: x forward, y to the left, z up (the paper: y right, z down). The roll angle has
 the same sense, the steer angle the opposite one (its axis points up here), so the paper's
@@ -18,8 +19,7 @@ import pytest
 import scipy.optimize
 import sympy as sp
 
-import rigidmech as rm
-from rigidmech.kinematics import ContactKinematics
+from rigidmech import models
 from rigidmech.vibrations import linearize
 
 # Meijaard et al. (2007), benchmark matrices (eq. (A 3)-(A 5) values of the paper)
@@ -31,55 +31,10 @@ S = np.diag([1.0, -1.0])
 G = 9.81
 
 
-def Q(x):
-    return sp.Rational(str(x))
-
-
 def whipple_bicycle():
-    x, y, psi, phi, th, dl, thr, thf = rm.coordinates(
-        "x y psi phi theta delta theta_R theta_F")
-    g = rm.constants("g", positive=True)
-    w, c, lam = Q(1.02), Q(0.08), sp.pi / 10               # wheelbase, trail, steer tilt
-    rR, mR, IRxx, IRyy = Q(0.3), Q(2), Q(0.0603), Q(0.12)
-    rF, mF, IFxx, IFyy = Q(0.35), Q(3), Q(0.1405), Q(0.28)
-    R0 = rm.Frame("R0")
-    A = R0.rotated("A", about=R0.k, angle=psi)              # yaw
-    Bf = A.rotated("Bf", about=A.i, angle=phi)              # roll
-    P = R0.point("P", x, y, 0)                               # rear contact
-    Cr = P.moved("Cr", rR * Bf.k)
-    E = Bf.rotated("E", about=Bf.j, angle=th, origin=Cr)    # pitch: the rear frame
-    RW = Bf.rotated("RW", about=Bf.j, angle=thr, origin=Cr)
-    S0 = Cr.moved("S0", (w + c) * E.i - rR * E.k)           # steer axis meets the ground
-    E2 = E.rotated("E2", about=E.j, angle=-lam, origin=S0)  # E2.k along the steer axis
-    H = E2.rotated("H", about=E2.k, angle=dl, origin=S0)    # steer
-    HE = H.rotated("HE", about=H.j, angle=lam, origin=S0)   # the front frame, E's basis at 0
-    Cf = S0.moved("Cf", -c * HE.i + rF * HE.k)
-    FW = HE.rotated("FW", about=HE.j, angle=thf, origin=Cf)
-    GB = Cr.moved("GB", Q(0.3) * E.i + Q(0.6) * E.k)
-    GH = S0.moved("GH", (Q(0.9) - w - c) * HE.i + Q(0.7) * HE.k)
-    axle = HE.j
-    down = axle.cross(R0.k.cross(axle))
-    PF = Cf.moved("PF", -rF * down / sp.sqrt(1 - axle.dot(R0.k) ** 2))   # front contact
-    op = rm.InertiaOperator.from_products
-    rear = rm.Body("rear_wheel", frame=RW, mass=mR, centre=Cr, inertia=op(IRxx, IRyy, IRxx,
-                                                                          frame=RW))
-    front = rm.Body("front_wheel", frame=FW, mass=mF, centre=Cf, inertia=op(IFxx, IFyy, IFxx,
-                                                                            frame=FW))
-    # products: the paper's I_xz in (x, y right, z down) is -int x z; z up flips its sign
-    body = rm.Body("rear_frame", frame=E, mass=85, centre=GB,
-                   inertia=op(Q(9.2), 11, Q(2.8), 0, Q(2.4), 0, frame=E, at=GB))
-    fork = rm.Body("front_frame", frame=HE, mass=4, centre=GH,
-                   inertia=op(Q(0.05892), Q(0.06), Q(0.00708), 0, -Q(0.00756), 0, frame=HE,
-                              at=GH))
-    s = rm.System(galilean=R0)
-    s.connect(R0, rear, rm.actions.RollingContact(ContactKinematics(RW, R0, at=P, normal=R0.k)))
-    s.connect(rear, body, rm.joints.Pivot(at=Cr, axis=E.j))
-    s.connect(body, fork, rm.joints.Pivot(at=S0, axis=E2.k))
-    s.connect(fork, front, rm.joints.Pivot(at=Cf, axis=HE.j))
-    s.connect(R0, front, rm.actions.RollingContact(ContactKinematics(FW, R0, at=PF, normal=R0.k)))
-    s.connect(R0, front, rm.joints.PointContact(at=R0.origin, normal=R0.k), meets=PF)
-    s.act(rm.gravity(-g * R0.k))
-    return s.equations_of_motion(), rR
+    """The catalogue's bicycle with the paper's benchmark parameters (their defaults)."""
+    model = models.whipple_bicycle()
+    return model.system.equations_of_motion(), models.BENCHMARK_BICYCLE["rR"]
 
 
 def _critical_speeds(M, C1, K0, K2):

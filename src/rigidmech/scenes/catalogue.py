@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from .. import inertia
+from .. import inertia, models
 from .._core.errors import SceneError
 from ..actions import Pivot, Prismatic, Spring, gravity
 from ..dynamics import System
@@ -157,33 +157,13 @@ def _rod_on_pivot(name, frame, at, m, L):
 
 
 def _simple_pendulum() -> Built:
-    theta = coordinates("theta")
-    m, L, g = constants("m L g", positive=True)
-    R0 = Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=theta)
-    O = R0.origin
-    bar = _rod_on_pivot("bar", R1, O, m, L)
-    system = System(galilean=R0)
-    system.connect(R0, bar, Pivot(at=O, axis=R0.k))
-    system.act(gravity(g * R0.i))
-    return Built(system, (bar,))
+    model = models.compound_pendulum()
+    return Built(model.system, model.bodies)
 
 
 def _double_pendulum() -> Built:
-    theta1, theta2 = coordinates("theta1 theta2")
-    m, L, g = constants("m L g", positive=True)
-    R0 = Frame("R0")
-    R1 = R0.rotated("R1", about=R0.k, angle=theta1)
-    R2 = R0.rotated("R2", about=R0.k, angle=theta2)  # absolute angle (relative to R0)
-    O = R0.origin
-    A = O.moved("A", L * R1.i)
-    bar1 = _rod_on_pivot("bar1", R1, O, m, L)
-    bar2 = _rod_on_pivot("bar2", R2, A, m, L)
-    system = System(galilean=R0)
-    system.connect(R0, bar1, Pivot(at=O, axis=R0.k))
-    system.connect(bar1, bar2, Pivot(at=A, axis=R0.k))
-    system.act(gravity(g * R0.i))
-    return Built(system, (bar1, bar2))
+    model = models.double_pendulum()
+    return Built(model.system, model.bodies)
 
 
 def _slider_pendulum() -> Built:
