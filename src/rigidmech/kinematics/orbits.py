@@ -11,9 +11,13 @@ centre (ch. 8.2). From one state (r0, v0) the invariants are
     \\mathbf{e} = \\frac{\\mathbf{v}\\wedge\\mathbf{h}}{\\mu} - \\frac{\\mathbf{r}}{r},
 
 the semi-latus rectum p = h^2/mu, the semi-major axis a = -mu/(2 epsilon) and the
-polar equation r = p / (1 + e cos nu). The position at a time follows from Kepler's equation
-M = E - e sin E (ellipse), M = e sinh H - H (hyperbola) or Barker's equation (parabola),
-M being the mean anomaly.
+polar equation r = p / (1 + e cos nu). The kind of conic is decided by the sign of the specific
+energy epsilon (the physical invariant), not by the eccentricity computed from it. Kepler's
+equation M = E - e sin E (ellipse), M = e sinh H - H (hyperbola), M being the mean anomaly, is
+solved by :func:`kepler_elliptic` and :func:`kepler_hyperbolic`; :meth:`Orbit.state_at` uses
+the universal-variable form of it (Stumpff functions), one formula for every conic that stays
+accurate near the parabola and for nearly radial orbits, where the anomalies lose their
+precision.
 
 This module is numeric (numpy, scipy): it needs no frame nor symbol, only arrays of three
 components in any inertial frame centred at the attracting centre. It belongs to kinematics
@@ -26,6 +30,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.optimize import brentq
 
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
 
@@ -73,6 +78,42 @@ def _newton(f, fprime, x0, what):
             return x
     raise NumericalError(f"{what}: Newton's method did not converge in {_MAX_ITER} "
                          "iterations.")
+
+
+def _stumpff(z):
+    """The Stumpff functions c2(z) = (1 - cos sqrt z) / z and c3(z) = (sqrt z - sin sqrt z) / z^1.5,
+    continued analytically to z <= 0 (cosh, sinh).
+
+    Hand-rolled: neither numpy nor scipy.special has them. For abs(z) < 1 the power series (no
+    cancellation, 20 terms leave less than 1e-40); elsewhere the closed forms, c2 written with
+    the half angle so that it does not cancel either.
+    """
+    if abs(z) < 1.0:
+        c2 = c3 = 0.0
+        t2, t3 = 0.5, 1.0 / 6.0            # (-z)^k / (2k+2)!, (-z)^k / (2k+3)!
+        for k in range(20):
+            c2 += t2
+            c3 += t3
+            t2 *= -z / ((2 * k + 3) * (2 * k + 4))
+            t3 *= -z / ((2 * k + 4) * (2 * k + 5))
+        return c2, c3
+    try:
+        if z > 0:
+            y = math.sqrt(z)
+            return 2 * math.sin(y / 2) ** 2 / z, (y - math.sin(y)) / (z * y)
+        y = math.sqrt(-z)
+        return 2 * math.sinh(y / 2) ** 2 / -z, (math.sinh(y) - y) / (-z * y)
+    except OverflowError as exc:
+        raise NumericalError(
+            f"the universal anomaly overflows (z = {z:.6g}): the time is too far from the "
+            "epoch on this hyperbola for double precision.") from exc
+
+
+def _ratio_atan(u, hyperbolic):
+    """atan(u) / u (atanh(u) / u if ``hyperbolic``), without 0/0 for small u."""
+    if abs(u) < 1e-4:
+        return 1.0 + u * u / 3 if hyperbolic else 1.0 - u * u / 3
+    return (math.atanh(u) if hyperbolic else math.atan(u)) / u
 
 
 def _check_e_M(e, low, high, mean_anomaly):
@@ -177,15 +218,29 @@ class Orbit:
     epoch : float, optional
         The time t0 of the state (default 0).
     parabolic_tol : float, optional
-        abs(e - 1) below which the conic is treated as a parabola (default 1e-12).
+        Relative tolerance on the specific energy: the conic is a parabola when
+        ``abs(epsilon) <= parabolic_tol * (v0**2 / 2 + mu / r0)`` (the two terms whose
+        difference is epsilon set its rounding scale), otherwise an ellipse (epsilon < 0) or
+        a hyperbola (epsilon > 0). Default 1e-12; 0 keeps only an energy exactly zero.
 
     Raises
     ------
     ArgumentError
-        Zero angular momentum (radial motion: no conic), r0 = 0, mu <= 0.
+        Radial motion (angular momentum below 1e-14 r0 max(v0, sqrt(mu/r0)), the rounding
+        level of r0 ^ v0: the conic degenerates into a segment and its plane and periapsis
+        are undefined), r0 = 0, mu <= 0.
 
     Notes
     -----
+    The kind decides only the elements (``is_bound``, ``period``, ``apoapsis``,
+    ``semi_major_axis``, ``eccentricity``, which is 1 for a parabola). :meth:`state_at`
+    propagates the given state with its own energy whatever the kind, so it is continuous
+    across the parabolic band; for a bound orbit it is accurate to about 1e-12 relative to the
+    size of the orbit, also when the orbit is nearly radial (e close to 1 with a tiny
+    periapsis), except close to such a periapsis, where the state itself is ill-conditioned.
+    A nearly radial ellipse may report ``eccentricity == 1.0``: 1 - e is below the rounding
+    of 1; a, the period and the apoapsis come from the energy and stay exact.
+
     ``argument_of_periapsis`` is the angle from the ascending node to the periapsis in the
     plane of the orbit (the usual omega). For an orbit in the plane z = 0, where the node is
     undefined, it is measured from the x axis in the sense of the motion. For a circle
@@ -202,7 +257,7 @@ class Orbit:
     """
 
     __slots__ = ("_mu", "_r0", "_v0", "_epoch", "_h", "_e_vec", "_e", "_p", "_energy",
-                 "_kind", "_P", "_Q", "_nu0", "_tp")
+                 "_alpha", "_kind", "_P", "_Q", "_nu0", "_tp")
 
     def __init__(self, position, velocity, *, mu, epoch=0.0, parabolic_tol=1e-12):
         mu = _positive(mu, "mu")
@@ -221,26 +276,28 @@ class Orbit:
                 "the angular momentum r0 ^ v0 is zero (radial motion): there is no conic; "
                 f"got position {r0} and velocity {v0}, which are parallel.")
         e_vec = np.cross(v0, h) / mu - r0 / r
-        e = float(np.linalg.norm(e_vec))
         self._mu, self._r0, self._v0 = mu, r0, v0
         self._epoch = float(epoch)
         self._h, self._e_vec = h, e_vec
-        self._p = float(hn**2 / mu)
-        self._energy = float(v0 @ v0 / 2 - mu / r)
-        if abs(e - 1) < parabolic_tol:
+        self._p = p = float(hn**2 / mu)
+        kinetic, potential = float(v0 @ v0 / 2), mu / r
+        self._energy = energy = kinetic - potential
+        self._alpha = alpha = -2 * energy / mu          # 1 / a, of the sign of -epsilon
+        e_norm = float(np.linalg.norm(e_vec))
+        if abs(energy) <= parabolic_tol * (kinetic + potential):
             e, kind = 1.0, "parabola"
-        elif e < 1:
-            kind = "circle" if e == 0 else "ellipse"
         else:
-            kind = "hyperbola"
+            # e^2 = 1 - alpha p: on the side of 1 the energy says, accurate near e = 1 (a
+            # nearly radial orbit); the norm of e_vec is the accurate one near e = 0
+            e = e_norm if e_norm < 0.5 else math.sqrt(max(0.0, 1 - alpha * p))
+            kind = ("circle" if e == 0 else "ellipse") if energy < 0 else "hyperbola"
         self._e, self._kind = e, kind
         w = h / hn
-        P = e_vec / np.linalg.norm(e_vec) if np.linalg.norm(e_vec) > 0 else r0 / r
+        P = e_vec / e_norm if e_norm > 0 else r0 / r
         self._P = P
         self._Q = np.cross(w, P)
-        nu0 = math.atan2(r0 @ self._Q, r0 @ P)
-        self._nu0 = nu0
-        self._tp = self._epoch - self._time_since_periapsis(nu0)
+        self._nu0 = math.atan2(r0 @ self._Q, r0 @ P)
+        self._tp = self._epoch - self._time_since_periapsis()
         for a in (self._r0, self._v0, self._h, self._e_vec, self._P, self._Q):
             a.setflags(write=False)
 
@@ -290,7 +347,7 @@ class Orbit:
         a parabola."""
         if self._kind == "parabola":
             return math.inf
-        return self._p / (1 - self._e**2)
+        return 1 / self._alpha
 
     @property
     def periapsis(self) -> float:
@@ -299,15 +356,15 @@ class Orbit:
 
     @property
     def apoapsis(self) -> float:
-        """Greatest distance p / (1 - e) (inf if unbound)."""
-        return self._p / (1 - self._e) if self.is_bound else math.inf
+        """Greatest distance a (1 + e) (inf if unbound)."""
+        return (1 + self._e) / self._alpha if self.is_bound else math.inf
 
     @property
     def period(self) -> float:
         """2 pi sqrt(a^3 / mu) (inf if unbound)."""
         if not self.is_bound:
             return math.inf
-        return 2 * math.pi * math.sqrt(self.semi_major_axis**3 / self._mu)
+        return 2 * math.pi / (math.sqrt(self._mu) * self._alpha**1.5)
 
     @property
     def periapsis_direction(self) -> np.ndarray:
@@ -350,30 +407,83 @@ class Orbit:
     def radius_at(self, true_anomaly):
         """r = p / (1 + e cos nu), the polar equation of the conic (ch. 8.2).
 
+        Raises
+        ------
+        ArgumentError
+            For a hyperbola or a parabola, a true anomaly outside the branch,
+            abs(nu) >= acos(-1/e) (beyond the asymptotes, where the formula gives r <= 0).
+
         Examples
         --------
         >>> Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0).radius_at(2.0)
         1.0
         """
         nu = np.asarray(true_anomaly, dtype=float)
-        out = self._p / (1 + self._e * np.cos(nu))
+        denominator = 1 + self._e * np.cos(nu)
+        if np.any(~(denominator > 0)):
+            limit = math.acos(-1 / self._e)
+            raise ArgumentError(
+                f"`true_anomaly` must lie between the asymptotes of this {self._kind}, "
+                f"abs(nu) < acos(-1/e) = {limit:.6g} (modulo 2 pi); got {true_anomaly}.")
+        out = self._p / denominator
         return float(out) if out.ndim == 0 else out
 
-    def _time_since_periapsis(self, nu):
-        e, mu, p = self._e, self._mu, self._p
-        if self._kind == "parabola":
-            D = math.tan(nu / 2)
-            return math.sqrt(p**3 / mu) / 2 * (D + D**3 / 3)
-        if self.is_bound:
-            E = math.atan2(math.sqrt(1 - e * e) * math.sin(nu), e + math.cos(nu))
-            a = p / (1 - e * e)
-            return (E - e * math.sin(E)) * math.sqrt(a**3 / mu)
-        H = math.asinh(math.sqrt(e * e - 1) * math.sin(nu) / (1 + e * math.cos(nu)))
-        a = p / (e * e - 1)
-        return (e * math.sinh(H) - H) * math.sqrt(a**3 / mu)
+    def _time_since_periapsis(self):
+        """Time from the periapsis to the epoch state, by the universal Kepler equation from
+        the periapsis sqrt(mu) t = r_p chi + e chi^3 c3(alpha chi^2) (positive terms, no
+        cancellation near the parabola); chi from the epoch state in closed form."""
+        mu, alpha = self._mu, self._alpha
+        r = float(np.linalg.norm(self._r0))
+        sigma = float(self._r0 @ self._v0) / math.sqrt(mu)
+        x = 1 - alpha * r                            # e cos E (e cosh H on a hyperbola)
+        if alpha > 0 and x <= 0:
+            chi = math.atan2(sigma * math.sqrt(alpha), x) / math.sqrt(alpha)
+        else:
+            u = sigma * math.sqrt(abs(alpha)) / x    # tan E or tanh H
+            chi = sigma / x * _ratio_atan(u, alpha < 0)
+        r_p = self._p / (1 + self._e)
+        c3 = _stumpff(alpha * chi * chi)[1]
+        t = (r_p * chi + (1 - alpha * r_p) * chi**3 * c3) / math.sqrt(mu)
+        if self.is_bound and t < 0:
+            t += self.period                         # the last passage before the epoch
+        return t
+
+    def _chi(self, dt, r, sigma):
+        """The universal anomaly chi at dt after the epoch: root of the increasing function
+        F(chi) = r chi + sigma chi^2 c2 + (1 - alpha r) chi^3 c3 - sqrt(mu) dt (F' = r(chi) >= 0),
+        bracketed by doubling and found by Brent's method (scipy)."""
+        alpha, target = self._alpha, math.sqrt(self._mu) * dt
+
+        def F(chi):
+            c2, c3 = _stumpff(alpha * chi * chi)
+            return r * chi + sigma * chi * chi * c2 + (1 - alpha * r) * chi**3 * c3 - target
+
+        if target == 0:
+            return 0.0
+        sign = 1.0 if target > 0 else -1.0
+        # on a hyperbola sinh(sqrt(-alpha) chi) overflows beyond sqrt(-alpha) chi = 700
+        cap = 700 / math.sqrt(-alpha) if alpha < 0 else math.inf
+        lo, hi = 0.0, min(abs(target) / r, cap)
+        for _ in range(2100):
+            if sign * F(sign * hi) >= 0:
+                break
+            if hi == cap:
+                raise NumericalError(
+                    f"Orbit.state_at: `time` {dt + self._epoch!r} is too far from the epoch on "
+                    "this hyperbola: the universal anomaly overflows in double precision.")
+            lo, hi = hi, min(2 * hi, cap)
+        else:   # pragma: no cover - F grows at least like chi^3 / 6 when alpha <= 0
+            raise NumericalError("Orbit.state_at: no bracket for the universal anomaly.")
+        a, b = (sign * lo, sign * hi) if sign > 0 else (sign * hi, sign * lo)
+        return brentq(F, a, b, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=_MAX_ITER)
 
     def state_at(self, time):
         """Position and velocity at ``time`` (scalar or array of shape (n,)).
+
+        Universal-variable propagation of the epoch state (Lagrange's f and g with the
+        Stumpff functions): one formula for the ellipse, the parabola and the hyperbola,
+        accurate near e = 1 and for nearly radial orbits. A bound orbit is first reduced to
+        within half a period of the epoch.
 
         Returns
         -------
@@ -391,38 +501,28 @@ class Orbit:
         t = np.asarray(time, dtype=float)
         if not np.all(np.isfinite(t)):
             raise ArgumentError(f"`time` must be finite; got {time}.")
-        e, mu, p = self._e, self._mu, self._p
-        dt = t - self._tp
-        if self._kind == "parabola":
-            # Barker's equation D + D^3/3 = 2 sqrt(mu/p^3) dt, solved in closed form
-            B = 3 * math.sqrt(mu / p**3) * dt
-            z = np.cbrt(np.abs(B) + np.sqrt(B * B + 1))
-            D = np.sign(B) * (z - 1 / z)
-            cos_nu, sin_nu = (1 - D * D) / (1 + D * D), 2 * D / (1 + D * D)
-            r = p / (1 + cos_nu)
-            x, y = r * cos_nu, r * sin_nu
-            k = math.sqrt(mu / p)
-            vx, vy = -k * sin_nu, k * (1 + cos_nu)
-        elif self.is_bound:
-            a = p / (1 - e * e)
-            n = math.sqrt(mu / a**3)
-            E = np.asarray(kepler_elliptic(n * dt, e))
-            b = a * math.sqrt(1 - e * e)
-            r = a * (1 - e * np.cos(E))
-            x, y = a * (np.cos(E) - e), b * np.sin(E)
-            vx = -math.sqrt(mu * a) / r * np.sin(E)
-            vy = math.sqrt(mu * a * (1 - e * e)) / r * np.cos(E)
-        else:
-            a = p / (e * e - 1)
-            n = math.sqrt(mu / a**3)
-            H = np.asarray(kepler_hyperbolic(n * dt, e))
-            r = a * (e * np.cosh(H) - 1)
-            x, y = a * (e - np.cosh(H)), a * math.sqrt(e * e - 1) * np.sinh(H)
-            vx = -math.sqrt(mu * a) / r * np.sinh(H)
-            vy = math.sqrt(mu * a * (e * e - 1)) / r * np.cosh(H)
-        P, Q = self._P, self._Q
-        pos = np.multiply.outer(x, P) + np.multiply.outer(y, Q)
-        vel = np.multiply.outer(vx, P) + np.multiply.outer(vy, Q)
+        mu, alpha = self._mu, self._alpha
+        r0, v0 = self._r0, self._v0
+        rn = float(np.linalg.norm(r0))
+        sigma = float(r0 @ v0) / math.sqrt(mu)
+        sq = math.sqrt(mu)
+        period = 2 * math.pi / (sq * alpha**1.5) if alpha > 0 else math.inf
+        pos = np.empty(t.shape + (3,))
+        vel = np.empty(t.shape + (3,))
+        for index, ti in np.ndenumerate(t):
+            dt = float(ti) - self._epoch
+            if math.isfinite(period):
+                dt -= period * round(dt / period)
+            chi = self._chi(dt, rn, sigma)
+            z = alpha * chi * chi
+            c2, c3 = _stumpff(z)
+            r = chi * chi * c2 + sigma * chi * (1 - z * c3) + rn * (1 - z * c2)
+            f = 1 - chi * chi * c2 / rn
+            g = (rn * chi * (1 - z * c3) + sigma * chi * chi * c2) / sq
+            fdot = -sq * chi * (1 - z * c3) / (r * rn)
+            gdot = 1 - chi * chi * c2 / r
+            pos[index] = f * r0 + g * v0
+            vel[index] = fdot * r0 + gdot * v0
         return pos, vel
 
     def __repr__(self):
