@@ -36,11 +36,25 @@ __all__ = ["LinearSystem", "linearize"]
 
 
 def _residual_vanishes(x, tol):
-    """Whether a residual f(q*, q'*) is zero: within ``tol`` for a number (a point found
-    numerically), identically otherwise (``is_identically_zero``)."""
+    """Whether a residual f(q*, q'*) or its rate along the motion is zero: within ``tol``
+    (absolute, boundary included) for a number (a point found numerically), identically
+    otherwise (``is_identically_zero``). The one test of steadiness of both paths of
+    :func:`linearize` (with and without constraints)."""
+    x = sp.sympify(x)
     if x.is_number:
         return abs(complex(x)) <= tol
     return is_identically_zero(x)
+
+
+def _steady(residual, rate, rates, tol):
+    """The one rule of steadiness, for the equations (no constraints) or the reduced ones:
+    the residual f(q*, q'*) and its rate along the motion (df/dq) q'* both vanish
+    (:func:`_residual_vanishes`). Returns (ok, moving, residual, rate), simplified."""
+    residual = [r if sp.sympify(r).is_number else sp.simplify(r) for r in residual]
+    rate = [r if sp.sympify(r).is_number else sp.simplify(r) for r in rate]
+    ok = all(_residual_vanishes(r, tol) for r in residual + rate)
+    moving = any(not _residual_vanishes(v, 0.0) for v in rates)
+    return ok, moving, residual, rate
 
 
 class LinearSystem:
@@ -295,11 +309,18 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     parameters : dict, optional
         Values of some parameters (by name), substituted before linearising.
     check : bool
-        Check that the reference state is one (``f(q*, q'*) = 0``) and that ``M(q*)`` is
-        invertible.
+        Check that the reference state is one and that ``M(q*)`` is invertible. One rule on
+        both paths (with and without constraints): the residual ``f(q*, q'*)`` (of the
+        reduced equations with constraints) **and its rate along the motion**
+        ``(df/dq)(q*, q'*) q'*`` vanish, so that q* + q'* t satisfies the equations to first
+        order in t: a rate on a coordinate the equations depend on is refused (the pendulum
+        at θ = 0 with θ' = 2), one on a cyclic coordinate is a steady motion. The test is
+        first order: it is exact when the moving coordinates are cyclic (absent from M and
+        f), the usual steady motion.
     tol : float
-        Absolute tolerance on a numeric residual ``f(q*, q'*)`` (a numerically found
-        equilibrium satisfies f = 0 to round-off only).
+        Absolute tolerance on each numeric entry of the residual and of its rate (a
+        numerically found equilibrium satisfies f = 0 to round-off only): ``abs(x) <= tol``
+        passes. Symbolic entries must vanish identically.
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
@@ -320,8 +341,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ------
     ArgumentError
         If the state is not an equilibrium / steady motion: the message gives the residual
-        ``f(q*, q'*)``; with constraints, if it violates them (the residual Φ(q*) or
-        A q'* + a), or if the reduced equations are not steady along it.
+        ``f(q*, q'*)`` and its rate ``(df/dq) q'*``; with constraints, if it violates them
+        (the residual Φ(q*) or A q'* + a), or if the reduced equations are not steady along it.
     SingularMassMatrixError
         If ``M(q*)`` is singular.
 
@@ -381,14 +402,16 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     about_named = dict(zip(norm.names, q_star, strict=True))
     vel_named = dict(zip(norm.names, u_star, strict=True))
     if check:
-        residual = [sp.simplify(r) if not r.is_number else r for r in f_values]
-        bad = [r for r in residual if not _residual_vanishes(r, tol)]
-        if bad:
-            kind = "an equilibrium" if all(v == 0 for v in u_star) else "a steady motion"
+        rate = [sum((jac[i][j] * u_star[j] for j in range(n)), sp.S.Zero) for i in range(n)]
+        ok, moving, residual, rate = _steady(f_values, rate, u_star, tol)
+        if not ok:
+            kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(
-                f"`about` is not {kind} (q''* = 0 needs f(q*, q'*) = 0): f(q*, q'*) = "
-                f"{residual} at q* = {about_named}, q'* = {vel_named}. Find the equilibria "
-                f"with rigidmech.vibrations.equilibria.")
+                f"`about` is not {kind} (q''* = 0 along q* + q'* t needs f = 0 and its rate "
+                f"df/dt = 0 along the motion): f(q*, q'*) = {residual} and its rate "
+                f"(df/dq) q'* = {rate} at q* = {about_named}, q'* = {vel_named} (tolerance "
+                f"{tol}). A rate is steady only on a coordinate the equations do not depend "
+                f"on; find the equilibria with rigidmech.vibrations.equilibria.")
         _check_mass(M0, about_named)
     if simplify is None:
         simplify = n <= 4
