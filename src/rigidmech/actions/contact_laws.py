@@ -40,6 +40,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError
 from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
+from .actions import _check_perpendicular, _unit_vector
 
 __all__ = ["Coulomb", "RollingResistance", "PivotingResistance", "ContactLaws"]
 
@@ -141,8 +142,8 @@ class Coulomb:
 
     def in_cone(self, action, normal: Vector, *, rtol: float = 1e-12) -> bool:
         """Whether the resultant of ``action`` (a Torsor or a Vector) lies inside the friction
-        cone of axis ``normal`` (unit, pointing into the body acted on): N >= 0 and
-        ``|T| <= f_s N``, with a relative tolerance ``rtol`` on ``|R|``.
+        cone of axis ``normal`` (pointing into the body acted on, normalised here): N >= 0
+        and ``|T| <= f_s N``, with a relative tolerance ``rtol`` on ``|R|``.
 
         Raises
         ------
@@ -159,7 +160,7 @@ class Coulomb:
         """
         R = action.resultant if isinstance(action, Torsor) else action
         _check_vector(R, "action")
-        _check_vector(normal, "normal")
+        normal = _unit_vector(normal, "normal")
         N = R.dot(normal)
         T2 = R.dot(R) - N**2
         try:
@@ -299,10 +300,13 @@ class ContactLaws:
     at : Point
         The contact point I.
     normal : Vector
-        Unit common normal, pointing into the body acted on.
+        Common normal, pointing into the body acted on; normalised here (N is the component
+        along the unit normal n whatever the length given; a symbolic norm is divided out
+        symbolically). A zero vector is refused.
     tangent : Vector, optional
-        Unit tangent t (perpendicular to n) along which friction may act; needed with
-        ``friction``. The planar contact of the book's plane problems.
+        Tangent t (perpendicular to n, normalised here) along which friction may act; needed
+        with ``friction``. The planar contact of the book's plane problems. One not
+        perpendicular to n (numeric cosine above 1e-12) is refused.
     friction : Coulomb, optional
         Without it (or with f_s = 0) the contact is frictionless: T = 0, no unknown T.
     rolling : number, optional
@@ -314,8 +318,8 @@ class ContactLaws:
         ``|M_r| <= a N`` about ``rolling_axis``; when it reaches a N the body **tips** about an
         edge of the base. Mathematically a rolling resistance of coefficient a.
     rolling_axis : Vector, optional
-        Unit axis r of the rolling couple (perpendicular to n), needed with ``rolling`` or
-        ``footprint``.
+        Axis r of the rolling couple (perpendicular to n, normalised here), needed with
+        ``rolling`` or ``footprint``.
     pivoting : number, optional
         Pivoting-resistance coefficient eta (a length).
 
@@ -338,7 +342,7 @@ class ContactLaws:
                  friction: Coulomb | None = None, rolling=None, footprint=None,
                  rolling_axis: Vector | None = None, pivoting=None):
         check_point(at, "at")
-        _check_vector(normal, "normal")
+        normal = _unit_vector(normal, "normal")
         self._at, self._normal = at, normal
         if friction is not None and not isinstance(friction, Coulomb):
             raise ArgumentTypeError(
@@ -347,7 +351,8 @@ class ContactLaws:
             raise ArgumentError("`tangent` is needed with `friction`: the direction t along "
                                 "which the friction force acts; got None.")
         if tangent is not None:
-            _check_vector(tangent, "tangent")
+            tangent = _unit_vector(tangent, "tangent")
+            _check_perpendicular(tangent, normal, "tangent", "normal")
         if friction is not None and friction.static.is_zero:
             friction = None                   # f_s = 0: frictionless, no tangential unknown
         self._tangent, self._friction = tangent, friction
@@ -363,7 +368,8 @@ class ContactLaws:
             if rolling_axis is None:
                 raise ArgumentError(f"`rolling_axis` is needed with `{self._rolling_kind}`; "
                                     "got None.")
-            _check_vector(rolling_axis, "rolling_axis")
+            rolling_axis = _unit_vector(rolling_axis, "rolling_axis")
+            _check_perpendicular(rolling_axis, normal, "rolling_axis", "normal")
         self._axis = rolling_axis
         self._pivoting = None if pivoting is None else PivotingResistance(pivoting)
 
