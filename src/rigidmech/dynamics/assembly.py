@@ -7,6 +7,10 @@ conditions Φ(q) = 0 (Newton's method on the dependent parameters, with the Jaco
 conditions A q' + a = 0 (linear). The independent parameters are the user's, or chosen by
 QR factorisation with column pivoting of the Jacobian: its first pivot columns, the best
 conditioned, become the dependent ones.
+
+Time: constraints that depend on it explicitly (a driven joint, a pin moving with t) are
+assembled at the time ``t`` given; without ``t`` they are refused rather than assembled at an
+arbitrary instant. Constraints that do not depend on it need no ``t``.
 """
 
 from __future__ import annotations
@@ -40,17 +44,70 @@ def _by_name(values, coordinates, argument):
     return out
 
 
-def assemble(constraints, values, *, independent=None, rates=None, params=None,
+def explicit_time(exprs, coordinates) -> bool:
+    """Whether ``exprs`` depend on the time t explicitly: other than through the coordinates
+    q(t) and their derivatives (a function of time that is not a coordinate, an input F(t),
+    counts as explicit).
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> x = rm.coordinates("x")
+    >>> explicit_time([x.diff(rm.t) * x], [x]), explicit_time([x - rm.t], [x])
+    (False, True)
+    """
+    rule = {}
+    for q in coordinates:
+        rule[q.diff(_t, 2)] = sp.Dummy()
+        rule[q.diff(_t)] = sp.Dummy()
+        rule[q] = sp.Dummy()
+    for e in exprs:
+        e = sp.sympify(e)
+        if isinstance(e, sp.MatrixBase):
+            if any(_t in x.xreplace(rule).free_symbols for x in e):
+                return True
+        elif _t in e.xreplace(rule).free_symbols:
+            return True
+    return False
+
+
+def time_of(t, depends, what):
+    """The time to evaluate at: ``t`` as a float, or 0.0 when it is None and nothing depends
+    on it; refused when ``depends`` and no t is given (one rule for assemble and the
+    multipliers)."""
+    if t is None:
+        if depends:
+            raise ArgumentError(
+                f"`t` must be given: {what} depend on the time explicitly (a driven joint, a "
+                "moving support), so the result depends on the instant; got t=None. Pass "
+                "t=<the time of the state>.")
+        return 0.0
+    try:
+        t = float(t)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"`t` must be a real number; got {t!r}.") from None
+    if not np.isfinite(t):
+        raise ArgumentError(f"`t` must be finite; got {t}.")
+    return t
+
+
+def assemble(constraints, values, *, independent=None, rates=None, params=None, t=None,
              tol: float = 1e-12, max_iterations: int = 50):
-    """(q0, u0) by name satisfying ``constraints`` (see the module notes).
+    """(q0, u0) by name satisfying ``constraints`` (see the module notes) at the time ``t``.
+
+    ``t`` is needed (and only then used) when the constraints depend on the time explicitly.
 
     Raises
     ------
     ConnectionError\\_
         If Newton's method does not reach the constraints (a loop with no solution near the
-        given values: the message names the conditions left unsatisfied).
+        given values: the message names the conditions left unsatisfied), or if the
+        constraints do not determine the dependent rates at the configuration (the Jacobian
+        on the dependent parameters has a lower rank than their number: choose other
+        independent parameters).
     ArgumentError
-        For an unknown coordinate or a missing constant.
+        For an unknown coordinate, a missing constant, or constraints depending on the time
+        without ``t``.
 
     Examples
     --------
@@ -82,6 +139,8 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
     A = constraints.jacobian.xreplace(rule)
     a = [c.xreplace(rule).xreplace(dict.fromkeys(u_s, 0)) for c in constraints.velocity]
     exprs = [*phi, *list(A), *a]
+    time = time_of(t, any(_t in sp.sympify(e).free_symbols for e in exprs),
+                   "the constraints")
     consts = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs))
                     - set(q_s) - set(u_s) - {_t}, key=lambda s: s.name)
     params = params or {}
@@ -94,7 +153,7 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
     m = len(constraints.labels)
 
     def evaluate(qv):
-        r, J, a0 = f(0.0, qv, *cvals)
+        r, J, a0 = f(time, qv, *cvals)
         return (np.asarray(r, float).reshape(-1), np.asarray(J, float).reshape(m, n),
                 np.asarray(a0, float).reshape(-1))
 
@@ -130,8 +189,17 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
     for name, v in _by_name(rates, coords, "rates").items():
         u[names.index(name)] = v
     free = [i for i in range(n) if i not in dependent]
+    JD = J[:, dependent]
+    # the rank rule of the choice of the dependent set above (numpy's default tolerance)
+    if dependent and np.linalg.matrix_rank(JD) < len(dependent):
+        raise ConnectionError_(
+            f"the dependent rates {[names[i] for i in dependent]} are not determined by the "
+            f"constraints at this configuration (their Jacobian has rank "
+            f"{np.linalg.matrix_rank(JD)} < {len(dependent)}; a singular position for this "
+            f"choice): choose other independent parameters than "
+            f"{[names[i] for i in free]}, or leave `independent` to the default.")
     rhs = -(a0 + J[:, free] @ u[free])
-    sol, *_ = np.linalg.lstsq(J[:, dependent], rhs, rcond=None)
+    sol, *_ = np.linalg.lstsq(JD, rhs, rcond=None)
     u[dependent] = sol
     if m and np.max(np.abs(J @ u + a0)) > 1e-9:
         raise ConnectionError_(
