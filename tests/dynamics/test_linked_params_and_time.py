@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+import sympy as sp
 
 import rigidmech as rm
 from rigidmech._core.errors import ArgumentError, ConnectionError_
@@ -99,3 +100,26 @@ def test_dependent_rates_not_determined_are_refused():
     with pytest.raises(ConnectionError_, match=r"dependent rates .* not determined"):
         s.assemble({"theta": math.pi / 2, "x": U, "y": 0.0}, independent=["x"],
                    rates={"x": 0.0}, u=U)
+
+
+def test_an_input_given_as_a_function_of_time_needs_t():
+    """A horizontal force F(t) at G: theta'' = (-m g u sin + F u cos) / (4/3 m u^2), the pin's
+    force m a_G + m g j - F i; F = 3 t given as a function, evaluated at the t given."""
+    s = pinned_rod()
+    F = sp.Function("F")(rm.t)
+    body = s.bodies[0]
+    s.act(rm.Force(on=body, vector=F * s.galilean.i, at=body.frame.origin))
+    q0, u0 = s.assemble({"theta": 0.3, "x": 0.0, "y": -1.0}, independent=["theta"],
+                        rates={"theta": 1.0}, u=U)
+    consts = {"u": U, "q": M, "g": G_, "F": lambda t: 3 * t}
+    lam = s.multipliers(list(q0.values()), list(u0.values()), 0.5, params=consts)
+    th, w, f = 0.3, 1.0, 1.5
+    acc = (-M * G_ * U * math.sin(th) + f * U * math.cos(th)) / (4 / 3 * M * U**2)
+    ax = U * (acc * math.cos(th) - w**2 * math.sin(th))
+    ay = U * (acc * math.sin(th) + w**2 * math.cos(th))
+    np.testing.assert_allclose(lam, [M * ax - f, M * ay + M * G_], rtol=1e-10)
+    with pytest.raises(ArgumentError, match=r"`t` must be given"):
+        s.multipliers(list(q0.values()), list(u0.values()), params=consts)
+    # a number for F: no time needed
+    lam2 = s.multipliers(list(q0.values()), list(u0.values()), params={**consts, "F": f})
+    np.testing.assert_allclose(lam2, lam, rtol=1e-12)

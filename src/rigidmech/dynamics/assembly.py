@@ -44,10 +44,10 @@ def _by_name(values, coordinates, argument):
     return out
 
 
-def explicit_time(exprs, coordinates) -> bool:
+def explicit_time(exprs, coordinates, inputs=()) -> bool:
     """Whether ``exprs`` depend on the time t explicitly: other than through the coordinates
-    q(t) and their derivatives (a function of time that is not a coordinate, an input F(t),
-    counts as explicit).
+    q(t) and their derivatives, and the ``inputs`` F(t) (whose values decide for them); any
+    other function of time counts as explicit.
 
     Examples
     --------
@@ -61,6 +61,8 @@ def explicit_time(exprs, coordinates) -> bool:
         rule[q.diff(_t, 2)] = sp.Dummy()
         rule[q.diff(_t)] = sp.Dummy()
         rule[q] = sp.Dummy()
+    for w in inputs:
+        rule[w] = sp.Dummy()
     for e in exprs:
         e = sp.sympify(e)
         if isinstance(e, sp.MatrixBase):

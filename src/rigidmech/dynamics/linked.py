@@ -179,19 +179,23 @@ class LinkedParameters:
         correction.
 
         ``t`` is required when the equations or the constraints depend on the time
-        explicitly (a driven joint, an input F(t)), refused as missing then; otherwise it is
-        not used. ``params`` gives the constants by name as in
+        explicitly (a driven joint) or an input F(t) is given as a function of t, refused as
+        missing then; otherwise it is not used. ``params`` gives the constants by name as in
         :meth:`EquationsOfMotion.simulate` (needed for a constant named ``q``, ``u`` or
         ``t``). Examples: see :meth:`closure_conditions`."""
         eqs = self.equations_of_motion()
         if eqs.constraints is None:
             raise ConnectionError_("the system has no linking connection: no multiplier.")
         c = eqs.constraints
-        depends = bool(eqs.inputs) or explicit_time(
-            [eqs.mass_matrix, eqs.forcing, *c.velocity, *c.bias,
-             *[p for p in c.position if p is not None]], eqs.coordinates)
-        t = time_of(t, depends, "the equations or the constraints")
-        values, inputs, _ = eqs._values(merge_values(params, constants))
+        given = merge_values(params, constants)
+        depends = any(callable(given.get(w.func.__name__)) for w in eqs.inputs) \
+            or explicit_time([eqs.mass_matrix, eqs.forcing, *c.velocity, *c.bias,
+                              *[p for p in c.position if p is not None]],
+                             eqs.coordinates, eqs.inputs)
+        t = time_of(t, depends, "the equations or the constraints (or an input given as a "
+                    "function of t)")
+        values, inputs, _ = eqs._values(given)
+        inputs = [w(t) if callable(w) else w for w in inputs]   # an input F(t) at t
         full = eqs._solver().full
         out = full(t, np.asarray(q, float), np.asarray(u, float), *values, *inputs)
         return -np.asarray(out)[len(eqs.coordinates):]
