@@ -31,7 +31,7 @@ import sympy as sp
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
 from ._symbols import normalise
-from .linearize import _values, linearize
+from .linearize import _residual_vanishes, _values, linearize
 
 __all__ = ["equilibria", "stability", "potential_stability", "Bifurcation", "bifurcation"]
 
@@ -236,9 +236,35 @@ def stability(eqs, at, *, tol=1e-9, **params) -> str:
     return _classify(M, C, K, tol)
 
 
+# Relative tolerance of the Lagrange-Dirichlet decision on a symmetric K (or Hessian of V):
+# eigenvalues within 1e-12 of the largest one in magnitude are not told from zero. One rule for
+# stability (C = 0, K symmetric) and potential_stability.
+_DEFINITE_TOL = 1e-12
+
+
+def _definiteness(k):
+    """'stable' (positive definite), 'unstable' (a negative eigenvalue) or 'undecided', from
+    the eigenvalues ``k`` of a symmetric stiffness, relative tolerance _DEFINITE_TOL."""
+    scale = max(float(np.max(np.abs(k))), 1e-300)
+    if np.min(k) > _DEFINITE_TOL * scale:
+        return "stable"
+    return "unstable" if np.min(k) < -_DEFINITE_TOL * scale else "undecided"
+
+
 def _classify(M, C, K, tol=1e-9):
-    """The verdict of :func:`stability` from numeric M, C, K."""
+    """The verdict of :func:`stability` from numeric M, C, K.
+
+    Conservative (C zero and K symmetric, each to _DEFINITE_TOL relative: C against
+    sqrt(|M| |K|), K against |K|): the Lagrange-Dirichlet rule on K, the one of
+    :func:`potential_stability` (a negative eigenvalue of K is a real positive exponent:
+    unstable). Otherwise the real parts of the exponents, relative tolerance ``tol``."""
     n = M.shape[0]
+    Kscale = float(np.max(np.abs(K), initial=0.0))
+    Cscale = float(np.max(np.abs(C), initial=0.0))
+    Mscale = float(np.max(np.abs(M), initial=0.0))
+    if (Cscale <= _DEFINITE_TOL * np.sqrt(Mscale * Kscale)
+            and np.max(np.abs(K - K.T), initial=0.0) <= _DEFINITE_TOL * Kscale):
+        return _definiteness(np.linalg.eigvalsh((K + K.T) / 2))
     try:
         A = np.block([[np.zeros((n, n)), np.eye(n)],
                       [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
@@ -250,14 +276,10 @@ def _classify(M, C, K, tol=1e-9):
         return "unstable"
     if np.max(s.real) < -tol * scale:
         return "asymptotically stable"
-    if np.allclose(C, 0) and np.allclose(K, K.T):
-        k = np.linalg.eigvalsh((K + K.T) / 2)
-        if np.min(k) > tol * max(np.max(np.abs(k)), 1e-300):
-            return "stable"
     return "undecided"
 
 
-def potential_stability(eqs, potential, at, **params) -> str:
+def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
     """Stability of an equilibrium of a conservative system by its potential energy V
     (Lagrange–Dirichlet, ch. 25.2.3): a strict minimum of V (Hessian positive definite) is
     stable; a Hessian with a negative eigenvalue (V not a minimum) unstable; otherwise
@@ -270,6 +292,11 @@ def potential_stability(eqs, potential, at, **params) -> str:
     potential : sympy expression
     at : dict or sequence
         The position.
+    tol : float
+        Absolute tolerance on each numeric dV/dq at ``at`` (``abs(x) <= tol`` is
+        stationary), the tolerance of :func:`~rigidmech.vibrations.linearize` on the residual
+        f = -dV/dq; the Hessian's eigenvalues are decided to 1e-12 relative to the largest
+        one, as in :func:`stability`.
     **params : values of the parameters (optional; symbolic otherwise, when sympy decides
         the signs)
 
@@ -301,17 +328,14 @@ def potential_stability(eqs, potential, at, **params) -> str:
         names = {p.name: p for p in (V.free_symbols - set(norm.q))}
         subs = {names[k]: v for k, v in params.items() if k in names}
     grad = [sp.simplify(V.diff(q).xreplace(point).xreplace(subs)) for q in norm.q]
-    if any(sp.simplify(x) != 0 and not (x.is_number and abs(float(x)) < 1e-12) for x in grad):
-        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad}.")
+    if not all(_residual_vanishes(x, tol) for x in grad):
+        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "
+                            f"(tolerance {tol}).")
     H = sp.Matrix(len(norm.q), len(norm.q),
                   lambda i, j: sp.simplify(V.diff(norm.q[i], norm.q[j]).xreplace(point)
                                            .xreplace(subs)))
     if all(x.is_number for x in H):
-        k = np.linalg.eigvalsh(np.array(H.tolist(), dtype=float))
-        scale = max(np.max(np.abs(k)), 1e-300)
-        if np.min(k) > 1e-12 * scale:
-            return "stable"
-        return "unstable" if np.min(k) < -1e-12 * scale else "undecided"
+        return _definiteness(np.linalg.eigvalsh(np.array(H.tolist(), dtype=float)))
     minors = [sp.simplify(H[:r, :r].det()) for r in range(1, H.shape[0] + 1)]
     if all(m.is_positive for m in minors):
         return "stable"
