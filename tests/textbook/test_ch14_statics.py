@@ -341,3 +341,22 @@ def test_ch14_two_stacked_blocks_which_interface_slides(f_floor, f_top, contact,
     lim = limiting_equilibrium(st_, P, (0.0, 20.0))
     assert lim.kinds == ("sliding",) and lim.contacts == (contact,)
     assert math.isclose(lim.value, expected, rel_tol=1e-9)
+
+
+def test_values_must_respect_what_the_symbols_declare():
+    """W declared positive: a negative weight given as a number is refused where it enters."""
+    from rigidmech._core.errors import ArgumentError as _ArgumentError
+
+    R0 = rm.Frame("R0")
+    box = rm.Body("box", frame=R0)
+    st_ = Statics(R0)
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                     friction=Coulomb(0.5)), label="A")
+    W = rm.constants("W", positive=True)
+    P = sp.Symbol("P", real=True)
+    st_.act(Force(on=box, vector=-W * R0.j + P * R0.i, at=R0.origin))
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        st_.solve(values={W: -2, P: 0})
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        limiting_equilibrium(st_, P, (0.0, 10.0), values={W: -2})
+    assert st_.solve(values={W: 2, P: 0}).values[sp.Symbol("N_A", real=True)] == 2.0

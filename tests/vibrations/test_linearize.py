@@ -284,3 +284,20 @@ def test_steadiness_uses_one_tolerance_on_the_residual_and_its_rate():
             linearize(eqs, velocities={"y": 1.0}, parameters={"d": value}, tol=1e-9)
     with pytest.raises(ArgumentError, match="not a steady motion"):
         linearize(eqs, velocities={"y": 1.0})          # d symbolic: not identically zero
+
+
+def test_values_must_respect_what_the_symbols_declare():
+    """m, g, L declared positive: a negative mass given as a number is refused where it
+    enters (linearize, stability, equilibria), not turned into M = -1."""
+    from rigidmech.vibrations import equilibria, stability
+
+    eqs = _pendulum_eqs()
+    with pytest.raises(ArgumentError, match=r"`parameters`: the value of `m` must be > 0 "
+                                            r"\(declared positive\); got -1.0"):
+        linearize(eqs, parameters={"m": -1.0, "g": 9.81, "L": 1.0})
+    with pytest.raises(ArgumentError, match=r"the value of `L` must be > 0"):
+        stability(eqs, [0], m=1.0, g=9.81, L=0)
+    with pytest.raises(ArgumentError, match=r"the value of `g` must be > 0"):
+        equilibria(eqs, within=(-3, 3), m=1.0, g=-9.81, L=1.0)
+    # boundary: any positive value passes
+    assert linearize(eqs, parameters={"m": 1e-300, "g": 9.81, "L": 1.0}).K[0, 0] > 0

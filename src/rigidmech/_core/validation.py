@@ -14,7 +14,7 @@ import sympy as sp
 
 from .errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["finite_real", "nonnegative"]
+__all__ = ["finite_real", "nonnegative", "as_declared"]
 
 
 def finite_real(x, argument, *, hint=""):
@@ -79,3 +79,35 @@ def nonnegative(x, argument):
         raise ArgumentError(f"`{argument}` must be >= 0; got {x}.")
     return value
 
+
+
+_DECLARED = (("positive", "> 0"), ("negative", "< 0"), ("nonnegative", ">= 0"),
+             ("nonpositive", "<= 0"), ("nonzero", "!= 0"), ("integer", "an integer"),
+             ("real", "real"))
+
+
+def as_declared(symbol, value, argument):
+    """``value`` (sympified) for ``symbol``, refused when it is a number that contradicts what
+    the symbol declares (``rm.constants("m", positive=True)``: a mass given as -1): the
+    derivation may have used the declaration (sqrt(m**2) = m), so the result would be wrong.
+    A symbolic value passes.
+
+    Examples
+    --------
+    >>> m = sp.Symbol("m", positive=True)
+    >>> as_declared(m, 2, "values")
+    2
+    >>> as_declared(m, -1.0, "values")
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `values`: the value of `m` must be > 0 ...
+    """
+    v = sp.sympify(value)
+    if not getattr(v, "is_number", False):
+        return v
+    for attribute, expected in _DECLARED:
+        if getattr(symbol, f"is_{attribute}") is True and getattr(v, f"is_{attribute}") is False:
+            raise ArgumentError(
+                f"`{argument}`: the value of `{symbol}` must be {expected} (declared "
+                f"{attribute}); got {value}.")
+    return v

@@ -31,6 +31,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.validation import as_declared
 from ..actions import Action
 from ..kinematics import Solid
 from ..torsors import Torsor, torsor_of_field
@@ -385,7 +386,8 @@ class Statics:
             raise ArgumentError("`unknowns`: the problem has no unknown; connect bodies or "
                                 "name the unknown loads.")
         rows = self.equations()
-        subs = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+        subs = {sp.sympify(k): as_declared(sp.sympify(k), v, "values")
+            for k, v in (values or {}).items()}
         exprs = [e.xreplace(subs) if subs else e for _, _, e in rows]
         try:
             A, b = sp.linear_eq_to_matrix(exprs, xs)

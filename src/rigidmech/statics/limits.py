@@ -29,6 +29,7 @@ import sympy as sp
 from scipy.optimize import brentq, linprog
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.validation import as_declared
 from .errors import EquilibriumError
 
 __all__ = ["limiting_equilibrium", "Limit"]
@@ -174,7 +175,8 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     if p0 == p1:
         raise ArgumentError(f"`interval` must have two different ends; got {interval!r}.")
     xs = list(statics.unknowns)
-    subs = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+    subs = {sp.sympify(k): as_declared(sp.sympify(k), v, "values")
+            for k, v in (values or {}).items()}
     exprs = [e.xreplace(subs) for _, _, e in statics.equations()]
     conds = statics.contact_conditions()
     if not conds:

@@ -30,6 +30,7 @@ import sympy as sp
 
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
+from .._core.validation import as_declared
 from ._symbols import normalise
 from .linearize import _residual_vanishes, _values, linearize
 
@@ -47,6 +48,8 @@ def _params(norm, params, exclude=()):
     if unknown:
         raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                             f"{sorted(names)}.")
+    for key, value in params.items():
+        as_declared(names[key], value, "params")
     return names
 
 
@@ -326,7 +329,8 @@ def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
     subs = {}
     if params:
         names = {p.name: p for p in (V.free_symbols - set(norm.q))}
-        subs = {names[k]: v for k, v in params.items() if k in names}
+        subs = {names[k]: as_declared(names[k], v, "params") for k, v in params.items()
+                if k in names}
     grad = [sp.simplify(V.diff(q).xreplace(point).xreplace(subs)) for q in norm.q]
     if not all(_residual_vanishes(x, tol) for x in grad):
         raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "

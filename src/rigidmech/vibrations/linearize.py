@@ -28,6 +28,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
 from .._core.symbolic import is_identically_zero
+from .._core.validation import as_declared
 from ._jet import values_and_jacobian
 from ._symbols import normalise
 from .modes import Modes, harmonic_response_direct, natural_modes
@@ -384,7 +385,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
         if unknown:
             raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                                 f"{sorted(by_name)}.")
-        point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
+        point |= {by_name[k]: as_declared(by_name[k], v, "parameters")
+                  for k, v in parameters.items()}
     if constrained:
         return _constrained(eqs, norm, about, velocities, w, w_star, point, check=check,
                             tol=tol, simplify=simplify, independent=independent)
