@@ -123,3 +123,22 @@ def test_an_input_given_as_a_function_of_time_needs_t():
     # a number for F: no time needed
     lam2 = s.multipliers(list(q0.values()), list(u0.values()), params={**consts, "F": f})
     np.testing.assert_allclose(lam2, lam, rtol=1e-12)
+
+
+def test_multipliers_need_a_state_on_the_constraints():
+    """The docs ask for a state on the constraints (elsewhere the values carry Baumgarte's
+    correction): a state off them by more than 1e-9 (assemble's tolerance) is refused and the
+    conditions named; at 1e-9 exactly it is accepted."""
+    s = pinned_rod()
+    consts = {"u": U, "q": M, "g": G_}
+    q0, u0 = s.assemble({"theta": 0.3, "x": 0.0, "y": -1.0}, independent=["theta"],
+                        rates={"theta": 1.0}, params={"u": U})
+    q, u = np.array(list(q0.values())), np.array(list(u0.values()))
+    with pytest.raises(ArgumentError, match=r"not on the constraints.*pin\.u"):
+        s.multipliers(q + [1e-6, 0, 0], u, params=consts)
+    with pytest.raises(ArgumentError, match=r"not on the constraints.*pin\.v \(rate\)"):
+        s.multipliers(q, u + [0, 1e-6, 0], params=consts)
+    np.testing.assert_allclose(s.multipliers(q, u + [0, 1e-9 - 1e-12, 0], params=consts),
+                               pin_force(0.3, 1.0), rtol=1e-7)
+    with pytest.raises(ArgumentError, match=r"not on the constraints"):
+        s.multipliers(q, u + [0, 1.001e-9, 0], params=consts)

@@ -12,10 +12,10 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from .._core.errors import ConnectionError_
+from .._core.errors import ArgumentError, ConnectionError_
 from ..systems import closure_forces
 from ._run import merge_values
-from .assembly import assemble, explicit_time, time_of
+from .assembly import ON_CONSTRAINTS, Closure, assemble, explicit_time, time_of
 from .constraints import Constraints
 
 __all__ = ["LinkedParameters"]
@@ -174,9 +174,10 @@ class LinkedParameters:
         :meth:`closure_conditions`) at the state (q, u) at the time ``t``, from the augmented
         system: the generalised constraint forces are A^T lambda. For a joint closing a loop,
         the multiplier of the condition along e is the component along e of the action of
-        ``parent`` on ``child`` at the point of the joint. Give a state on the constraints
-        (:meth:`assemble`, at the same t): elsewhere the values include Baumgarte's
-        correction.
+        ``parent`` on ``child`` at the point of the joint. The state must be on the
+        constraints (:meth:`assemble`, at the same t): every residual Φ and A q' + a at most
+        1e-9 (the tolerance assemble reaches), otherwise it is refused (the values would
+        include Baumgarte's correction).
 
         ``t`` is required when the equations or the constraints depend on the time
         explicitly (a driven joint) or an input F(t) is given as a function of t, refused as
@@ -196,8 +197,19 @@ class LinkedParameters:
                     "function of t)")
         values, inputs, _ = eqs._values(given)
         inputs = [w(t) if callable(w) else w for w in inputs]   # an input F(t) at t
+        if "closure" not in self._cache:
+            self._cache["closure"] = Closure(c)
+        closure = self._cache["closure"]
+        q_arr, u_arr = np.asarray(q, float), np.asarray(u, float)
+        off = closure.off(q_arr, u_arr, t, closure.constants(given))
+        if off:
+            raise ArgumentError(
+                f"(`q`, `u`) is not on the constraints at t = {t}: the conditions "
+                f"{', '.join(f'{lab} = {x:.3g}' for lab, x in off)} exceed {ON_CONSTRAINTS} "
+                "(the multipliers there would carry Baumgarte's correction). Pass a state "
+                "from System.assemble or from a simulation that keeps the constraints.")
         full = eqs._solver().full
-        out = full(t, np.asarray(q, float), np.asarray(u, float), *values, *inputs)
+        out = full(t, q_arr, u_arr, *values, *inputs)
         return -np.asarray(out)[len(eqs.coordinates):]
 
     def multiplier_symbols(self) -> tuple:
