@@ -117,8 +117,11 @@ def _holonomic_split(phi_q, dep):
                                           strict=True)}
     num = np.array(phi_q.xreplace(sub).evalf().tolist(), dtype=complex).real
     chosen = []
+    # relative to the size of Phi_q (the rule of _invertible and of the mass check), so that
+    # the decision does not depend on the unit of length
+    tol = 1e-12 * max(np.linalg.norm(num, 2), 1e-300)
     for j in dep:
-        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=1e-9) == len(chosen) + 1:
+        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=tol) == len(chosen) + 1:
             chosen.append(j)
         if len(chosen) == p:
             return chosen
