@@ -400,3 +400,9 @@ def test_hyperbola_far_from_the_epoch():
     from rigidmech._core.errors import NumericalError
     with pytest.raises(NumericalError, match="too far from the epoch"):
         o.state_at(1e305)
+
+
+@pytest.mark.parametrize("epoch", [math.nan, math.inf, "0"])
+def test_epoch_must_be_a_finite_number(epoch):
+    with pytest.raises(ArgumentError, match="`epoch` must be a finite"):
+        Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0, epoch=epoch)

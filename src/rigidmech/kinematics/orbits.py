@@ -28,6 +28,7 @@ produces it is in :mod:`rigidmech.actions.gravitation`.
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 from scipy.optimize import brentq
@@ -277,6 +278,10 @@ class Orbit:
                 f"got position {r0} and velocity {v0}, which are parallel.")
         e_vec = np.cross(v0, h) / mu - r0 / r
         self._mu, self._r0, self._v0 = mu, r0, v0
+        if isinstance(epoch, bool) or not isinstance(epoch, numbers.Real) \
+                or not math.isfinite(epoch):
+            raise ArgumentError(f"`epoch` must be a finite number (the time of the state); "
+                                f"got {epoch!r}.")
         self._epoch = float(epoch)
         self._h, self._e_vec = h, e_vec
         self._p = p = float(hn**2 / mu)
