@@ -33,6 +33,7 @@ from .._core.errors import ArgumentError
 from .._core.validation import as_declared
 from ._symbols import normalise
 from .linearize import _residual_vanishes, _values, linearize
+from .modes import is_symmetric
 
 __all__ = ["equilibria", "stability", "potential_stability", "Bifurcation", "bifurcation"]
 
@@ -257,16 +258,16 @@ def _definiteness(k):
 def _classify(M, C, K, tol=1e-9):
     """The verdict of :func:`stability` from numeric M, C, K.
 
-    Conservative (C zero and K symmetric, each to _DEFINITE_TOL relative: C against
-    sqrt(|M| |K|), K against |K|): the Lagrange-Dirichlet rule on K, the one of
+    Conservative (C zero to _DEFINITE_TOL relative to sqrt(|M| |K|), K symmetric by the rule
+    of :func:`~rigidmech.vibrations.modes.is_symmetric`): the Lagrange-Dirichlet rule on K,
+    the one of
     :func:`potential_stability` (a negative eigenvalue of K is a real positive exponent:
     unstable). Otherwise the real parts of the exponents, relative tolerance ``tol``."""
     n = M.shape[0]
     Kscale = float(np.max(np.abs(K), initial=0.0))
     Cscale = float(np.max(np.abs(C), initial=0.0))
     Mscale = float(np.max(np.abs(M), initial=0.0))
-    if (Cscale <= _DEFINITE_TOL * np.sqrt(Mscale * Kscale)
-            and np.max(np.abs(K - K.T), initial=0.0) <= _DEFINITE_TOL * Kscale):
+    if Cscale <= _DEFINITE_TOL * np.sqrt(Mscale * Kscale) and is_symmetric(K):
         return _definiteness(np.linalg.eigvalsh((K + K.T) / 2))
     try:
         A = np.block([[np.zeros((n, n)), np.eye(n)],
