@@ -31,9 +31,9 @@ import math
 import numbers
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+from ._universal import propagate, time_from_periapsis
 
 __all__ = ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
            "circular_speed", "escape_speed", "hohmann_transfer"]
@@ -79,42 +79,6 @@ def _newton(f, fprime, x0, what):
             return x
     raise NumericalError(f"{what}: Newton's method did not converge in {_MAX_ITER} "
                          "iterations.")
-
-
-def _stumpff(z):
-    """The Stumpff functions c2(z) = (1 - cos sqrt z) / z and c3(z) = (sqrt z - sin sqrt z) / z^1.5,
-    continued analytically to z <= 0 (cosh, sinh).
-
-    Hand-rolled: neither numpy nor scipy.special has them. For abs(z) < 1 the power series (no
-    cancellation, 20 terms leave less than 1e-40); elsewhere the closed forms, c2 written with
-    the half angle so that it does not cancel either.
-    """
-    if abs(z) < 1.0:
-        c2 = c3 = 0.0
-        t2, t3 = 0.5, 1.0 / 6.0            # (-z)^k / (2k+2)!, (-z)^k / (2k+3)!
-        for k in range(20):
-            c2 += t2
-            c3 += t3
-            t2 *= -z / ((2 * k + 3) * (2 * k + 4))
-            t3 *= -z / ((2 * k + 4) * (2 * k + 5))
-        return c2, c3
-    try:
-        if z > 0:
-            y = math.sqrt(z)
-            return 2 * math.sin(y / 2) ** 2 / z, (y - math.sin(y)) / (z * y)
-        y = math.sqrt(-z)
-        return 2 * math.sinh(y / 2) ** 2 / -z, (math.sinh(y) - y) / (-z * y)
-    except OverflowError as exc:
-        raise NumericalError(
-            f"the universal anomaly overflows (z = {z:.6g}): the time is too far from the "
-            "epoch on this hyperbola for double precision.") from exc
-
-
-def _ratio_atan(u, hyperbolic):
-    """atan(u) / u (atanh(u) / u if ``hyperbolic``), without 0/0 for small u."""
-    if abs(u) < 1e-4:
-        return 1.0 + u * u / 3 if hyperbolic else 1.0 - u * u / 3
-    return (math.atanh(u) if hyperbolic else math.atan(u)) / u
 
 
 def _check_e_M(e, low, high, mean_anomaly):
@@ -434,53 +398,12 @@ class Orbit:
         return float(out) if out.ndim == 0 else out
 
     def _time_since_periapsis(self):
-        """Time from the periapsis to the epoch state, by the universal Kepler equation from
-        the periapsis sqrt(mu) t = r_p chi + e chi^3 c3(alpha chi^2) (positive terms, no
-        cancellation near the parabola); chi from the epoch state in closed form."""
-        mu, alpha = self._mu, self._alpha
-        r = float(np.linalg.norm(self._r0))
-        sigma = float(self._r0 @ self._v0) / math.sqrt(mu)
-        x = 1 - alpha * r                            # e cos E (e cosh H on a hyperbola)
-        if alpha > 0 and x <= 0:
-            chi = math.atan2(sigma * math.sqrt(alpha), x) / math.sqrt(alpha)
-        else:
-            u = sigma * math.sqrt(abs(alpha)) / x    # tan E or tanh H
-            chi = sigma / x * _ratio_atan(u, alpha < 0)
-        r_p = self._p / (1 + self._e)
-        c3 = _stumpff(alpha * chi * chi)[1]
-        t = (r_p * chi + (1 - alpha * r_p) * chi**3 * c3) / math.sqrt(mu)
+        """Time from the periapsis to the epoch state (universal Kepler equation)."""
+        t = time_from_periapsis(self._r0, self._v0, self._alpha, self._mu,
+                                self._p / (1 + self._e))
         if self.is_bound and t < 0:
             t += self.period                         # the last passage before the epoch
         return t
-
-    def _chi(self, dt, r, sigma):
-        """The universal anomaly chi at dt after the epoch: root of the increasing function
-        F(chi) = r chi + sigma chi^2 c2 + (1 - alpha r) chi^3 c3 - sqrt(mu) dt (F' = r(chi) >= 0),
-        bracketed by doubling and found by Brent's method (scipy)."""
-        alpha, target = self._alpha, math.sqrt(self._mu) * dt
-
-        def F(chi):
-            c2, c3 = _stumpff(alpha * chi * chi)
-            return r * chi + sigma * chi * chi * c2 + (1 - alpha * r) * chi**3 * c3 - target
-
-        if target == 0:
-            return 0.0
-        sign = 1.0 if target > 0 else -1.0
-        # on a hyperbola sinh(sqrt(-alpha) chi) overflows beyond sqrt(-alpha) chi = 700
-        cap = 700 / math.sqrt(-alpha) if alpha < 0 else math.inf
-        lo, hi = 0.0, min(abs(target) / r, cap)
-        for _ in range(2100):
-            if sign * F(sign * hi) >= 0:
-                break
-            if hi == cap:
-                raise NumericalError(
-                    f"Orbit.state_at: `time` {dt + self._epoch!r} is too far from the epoch on "
-                    "this hyperbola: the universal anomaly overflows in double precision.")
-            lo, hi = hi, min(2 * hi, cap)
-        else:   # pragma: no cover - F grows at least like chi^3 / 6 when alpha <= 0
-            raise NumericalError("Orbit.state_at: no bracket for the universal anomaly.")
-        a, b = (sign * lo, sign * hi) if sign > 0 else (sign * hi, sign * lo)
-        return brentq(F, a, b, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=_MAX_ITER)
 
     def state_at(self, time):
         """Position and velocity at ``time`` (scalar or array of shape (n,)).
@@ -506,28 +429,16 @@ class Orbit:
         t = np.asarray(time, dtype=float)
         if not np.all(np.isfinite(t)):
             raise ArgumentError(f"`time` must be finite; got {time}.")
-        mu, alpha = self._mu, self._alpha
-        r0, v0 = self._r0, self._v0
-        rn = float(np.linalg.norm(r0))
-        sigma = float(r0 @ v0) / math.sqrt(mu)
-        sq = math.sqrt(mu)
-        period = 2 * math.pi / (sq * alpha**1.5) if alpha > 0 else math.inf
+        alpha = self._alpha
+        period = 2 * math.pi / (math.sqrt(self._mu) * alpha**1.5) if alpha > 0 else math.inf
         pos = np.empty(t.shape + (3,))
         vel = np.empty(t.shape + (3,))
         for index, ti in np.ndenumerate(t):
             dt = float(ti) - self._epoch
             if math.isfinite(period):
                 dt -= period * round(dt / period)
-            chi = self._chi(dt, rn, sigma)
-            z = alpha * chi * chi
-            c2, c3 = _stumpff(z)
-            r = chi * chi * c2 + sigma * chi * (1 - z * c3) + rn * (1 - z * c2)
-            f = 1 - chi * chi * c2 / rn
-            g = (rn * chi * (1 - z * c3) + sigma * chi * chi * c2) / sq
-            fdot = -sq * chi * (1 - z * c3) / (r * rn)
-            gdot = 1 - chi * chi * c2 / r
-            pos[index] = f * r0 + g * v0
-            vel[index] = fdot * r0 + gdot * v0
+            pos[index], vel[index] = propagate(self._r0, self._v0, alpha, self._mu, dt,
+                                               float(ti))
         return pos, vel
 
     def __repr__(self):
