@@ -203,3 +203,26 @@ def test_torsional_damper_and_spring_normalise_their_axis():
     assert spring.contributions([disk])[0][1].moment == -k * q * R0.k
     with pytest.raises(ArgumentError, match=r"`axis` must be a non-zero vector"):
         TorsionSpring(k, q, axis=0 * R0.k, on=disk)
+
+
+@pytest.mark.parametrize("cosine, ok", [(0.0, True), (0.5e-12, True), (1e-12, True),
+                                        (2e-12, False), (1e-6, False)])
+def test_perpendicular_is_decided_by_one_rule(cosine, ok):
+    """A tangent (ContactLaws) and a blade direction (KnifeEdge) must be perpendicular to the
+    normal: one rule, |cos| <= 1e-12 for numbers (the boundary included), shown zero for
+    symbols."""
+    from rigidmech.actions import KnifeEdge
+
+    x, y, th = rm.coordinates("x y theta")
+    G = R0.point("G", x, y, 0)
+    R1 = R0.rotated("R1", about=R0.k, angle=th, origin=G)
+    slanted_t = R0.i + cosine * R0.j                  # against the normal R0.j
+    slanted_e = R1.i + cosine * R1.k                  # against the normal R0.k
+    if ok:
+        ContactLaws(at=I, normal=R0.j, tangent=slanted_t, friction=Coulomb(0.5))
+        KnifeEdge(R1, R0, at=G, direction=slanted_e, normal=R0.k)
+    else:
+        with pytest.raises(ArgumentError, match=r"`tangent` must be perpendicular"):
+            ContactLaws(at=I, normal=R0.j, tangent=slanted_t, friction=Coulomb(0.5))
+        with pytest.raises(ArgumentError, match=r"`direction` must be perpendicular"):
+            KnifeEdge(R1, R0, at=G, direction=slanted_e, normal=R0.k)

@@ -54,21 +54,24 @@ def _unit_vector(v, argument):
 _PERPENDICULAR_TOL = 1e-12
 
 
-def _check_perpendicular(u, n, argument, other):
-    """Refuse unit vectors ``u`` and ``n`` that are not perpendicular: a numeric cosine above
-    1e-12 in magnitude, or a symbolic one that simplifies to a non-zero value; a symbolic one
-    sympy cannot decide is accepted (the caller's responsibility)."""
-    from .._core.symbolic import zero_decision
+def _check_perpendicular(u, n, argument, other, what="", word="perpendicular"):
+    """Refuse unit vectors ``u`` and ``n`` that are not perpendicular. One rule for every
+    action that needs it (ContactLaws' tangent and rolling axis, KnifeEdge's blade,
+    LinearRectilinear's direction): a numeric cosine must be at most 1e-12 in magnitude
+    (rounding of vectors given in floats), a symbolic one must be shown zero (a value at sample
+    points refutes it cheaply, ``sympy.simplify`` proves it)."""
+    from .._core.symbolic import nonzero_somewhere
 
     cosine = sp.sympify(u.dot(n))
     if cosine.is_number:
-        bad = abs(complex(cosine)) > _PERPENDICULAR_TOL
+        ok = abs(complex(cosine)) <= _PERPENDICULAR_TOL
     else:
-        bad = zero_decision(cosine) is False
-    if bad:
+        ok = not nonzero_somewhere(cosine) and sp.simplify(cosine) == 0
+    if not ok:
         raise ArgumentError(
-            f"`{argument}` must be perpendicular to `{other}`; got {argument} . {other} = "
-            f"{cosine} (unit vectors). Pass its part in the plane perpendicular to `{other}`.")
+            f"{what}`{argument}` must be {word} to `{other}`; got {argument} . {other} "
+            f"= {sp.simplify(cosine)} (unit vectors). Pass its part in the plane "
+            f"perpendicular to `{other}`.")
 
 
 class Action:
