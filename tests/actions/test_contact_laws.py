@@ -226,3 +226,29 @@ def test_perpendicular_is_decided_by_one_rule(cosine, ok):
             ContactLaws(at=I, normal=R0.j, tangent=slanted_t, friction=Coulomb(0.5))
         with pytest.raises(ArgumentError, match=r"`direction` must be perpendicular"):
             KnifeEdge(R1, R0, at=G, direction=slanted_e, normal=R0.k)
+
+
+def test_action_does_not_take_a_direction_from_rounding_noise():
+    """A velocity at I along the normal with a tangential part of rounding size (1e-16 of
+    it): no sliding (the law needs a rate: refused), not a full friction force f_k N along the
+    noise. A tangential part of 1e-6 of it slides."""
+    c = ContactLaws(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5, 0.4))
+    noisy = rm.Torsor(rm.Vector.zero(), 3.0 * R0.j + 3e-16 * R0.i, I)
+    with pytest.raises(ArgumentError, match="`sliding_velocity` must be non-zero"):
+        c.action(10, noisy)
+    real = rm.Torsor(rm.Vector.zero(), 3.0 * R0.j + 3e-6 * R0.i, I)
+    assert c.action(10, real).resultant == -4.0 * R0.i + 10 * R0.j
+    r = ContactLaws(at=I, normal=R0.j, rolling=0.1, rolling_axis=R0.k)
+    with pytest.raises(ArgumentError, match="must be non-zero"):
+        r.action(10, rm.Torsor(2.0 * R0.j + 2e-16 * R0.k, rm.Vector.zero(), I))
+
+
+@pytest.mark.parametrize("fraction, slides", [(0.5e-12, False), (2e-12, True)])
+def test_rate_noise_threshold_either_side(fraction, slides):
+    c = ContactLaws(at=I, normal=R0.j, tangent=R0.i, friction=Coulomb(0.5, 0.4))
+    V = rm.Torsor(rm.Vector.zero(), 1.0 * R0.j + fraction * R0.i, I)
+    if slides:
+        assert c.action(10, V).resultant == -4.0 * R0.i + 10 * R0.j
+    else:
+        with pytest.raises(ArgumentError, match="`sliding_velocity` must be non-zero"):
+            c.action(10, V)

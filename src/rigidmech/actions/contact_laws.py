@@ -74,6 +74,24 @@ def _is_zero_vector(v: Vector) -> bool:
     return all(c == 0 or sp.simplify(c) == 0 for c in comps)
 
 
+# A numeric rate (the sliding velocity, the rolling or pivoting rotation) whose magnitude is at
+# most this fraction of the vector it is a part of (the velocity of I, the rotation) is rounding
+# noise: zero, not a direction to oppose.
+_RATE_RTOL = 1e-12
+
+
+def _part(part: Vector, whole: Vector) -> Vector:
+    """``part`` of ``whole`` (its tangential or normal component), or zero when both are
+    numbers and |part| <= _RATE_RTOL |whole|."""
+    frame = whole.frames[0] if whole.frames else None
+    if frame is None or part.is_zero:
+        return part
+    p2, w2 = sp.sympify(part.dot(part)), sp.sympify(whole.dot(whole))
+    if p2.is_number and w2.is_number and float(p2) <= _RATE_RTOL**2 * float(w2):
+        return Vector.zero()
+    return part
+
+
 def _opposing(magnitude, rate: Vector) -> Vector:
     """-magnitude * rate / |rate|."""
     return -magnitude * rate / rate.magnitude()
@@ -437,7 +455,9 @@ class ContactLaws:
         kinematic torsor ``motion`` (ch. 13.1): N n, the friction opposing the sliding
         velocity v(I) - (v(I).n) n, and the rolling and pivoting couples opposing the
         rolling and pivoting rotations. Each law needs a non-zero rate (sliding, rolling,
-        pivoting); with a zero rate its action is a reaction, an unknown of statics.
+        pivoting); with a zero rate its action is a reaction, an unknown of statics. With
+        numbers, a rate at most 1e-12 of the vector it is part of (the velocity of I, the
+        rotation) is rounding noise and counts as zero.
 
         Examples
         --------
@@ -459,11 +479,12 @@ class ContactLaws:
         v, w = V.moment, V.resultant
         action = Torsor(N * n, Vector.zero(), self._at)
         if self._friction is not None:
-            action = action + self._friction.sliding_action(N, v - v.dot(n) * n, self._at)
+            action = action + self._friction.sliding_action(N, _part(v - v.dot(n) * n, v),
+                                                            self._at)
         if self._rolling is not None:
-            action = action + self._rolling.couple(N, w - w.dot(n) * n, self._at)
+            action = action + self._rolling.couple(N, _part(w - w.dot(n) * n, w), self._at)
         if self._pivoting is not None:
-            action = action + self._pivoting.couple(N, w.dot(n) * n, self._at)
+            action = action + self._pivoting.couple(N, _part(w.dot(n) * n, w), self._at)
         return action
 
     def __repr__(self):
