@@ -204,7 +204,7 @@ def test_stability_and_potential_stability_decide_definiteness_by_one_rule(k2, v
     assert lin_verdict == verdict
 
 
-@pytest.mark.parametrize("offset, ok", [(1e-10, True), (1e-9, True), (1.0000001e-9, False),
+@pytest.mark.parametrize("offset, ok", [(1e-10, True), (1e-9, True), (1.00001e-9, False),
                                          (1e-8, False)])
 def test_stationarity_uses_linearize_tolerance(offset, ok):
     """A point off the equilibrium by `offset` (|f| = |dV/dq| = offset): one absolute
@@ -221,3 +221,25 @@ def test_stationarity_uses_linearize_tolerance(offset, ok):
             stability(eqs, [offset, 0], **params)
     with pytest.raises(ArgumentError, match="not a stationary point"):
         potential_stability(eqs, V, [1e-10, 0], tol=1e-11, **params)
+
+
+def test_equilibria_of_a_stiff_system_are_accepted_by_stability():
+    """theta'' = -k sin(theta) with k = 1e8: pi is not a float, k sin(pi) = 1.2e-8 > 1e-9.
+    The equilibria found are accepted by stability/linearize/potential_stability (the rule
+    allows the rounding of q*: 8 eps |df/dq| max(|q|, 1) = 5.6e-7 here), a point off by 1e-6
+    (residual 100) is not."""
+    th = rm.coordinates("theta")
+    q, u = sp.symbols("theta theta_dot")
+    k = sp.Symbol("k", positive=True)
+    eqs = rm.EquationsOfMotion(coordinates=(th,), q=(q,), u=(u,),
+                               mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-k * sp.sin(q)]]))
+    found = equilibria(eqs, within=(-4, 4), k=1e8)
+    assert_allclose([e["theta"] for e in found], [-math.pi, 0.0, math.pi], atol=1e-15)
+    assert [stability(eqs, e, k=1e8) for e in found] == ["unstable", "stable", "unstable"]
+    V = -k * sp.cos(th)
+    assert potential_stability(eqs, V, [math.pi], k=1e8) == "unstable"
+    with pytest.raises(ArgumentError, match="not an equilibrium"):
+        stability(eqs, [math.pi + 1e-6], k=1e8)
+    with pytest.raises(ArgumentError, match="not a stationary point"):
+        potential_stability(eqs, V, [math.pi + 1e-6], k=1e8)

@@ -269,7 +269,8 @@ def test_a_rate_on_a_coordinate_the_equations_depend_on_is_not_steady(rate):
 
 def test_steadiness_uses_one_tolerance_on_the_residual_and_its_rate():
     """x'' = -x - d y, y'' = 0 about 0 with y' = 1: residual 0, rate (df/dq) q'* = (-d, 0).
-    |d| <= tol is steady (the boundary included), above it is not."""
+    |d| <= tol is steady (the boundary included; plus the rounding allowance 8 eps
+    sum |df/dq| max(|q'|, 1) = 1.8e-15), above it is not."""
     x, y = rm.coordinates("x y")
     qx, qy, ux, uy = sp.symbols("x y x_dot y_dot")
     d = sp.Symbol("d")
@@ -279,7 +280,7 @@ def test_steadiness_uses_one_tolerance_on_the_residual_and_its_rate():
     for value in (1e-10, 1e-9):
         lin = linearize(eqs, velocities={"y": 1.0}, parameters={"d": value}, tol=1e-9)
         assert lin.velocities == {"x": 0, "y": 1.0}
-    for value in (1.0000001e-9, -2e-9):
+    for value in (1.00001e-9, -2e-9):           # tol + 8 eps (|J| |q|) = 1e-9 + 1.8e-15
         with pytest.raises(ArgumentError, match="not a steady motion"):
             linearize(eqs, velocities={"y": 1.0}, parameters={"d": value}, tol=1e-9)
     with pytest.raises(ArgumentError, match="not a steady motion"):

@@ -285,7 +285,7 @@ def linearize_constrained(eqs, about, velocities, w, w_star, extra, *, check, to
         from .linearize import _steady  # the one rule of both paths
 
         ok, moving, res, rate = _steady(list(T.T * R0), list(Kfull * sp.Matrix(rates)),
-                                        rates, tol)
+                                        rates, tol, Kfull.tolist(), q_star)
         if not ok:
             kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(

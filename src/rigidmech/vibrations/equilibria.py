@@ -32,7 +32,7 @@ from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
 from .._core.validation import as_declared
 from ._symbols import normalise
-from .linearize import _residual_vanishes, _values, linearize
+from .linearize import _ROUNDING, _residual_vanishes, _values, linearize, rounding_allowance
 from .modes import is_symmetric
 
 __all__ = ["equilibria", "stability", "potential_stability", "Bifurcation", "bifurcation"]
@@ -96,6 +96,41 @@ def _static_function(norm, syms):
                                [list(norm.q), *syms], name="static_forcing")
 
 
+def _jacobian(fun, x):
+    """Central differences (steps 1e-7 max(|x_j|, 1)): for the rounding allowance and the
+    polishing Newton steps only."""
+    n = x.size
+    J = np.empty((n, n))
+    for j in range(n):
+        h = 1e-7 * max(abs(x[j]), 1.0)
+        e = np.zeros(n)
+        e[j] = h
+        J[:, j] = (fun(x + e) - fun(x - e)) / (2 * h)
+    return J
+
+
+def _accepted(fun, x, tol=1e-9):
+    """The root ``x`` polished by up to 3 Newton steps, and whether it is an equilibrium by
+    the rule of :func:`~rigidmech.vibrations.linearize` (absolute ``tol`` plus the rounding
+    allowance of x, taken at half its size so that a point accepted here is accepted there)."""
+    x = np.asarray(x, dtype=float)
+    r = fun(x)
+    for _ in range(3):
+        J = _jacobian(fun, x)
+        allowance = _ROUNDING / 2 * (np.abs(J) @ np.maximum(np.abs(x), 1.0))
+        if np.all(np.abs(r) <= allowance):
+            break
+        step = np.linalg.lstsq(J, -r, rcond=None)[0]
+        y = x + step
+        ry = fun(y)
+        if not np.all(np.isfinite(ry)) or np.max(np.abs(ry)) >= np.max(np.abs(r)):
+            break
+        x, r = y, ry
+    J = _jacobian(fun, x)
+    allowance = _ROUNDING / 2 * (np.abs(J) @ np.maximum(np.abs(x), 1.0))
+    return x, bool(np.all(np.abs(r) <= tol + allowance))
+
+
 def _search(norm, f, values, within, samples, xtol):
     """All the roots of the compiled f(q, *values) in the box (the strategy of the module's
     docstring)."""
@@ -121,7 +156,11 @@ def _search(norm, f, values, within, samples, xtol):
                                                    grid[k + 1], xtol=xtol, rtol=1e-15))
         if y[-1] == 0 or abs(y[-1]) <= 1e-14 * scale:
             roots.append(grid[-1])
-        points = [np.array([r]) for r in roots]
+        points = []
+        for r in roots:
+            x, ok = _accepted(fun, np.array([r]))
+            if ok:
+                points.append(x)
     else:
         axes = [np.linspace(a, b, samples or 7) for a, b in box]
         points = []
@@ -131,9 +170,9 @@ def _search(norm, f, values, within, samples, xtol):
             if not sol.success or not all(a - xtol <= xi <= b + xtol
                                           for xi, (a, b) in zip(x, box, strict=True)):
                 continue
-            if np.max(np.abs(fun(x))) > 1e-8:
-                continue
-            points.append(x)
+            x, ok = _accepted(fun, x)
+            if ok:
+                points.append(x)
     merged = []
     for x in sorted(points, key=lambda p: tuple(p)):
         if not any(np.max(np.abs(x - y)) <= 10 * xtol for y in merged):
@@ -297,8 +336,8 @@ def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
     at : dict or sequence
         The position.
     tol : float
-        Absolute tolerance on each numeric dV/dq at ``at`` (``abs(x) <= tol`` is
-        stationary), the tolerance of :func:`~rigidmech.vibrations.linearize` on the residual
+        Absolute tolerance on each numeric dV/dq at ``at`` (plus the rounding allowance of
+        ``at``), the rule of :func:`~rigidmech.vibrations.linearize` on the residual
         f = -dV/dq; the Hessian's eigenvalues are decided to 1e-12 relative to the largest
         one, as in :func:`stability`.
     **params : values of the parameters (optional; symbolic otherwise, when sympy decides
@@ -333,12 +372,13 @@ def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
         subs = {names[k]: as_declared(names[k], v, "params") for k, v in params.items()
                 if k in names}
     grad = [sp.simplify(V.diff(q).xreplace(point).xreplace(subs)) for q in norm.q]
-    if not all(_residual_vanishes(x, tol) for x in grad):
-        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "
-                            f"(tolerance {tol}).")
     H = sp.Matrix(len(norm.q), len(norm.q),
                   lambda i, j: sp.simplify(V.diff(norm.q[i], norm.q[j]).xreplace(point)
                                            .xreplace(subs)))
+    if not all(_residual_vanishes(x, tol, rounding_allowance(H.row(i), lin_point))
+               for i, x in enumerate(grad)):
+        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "
+                            f"(tolerance {tol}).")
     if all(x.is_number for x in H):
         return _definiteness(np.linalg.eigvalsh(np.array(H.tolist(), dtype=float)))
     minors = [sp.simplify(H[:r, :r].det()) for r in range(1, H.shape[0] + 1)]

@@ -36,24 +36,50 @@ from .modes import Modes, harmonic_response_direct, natural_modes
 __all__ = ["LinearSystem", "linearize"]
 
 
-def _residual_vanishes(x, tol):
+_ROUNDING = 8 * float(np.finfo(float).eps)
+
+
+def rounding_allowance(jac_row, values) -> float:
+    """What a residual f_i may keep because q* is rounded: 8 eps sum_j |df_i/dq_j|
+    max(|q_j*|, 1) (the backward error of a point given in floats: pi is not representable,
+    so k sin(pi) = 1.2e-16 k). Zero when an entry is not a number."""
+    total = 0.0
+    for d, v in zip(jac_row, values, strict=True):
+        d, v = sp.sympify(d), sp.sympify(v)
+        if not (d.is_number and v.is_number):
+            return 0.0
+        total += abs(complex(d)) * max(abs(complex(v)), 1.0)
+    return _ROUNDING * total
+
+
+def _residual_vanishes(x, tol, allowance=0.0):
     """Whether a residual f(q*, q'*) or its rate along the motion is zero: within ``tol``
-    (absolute, boundary included) for a number (a point found numerically), identically
+    (absolute, boundary included) plus the ``allowance`` for the rounding of q*
+    (:func:`rounding_allowance`) for a number (a point found numerically), identically
     otherwise (``is_identically_zero``). The one test of steadiness of both paths of
-    :func:`linearize` (with and without constraints)."""
+    :func:`linearize` (with and without constraints), of the equilibria found numerically and
+    of the stationarity of a potential."""
     x = sp.sympify(x)
     if x.is_number:
-        return abs(complex(x)) <= tol
+        return abs(complex(x)) <= tol + allowance
     return is_identically_zero(x)
 
 
-def _steady(residual, rate, rates, tol):
+def _steady(residual, rate, rates, tol, jac=None, q=None):
     """The one rule of steadiness, for the equations (no constraints) or the reduced ones:
     the residual f(q*, q'*) and its rate along the motion (df/dq) q'* both vanish
-    (:func:`_residual_vanishes`). Returns (ok, moving, residual, rate), simplified."""
+    (:func:`_residual_vanishes`; with ``jac`` the rows df_i/dq and ``q`` = q*, the residual
+    may keep the rounding of q* and the rate that of q'*). Returns (ok, moving, residual,
+    rate), simplified."""
     residual = [r if sp.sympify(r).is_number else sp.simplify(r) for r in residual]
     rate = [r if sp.sympify(r).is_number else sp.simplify(r) for r in rate]
-    ok = all(_residual_vanishes(r, tol) for r in residual + rate)
+    if jac is None:
+        slack_q = slack_u = [0.0] * len(residual)
+    else:
+        slack_q = [rounding_allowance(row, q) for row in jac]
+        slack_u = [rounding_allowance(row, rates) for row in jac]
+    ok = all(_residual_vanishes(r, tol, a) for r, a in zip(residual, slack_q, strict=True)) \
+        and all(_residual_vanishes(r, tol, a) for r, a in zip(rate, slack_u, strict=True))
     moving = any(not _residual_vanishes(v, 0.0) for v in rates)
     return ok, moving, residual, rate
 
@@ -320,8 +346,10 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
         f), the usual steady motion.
     tol : float
         Absolute tolerance on each numeric entry of the residual and of its rate (a
-        numerically found equilibrium satisfies f = 0 to round-off only): ``abs(x) <= tol``
-        passes. Symbolic entries must vanish identically.
+        numerically found equilibrium satisfies f = 0 to round-off only): ``abs(x) <= tol +
+        8 eps sum_j |df_i/dq_j| max(|q_j|, 1)`` passes, the second term being what the
+        rounding of q* (of q'* for the rate) leaves in f_i (k sin(pi) = 1.2e-16 k for a
+        stiff pendulum). Symbolic entries must vanish identically.
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
@@ -405,15 +433,17 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     vel_named = dict(zip(norm.names, u_star, strict=True))
     if check:
         rate = [sum((jac[i][j] * u_star[j] for j in range(n)), sp.S.Zero) for i in range(n)]
-        ok, moving, residual, rate = _steady(f_values, rate, u_star, tol)
+        ok, moving, residual, rate = _steady(f_values, rate, u_star, tol,
+                                             [row[:n] for row in jac], q_star)
         if not ok:
             kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(
                 f"`about` is not {kind} (q''* = 0 along q* + q'* t needs f = 0 and its rate "
                 f"df/dt = 0 along the motion): f(q*, q'*) = {residual} and its rate "
                 f"(df/dq) q'* = {rate} at q* = {about_named}, q'* = {vel_named} (tolerance "
-                f"{tol}). A rate is steady only on a coordinate the equations do not depend "
-                f"on; find the equilibria with rigidmech.vibrations.equilibria.")
+                f"{tol} plus what the rounding of q* leaves). A rate is steady only on a "
+                f"coordinate the equations do not depend on; find the equilibria with "
+                f"rigidmech.vibrations.equilibria.")
         _check_mass(M0, about_named)
     if simplify is None:
         simplify = n <= 4
