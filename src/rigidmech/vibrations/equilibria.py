@@ -209,6 +209,9 @@ def equilibria(eqs, *, within=None, samples=None, xtol=1e-12, **params) -> list:
     list of dict
         Coordinate name -> position, one dict per equilibrium (increasing for 1 dof). A
         symbolic family that leaves a coordinate free lists it under the key ``"free"``.
+        A numeric root is polished by Newton steps and kept only if it is an equilibrium by
+        the rule of :func:`~rigidmech.vibrations.linearize` (its default tolerance), so that
+        :func:`stability` accepts it.
 
     Raises
     ------
