@@ -406,3 +406,28 @@ def test_hyperbola_far_from_the_epoch():
 def test_epoch_must_be_a_finite_number(epoch):
     with pytest.raises(ArgumentError, match="`epoch` must be a finite"):
         Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0, epoch=epoch)
+
+
+@pytest.mark.parametrize("alpha", [0.0, 0.3, 2.0])
+def test_a_circular_orbit_is_a_circle_whatever_its_phase(alpha):
+    """The state at circular speed is a circle for every position on it (e is 1e-16 of
+    rounding, not 0, once rotated), its periapsis the position at the epoch (as documented),
+    not the direction of the rounding noise."""
+    mu, r = 8.0, 2.0
+    c, s = math.cos(alpha), math.sin(alpha)
+    v = circular_speed(mu, r)
+    o = Orbit([r * c, r * s, 0], [-v * s, v * c, 0], mu=mu, epoch=1.5)
+    assert o.kind == "circle" and o.is_bound and o.eccentricity < 1e-15
+    assert_allclose(o.argument_of_periapsis, alpha, atol=1e-15)
+    assert o.time_of_periapsis == 1.5 and abs(o.true_anomaly_at_epoch) < 1e-15
+
+
+@pytest.mark.parametrize("e, kind", [(0.5e-12, "circle"), (0.99e-12, "circle"),
+                                     (1.01e-12, "ellipse"), (2e-12, "ellipse")])
+def test_circle_threshold(e, kind):
+    """From the periapsis (1, 0, 0) with v^2 = 1 + e (mu = 1) the eccentricity is e (to 2e-4
+    relative: 1 + e is rounded): a circle up to e = 1e-12, an ellipse above (either side of
+    the boundary by 1 %)."""
+    o = Orbit([1.0, 0, 0], [0, math.sqrt(1 + e), 0], mu=1.0)
+    assert o.kind == kind
+    assert_allclose(o.eccentricity, e, rtol=1e-3)

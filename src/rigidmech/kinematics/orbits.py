@@ -39,6 +39,9 @@ __all__ = ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
            "circular_speed", "escape_speed", "hohmann_transfer"]
 
 _MAX_ITER = 200
+# eccentricity up to which the conic is a circle: e_vec is computed to about 1e-16 (times
+# v^2 r / mu), so below 1e-12 its direction, the periapsis, is not defined
+_CIRCLE_E = 1e-12
 
 
 def _positive(x, argument):
@@ -208,8 +211,9 @@ class Orbit:
 
     ``argument_of_periapsis`` is the angle from the ascending node to the periapsis in the
     plane of the orbit (the usual omega). For an orbit in the plane z = 0, where the node is
-    undefined, it is measured from the x axis in the sense of the motion. For a circle
-    (e = 0) the periapsis is the position at the epoch.
+    undefined, it is measured from the x axis in the sense of the motion. The conic is a
+    circle when it is bound with e <= 1e-12 (below that, the direction of the eccentricity
+    vector is rounding noise); the periapsis of a circle is the position at the epoch.
 
     Examples
     --------
@@ -259,10 +263,11 @@ class Orbit:
             # e^2 = 1 - alpha p: on the side of 1 the energy says, accurate near e = 1 (a
             # nearly radial orbit); the norm of e_vec is the accurate one near e = 0
             e = e_norm if e_norm < 0.5 else math.sqrt(max(0.0, 1 - alpha * p))
-            kind = ("circle" if e == 0 else "ellipse") if energy < 0 else "hyperbola"
+            kind = ("circle" if e <= _CIRCLE_E else "ellipse") if energy < 0 else "hyperbola"
         self._e, self._kind = e, kind
         w = h / hn
-        P = e_vec / e_norm if e_norm > 0 else r0 / r
+        # a circle's periapsis is the position at the epoch (e_vec is rounding noise there)
+        P = e_vec / e_norm if kind != "circle" else r0 / r
         self._P = P
         self._Q = np.cross(w, P)
         self._nu0 = math.atan2(r0 @ self._Q, r0 @ P)
@@ -398,7 +403,10 @@ class Orbit:
         return float(out) if out.ndim == 0 else out
 
     def _time_since_periapsis(self):
-        """Time from the periapsis to the epoch state (universal Kepler equation)."""
+        """Time from the periapsis to the epoch state (universal Kepler equation); zero for
+        a circle, whose periapsis is the position at the epoch."""
+        if self._kind == "circle":
+            return 0.0
         t = time_from_periapsis(self._r0, self._v0, self._alpha, self._mu,
                                 self._p / (1 + self._e))
         if self.is_bound and t < 0:
