@@ -117,3 +117,16 @@ def test_symmetry_is_decided_relative_to_the_size_of_the_matrix(scale):
     bad = K + scale * np.array([[0.0, 1e-4], [0.0, 0.0]])
     with pytest.raises(ArgumentError, match="`stiffness` must be symmetric"):
         natural_modes(M, bad)
+
+
+def test_direct_response_at_an_undamped_natural_frequency_is_refused_clearly():
+    """K - w^2 M singular without damping (w = 2 for k = 4, m = 1; w = 1 for the 2-dof chain):
+    the steady amplitude is infinite: a named error, not numpy's 'Singular matrix'."""
+    with pytest.raises(ArgumentError, match=r"`omega` = 2.0 is a natural frequency"):
+        harmonic_response_direct([[1.0]], [[0.0]], [[4.0]], [1.0], [1.0, 2.0])
+    with pytest.raises(ArgumentError, match=r"`omega` = 1.0 is a natural frequency"):
+        harmonic_response_direct(np.eye(2), np.zeros((2, 2)), [[2.0, -1.0], [-1.0, 2.0]],
+                                  [1.0, 0.0], [1.0])
+    # with damping the same frequency has a finite response
+    out = harmonic_response_direct([[1.0]], [[0.1]], [[4.0]], [1.0], [2.0])
+    assert_allclose(out, [[1 / (0.2j)]], rtol=1e-14)

@@ -335,7 +335,13 @@ def harmonic_response_direct(mass, damping, stiffness, force, omega):
     w = np.atleast_1d(np.asarray(omega, dtype=float))
     out = np.empty((n, w.size), dtype=complex)
     for k, wk in enumerate(w):
-        out[:, k] = np.linalg.solve(K - wk**2 * M + 1j * wk * C, F)
+        try:
+            out[:, k] = np.linalg.solve(K - wk**2 * M + 1j * wk * C, F)
+        except np.linalg.LinAlgError:
+            raise ArgumentError(
+                f"`omega` = {wk} is a natural frequency of the system without damping there "
+                "(K - omega^2 M + i omega C is singular): the steady amplitude is infinite. "
+                "Add damping or leave out that frequency.") from None
     return out
 
 
