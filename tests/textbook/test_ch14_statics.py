@@ -391,3 +391,27 @@ def test_an_ill_conditioned_statics_problem_warns():
     with pytest.warns(RigidmechWarning, match=r"ill-conditioned.*condition number"):
         values = _wedge(1e-11).solve().values
     assert math.isclose(values[N1], 1 / (2 * math.sin(1e-11)), rel_tol=1e-4)
+
+
+def test_values_by_name_reach_symbols_with_assumptions():
+    """values={"W": 2} means the problem's W (declared positive), not a new plain symbol that
+    matches nothing; a name of no symbol of the problem is refused (also "Q", which sympify
+    reads as sympy's assumptions object)."""
+    from rigidmech._core.errors import ArgumentError as _ArgumentError
+
+    R0 = rm.Frame("R0")
+    box = rm.Body("box", frame=R0)
+    st_ = Statics(R0)
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                     friction=Coulomb(0.5)), label="A")
+    W = rm.constants("W", positive=True)
+    P = sp.Symbol("P", real=True)
+    st_.act(Force(on=box, vector=-W * R0.j + P * R0.i, at=R0.origin))
+    assert st_.solve(values={"W": 2, "P": 0}).values[sp.Symbol("N_A", real=True)] == 2.0
+    lim = limiting_equilibrium(st_, P, (0.0, 10.0), values={"W": 10.0})
+    assert math.isclose(lim.value, 5.0, rel_tol=1e-9)
+    for name in ("Q", "V"):
+        with pytest.raises(_ArgumentError, match=rf"`values`: '{name}' names no symbol"):
+            st_.solve(values={name: 2})
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        st_.solve(values={"W": -1, "P": 0})

@@ -14,7 +14,7 @@ import sympy as sp
 
 from .errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["finite_real", "nonnegative", "as_declared"]
+__all__ = ["finite_real", "nonnegative", "as_declared", "substitutions"]
 
 
 def finite_real(x, argument, *, hint=""):
@@ -106,8 +106,37 @@ def as_declared(symbol, value, argument):
     if not getattr(v, "is_number", False):
         return v
     for attribute, expected in _DECLARED:
-        if getattr(symbol, f"is_{attribute}") is True and getattr(v, f"is_{attribute}") is False:
+        if getattr(symbol, f"is_{attribute}", None) is True \
+                and getattr(v, f"is_{attribute}", None) is False:
             raise ArgumentError(
                 f"`{argument}`: the value of `{symbol}` must be {expected} (declared "
                 f"{attribute}); got {value}.")
     return v
+
+
+def substitutions(values, symbols, argument="values"):
+    """``{symbol: value}`` from ``values`` keyed by symbol or by name: a name is resolved
+    among ``symbols`` (those of the problem), so that ``{"m": 2}`` reaches a symbol declared
+    ``positive`` (sympify would make a new plain symbol that matches nothing, or read "Q" as
+    sympy's assumptions object); every value is checked by :func:`as_declared`. A name of no
+    symbol of the problem is refused; a symbol key passes as it is.
+
+    Examples
+    --------
+    >>> m = sp.Symbol("m", positive=True)
+    >>> substitutions({"m": 2}, {m})
+    {m: 2}
+    """
+    by_name = {s.name: s for s in symbols if isinstance(s, sp.Symbol)}
+    out = {}
+    for key, value in (values or {}).items():
+        if isinstance(key, str):
+            if key not in by_name:
+                raise ArgumentError(
+                    f"`{argument}`: {key!r} names no symbol of the problem; expected some of "
+                    f"{sorted(by_name)} (or pass the symbol itself).")
+            key = by_name[key]
+        else:
+            key = sp.sympify(key)
+        out[key] = as_declared(key, value, argument)
+    return out
