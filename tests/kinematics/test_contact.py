@@ -224,3 +224,34 @@ def test_rotation_splits_into_rolling_and_spinning(n, rates):
     assert_allclose(rolling + spinning, w, atol=1e-12)
     assert abs(rolling @ normal) < 1e-12
     assert_allclose(np.cross(spinning, normal), 0, atol=1e-12)
+
+
+@pytest.mark.parametrize("height, touches", [
+    (0.1, True), (0.7 - 0.6, True),                # 0.09999999999999998: rounding only
+    (0.1 * (1 + 0.5e-12), True), (0.1 * (1 - 0.5e-12), True),
+    (0.1 * (1 + 2e-12), False), (0.1 + 1e-6, False),
+])
+def test_contact_of_float_data_is_decided_relative_to_the_size(height, touches):
+    """A sphere of radius 0.1 on the plane z = 0, centre at `height`: in contact when the gap
+    is at most 1e-12 of the radius (numbers given in floats), not only when it is exactly 0."""
+    R0 = rm.Frame("R0")
+    sphere, plane = Sphere(R0.point("C", 0, 0, height), 0.1), rm.Plane(R0.origin, R0.k)
+    if touches:
+        g = contact_geometry(sphere, plane)
+        assert g.normal == R0.k
+    else:
+        with pytest.raises(rm.errors.ConnectionError_, match="not in contact"):
+            contact_geometry(sphere, plane)
+
+
+@pytest.mark.parametrize("gap, touches", [(0.5e-12, True), (2e-12, False)])
+def test_contact_of_two_float_circles_relative_threshold(gap, touches):
+    """Circles of radii 0.3 and 0.2 whose centres are 0.5 (1 + gap) apart."""
+    R0 = rm.Frame("R0")
+    a = Circle(R0.origin, 0.3, normal=R0.k)
+    b = Circle(R0.point("B", 0.5 * (1 + gap), 0, 0), 0.2, normal=R0.k)
+    if touches:
+        contact_geometry(a, b)
+    else:
+        with pytest.raises(rm.errors.ConnectionError_, match="not in contact"):
+            contact_geometry(a, b)

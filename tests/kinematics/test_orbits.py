@@ -249,3 +249,185 @@ def test_state_at_conserves_energy_and_angular_momentum(r, v, t):
     assert_allclose(o1.eccentricity_vector, o.eccentricity_vector, rtol=1e-8, atol=1e-9)
     r2, _ = o1.state_at(0.0)
     assert_allclose(r2, r, rtol=1e-8, atol=1e-8 * max(1.0, rn))
+
+
+# --- trust at the edges: classification by the energy, state_at by universal variables ------
+
+def _integrate(r0, v0, mu, t0, ts):
+    """Reference: DOP853 at rtol 1e-13 from the state at t0 to the times ts (sorted)."""
+    ts = np.atleast_1d(np.asarray(ts, dtype=float))
+    y0 = np.concatenate([np.asarray(r0, float), np.asarray(v0, float)])
+    out = np.empty((ts.size, 6))
+    for sign in (1, -1):
+        sel = (ts - t0) * sign >= 0
+        if not sel.any():
+            continue
+        t_end = ts[sel].max() if sign > 0 else ts[sel].min()
+        if t_end == t0:
+            out[sel] = y0
+            continue
+        sol = solve_ivp(_rhs(mu), (t0, t_end), y0, method="DOP853", rtol=1e-13,
+                        atol=1e-15, dense_output=True)
+        assert sol.success
+        out[sel] = sol.sol(ts[sel]).T
+    return out[:, :3], out[:, 3:]
+
+
+@pytest.mark.parametrize("vt", [1e-6, 1e-12])
+def test_nearly_radial_bound_orbit_is_an_ellipse(vt):
+    """r0 = (1, 0, 0), v0 = (0.5, vt, 0), mu = 1: energy 0.125 - 1 = -0.875 < 0, a bound
+    orbit whatever the small tangential speed: a = 1/1.75, period 2 pi a^(3/2), apoapsis
+    a (1 + e) ~ 2a; the state at t = 0.5 is that of a tight integration (r = 1.139...),
+    and after one period (through the near-collision at the periapsis) the point is back."""
+    o = Orbit([1.0, 0, 0], [0.5, vt, 0], mu=1.0)
+    eps = (0.25 + vt**2) / 2 - 1
+    a = -1 / (2 * eps)
+    assert o.kind == "ellipse" and o.is_bound
+    assert_allclose(o.specific_energy, eps, rtol=1e-15)
+    assert_allclose(o.semi_major_axis, a, rtol=1e-14)
+    assert_allclose(o.period, 2 * math.pi * a**1.5, rtol=1e-14)
+    e = math.sqrt(1 + 2 * eps * vt**2)    # e^2 = 1 + 2 eps h^2 / mu^2, h = vt
+    assert o.eccentricity < 1 or vt < 1e-8  # 1 - 8.75e-25 rounds to 1.0 for vt = 1e-12
+    assert_allclose(o.eccentricity, e, rtol=1e-15)
+    assert_allclose(o.apoapsis, a * (1 + e), rtol=1e-14)
+    assert_allclose(o.periapsis, vt**2 / (1 + e), rtol=1e-12)
+    ts = np.array([-0.3, 0.2, 0.5, 1.0])
+    r, v = o.state_at(ts)
+    r_ref, v_ref = _integrate([1.0, 0, 0], [0.5, vt, 0], 1.0, 0.0, ts)
+    assert_allclose(np.linalg.norm(r[2]), 1.1392, rtol=1e-4)
+    assert_allclose(r, r_ref, rtol=0, atol=1e-10)
+    assert_allclose(v, v_ref, rtol=0, atol=1e-10)
+    r1, v1 = o.state_at(o.period)
+    assert_allclose(r1, [1.0, 0, 0], atol=1e-9)
+    assert_allclose(v1, [0.5, vt, 0], atol=1e-9)
+    # one revolution earlier, through the near-collision at the periapsis (t = -0.76)
+    r1, v1 = o.state_at(-1.0)
+    r_ref, v_ref = _integrate([1.0, 0, 0], [0.5, vt, 0], 1.0, 0.0, [o.period - 1.0])
+    assert_allclose(r1, r_ref[0], atol=1e-9)
+    assert_allclose(v1, v_ref[0], atol=1e-9)
+
+
+def _at_energy_ratio(rho, mu=2.0):
+    """A state at r0 = (1.5, 0, 0) whose energy ratio eps / (v^2/2 + mu/r) is rho."""
+    r = 1.5
+    v = math.sqrt(2 * mu / r * (1 + rho) / (1 - rho))
+    direction = np.array([0.6, 0.8, 0.0])
+    return np.array([r, 0.0, 0.0]), v * direction
+
+
+def test_kind_decided_by_the_energy_at_the_boundary():
+    """kind is 'parabola' when |eps| <= parabolic_tol (v^2/2 + mu/r), otherwise the sign of
+    the energy decides; at the boundary itself (parabolic_tol = the ratio) it is a parabola."""
+    mu = 2.0
+    for rho, kind in [(0.0, "parabola"), (0.5e-12, "parabola"), (-0.5e-12, "parabola"),
+                      (2e-12, "hyperbola"), (-2e-12, "ellipse"),
+                      (1e-6, "hyperbola"), (-1e-6, "ellipse")]:
+        o = Orbit(*_at_energy_ratio(rho, mu), mu=mu)
+        assert o.kind == kind, (rho, o)
+        assert o.is_bound == (kind == "ellipse")
+        assert (o.period < math.inf) == o.is_bound
+        assert (o.eccentricity < 1) == (kind == "ellipse")
+        assert (o.eccentricity > 1) == (kind == "hyperbola")
+    r0, v0 = _at_energy_ratio(-1e-9, mu)
+    ratio = abs(v0 @ v0 / 2 - mu / 1.5) / (v0 @ v0 / 2 + mu / 1.5)
+    assert Orbit(r0, v0, mu=mu, parabolic_tol=ratio).kind == "parabola"
+    assert Orbit(r0, v0, mu=mu, parabolic_tol=ratio * (1 - 1e-6)).kind == "ellipse"
+    assert Orbit(r0, v0, mu=mu, parabolic_tol=0).kind == "ellipse"
+
+
+def test_state_at_continuous_across_the_parabolic_boundary():
+    """Energy ratios 0, +-1e-12, +-1e-6 (parabola, both sides of the band, ellipse and
+    hyperbola): the state at several times agrees with a tight integration to 1e-9 (relative
+    to the distance), and moves with rho by no more than a Lipschitz bound (continuity)."""
+    mu = 2.0
+    ts = np.array([-1.0, 0.0, 0.7, 3.0, 10.0])
+    states = {}
+    for rho in (-1e-6, -1e-12, 0.0, 1e-12, 1e-6):
+        r0, v0 = _at_energy_ratio(rho, mu)
+        o = Orbit(r0, v0, mu=mu, epoch=0.0)
+        r, v = o.state_at(ts)
+        r_ref, v_ref = _integrate(r0, v0, mu, 0.0, ts)
+        scale = np.linalg.norm(r_ref, axis=1)[:, None]
+        assert np.all(np.abs(r - r_ref) <= 1e-9 * scale), (rho, r - r_ref)
+        assert np.all(np.abs(v - v_ref) <= 1e-9 * np.linalg.norm(v_ref, axis=1)[:, None])
+        states[rho] = (r, v)
+    r_0, v_0 = states[0.0]
+    for rho in (-1e-12, 1e-12, -1e-6, 1e-6):
+        r, v = states[rho]
+        # d(state)/d(rho) is O(t) here: 100 |rho| (t <= 10, r <= 20) bounds the change
+        assert np.all(np.abs(r - r_0) <= 100 * abs(rho) * 20 + 1e-13), rho
+        assert np.all(np.abs(v - v_0) <= 100 * abs(rho) * 20 + 1e-13), rho
+
+
+def test_radial_motion_threshold():
+    """h below 1e-14 r max(v, sqrt(mu/r)) is radial motion and refused; just above, the orbit
+    is accepted and its state is right."""
+    with pytest.raises(ArgumentError, match="radial motion"):
+        Orbit([1.0, 0, 0], [0.5, 0.5e-14, 0], mu=1.0)
+    o = Orbit([1.0, 0, 0], [0.5, 2e-14, 0], mu=1.0)
+    assert o.kind == "ellipse"
+    r, v = o.state_at(0.5)
+    r_ref, v_ref = _integrate([1.0, 0, 0], [0.5, 2e-14, 0], 1.0, 0.0, [0.5])
+    assert_allclose(r, r_ref[0], atol=1e-10)
+    assert_allclose(v, v_ref[0], atol=1e-10)
+
+
+def test_time_of_periapsis_is_the_last_before_the_epoch():
+    """On an ellipse the documented passage is the last one at or before the epoch, also
+    when the point is falling towards the periapsis at the epoch."""
+    o = Orbit([1.0, 0.3, 0.0], [-0.4, -1.0, 0.0], mu=1.0, epoch=5.0)   # r . v < 0
+    assert o.time_of_periapsis <= 5.0 < o.time_of_periapsis + o.period
+    r, v = o.state_at(o.time_of_periapsis)
+    assert_allclose(np.linalg.norm(r), o.periapsis, rtol=1e-12)
+    assert abs(r @ v) < 1e-12
+
+
+def test_radius_at_outside_a_hyperbola_is_refused():
+    """r = p / (1 + e cos nu) is negative beyond the asymptotes: no point of the conic."""
+    o = Orbit([1.0, 0, 0], [0, 2.0, 0], mu=1.0)     # e = 3
+    assert_allclose(o.radius_at(0.5), 4 / (1 + 3 * math.cos(0.5)), rtol=1e-15)
+    with pytest.raises(ArgumentError, match="`true_anomaly` must lie between the asymptotes"):
+        o.radius_at(2.5)
+
+
+def test_hyperbola_far_from_the_epoch():
+    """e = 3 hyperbola (v_inf = sqrt(2)): at t = 1e6 the distance is v_inf t to 1e-5, the energy
+    is kept; beyond double precision the error is named, not an overflow."""
+    o = Orbit([1.0, 0, 0], [0, 2.0, 0], mu=1.0)
+    r, v = o.state_at(1e6)
+    assert_allclose(np.linalg.norm(r), math.sqrt(2) * 1e6, rtol=1e-5)
+    assert_allclose(v @ v / 2 - 1 / np.linalg.norm(r), 1.0, rtol=1e-12)
+    from rigidmech._core.errors import NumericalError
+    with pytest.raises(NumericalError, match="too far from the epoch"):
+        o.state_at(1e305)
+
+
+@pytest.mark.parametrize("epoch", [math.nan, math.inf, "0"])
+def test_epoch_must_be_a_finite_number(epoch):
+    with pytest.raises(ArgumentError, match="`epoch` must be a finite"):
+        Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0, epoch=epoch)
+
+
+@pytest.mark.parametrize("alpha", [0.0, 0.3, 2.0])
+def test_a_circular_orbit_is_a_circle_whatever_its_phase(alpha):
+    """The state at circular speed is a circle for every position on it (e is 1e-16 of
+    rounding, not 0, once rotated), its periapsis the position at the epoch (as documented),
+    not the direction of the rounding noise."""
+    mu, r = 8.0, 2.0
+    c, s = math.cos(alpha), math.sin(alpha)
+    v = circular_speed(mu, r)
+    o = Orbit([r * c, r * s, 0], [-v * s, v * c, 0], mu=mu, epoch=1.5)
+    assert o.kind == "circle" and o.is_bound and o.eccentricity < 1e-15
+    assert_allclose(o.argument_of_periapsis, alpha, atol=1e-15)
+    assert o.time_of_periapsis == 1.5 and abs(o.true_anomaly_at_epoch) < 1e-15
+
+
+@pytest.mark.parametrize("e, kind", [(0.5e-12, "circle"), (0.99e-12, "circle"),
+                                     (1.01e-12, "ellipse"), (2e-12, "ellipse")])
+def test_circle_threshold(e, kind):
+    """From the periapsis (1, 0, 0) with v^2 = 1 + e (mu = 1) the eccentricity is e (to 2e-4
+    relative: 1 + e is rounded): a circle up to e = 1e-12, an ellipse above (either side of
+    the boundary by 1 %)."""
+    o = Orbit([1.0, 0, 0], [0, math.sqrt(1 + e), 0], mu=1.0)
+    assert o.kind == kind
+    assert_allclose(o.eccentricity, e, rtol=1e-3)

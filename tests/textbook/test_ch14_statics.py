@@ -341,3 +341,77 @@ def test_ch14_two_stacked_blocks_which_interface_slides(f_floor, f_top, contact,
     lim = limiting_equilibrium(st_, P, (0.0, 20.0))
     assert lim.kinds == ("sliding",) and lim.contacts == (contact,)
     assert math.isclose(lim.value, expected, rel_tol=1e-9)
+
+
+def test_values_must_respect_what_the_symbols_declare():
+    """W declared positive: a negative weight given as a number is refused where it enters."""
+    from rigidmech._core.errors import ArgumentError as _ArgumentError
+
+    R0 = rm.Frame("R0")
+    box = rm.Body("box", frame=R0)
+    st_ = Statics(R0)
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                     friction=Coulomb(0.5)), label="A")
+    W = rm.constants("W", positive=True)
+    P = sp.Symbol("P", real=True)
+    st_.act(Force(on=box, vector=-W * R0.j + P * R0.i, at=R0.origin))
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        st_.solve(values={W: -2, P: 0})
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        limiting_equilibrium(st_, P, (0.0, 10.0), values={W: -2})
+    assert st_.solve(values={W: 2, P: 0}).values[sp.Symbol("N_A", real=True)] == 2.0
+
+
+def _wedge(delta):
+    """A weight W = 1 held at O by two frictionless contacts whose normals make the angle
+    delta with the horizontal, one on each side: N1 = N2 = W / (2 sin delta)."""
+    R0 = rm.Frame("R0")
+    body = rm.Body("block", frame=R0)
+    st_ = Statics(R0)
+    c, s = math.cos(delta), math.sin(delta)
+    st_.connect(R0, body, ContactLaws(at=R0.origin, normal=c * R0.i + s * R0.j), label="1")
+    st_.connect(R0, body, ContactLaws(at=R0.origin, normal=-c * R0.i + s * R0.j), label="2")
+    st_.act(Force(on=body, vector=-1.0 * R0.j, at=R0.origin))
+    return st_
+
+
+def test_an_ill_conditioned_statics_problem_warns():
+    """delta = 0.1: N = 1 / (2 sin 0.1), no warning. delta = 1e-11 (condition number ~1e11,
+    above 1e10): the values are still given (they are right to about cond * eps) with a
+    RigidmechWarning naming the condition number."""
+    import warnings
+
+    from rigidmech.errors import RigidmechWarning
+
+    N1 = sp.Symbol("N_1", real=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        values = _wedge(0.1).solve().values
+    assert math.isclose(values[N1], 1 / (2 * math.sin(0.1)), rel_tol=1e-12)
+    with pytest.warns(RigidmechWarning, match=r"ill-conditioned.*condition number"):
+        values = _wedge(1e-11).solve().values
+    assert math.isclose(values[N1], 1 / (2 * math.sin(1e-11)), rel_tol=1e-4)
+
+
+def test_values_by_name_reach_symbols_with_assumptions():
+    """values={"W": 2} means the problem's W (declared positive), not a new plain symbol that
+    matches nothing; a name of no symbol of the problem is refused (also "Q", which sympify
+    reads as sympy's assumptions object)."""
+    from rigidmech._core.errors import ArgumentError as _ArgumentError
+
+    R0 = rm.Frame("R0")
+    box = rm.Body("box", frame=R0)
+    st_ = Statics(R0)
+    st_.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j, tangent=R0.i,
+                                     friction=Coulomb(0.5)), label="A")
+    W = rm.constants("W", positive=True)
+    P = sp.Symbol("P", real=True)
+    st_.act(Force(on=box, vector=-W * R0.j + P * R0.i, at=R0.origin))
+    assert st_.solve(values={"W": 2, "P": 0}).values[sp.Symbol("N_A", real=True)] == 2.0
+    lim = limiting_equilibrium(st_, P, (0.0, 10.0), values={"W": 10.0})
+    assert math.isclose(lim.value, 5.0, rel_tol=1e-9)
+    for name in ("Q", "V"):
+        with pytest.raises(_ArgumentError, match=rf"`values`: '{name}' names no symbol"):
+            st_.solve(values={name: 2})
+    with pytest.raises(_ArgumentError, match=r"the value of `W` must be > 0"):
+        st_.solve(values={"W": -1, "P": 0})

@@ -62,3 +62,41 @@ def test_torsor_subs_reaches_the_frames():
     assert Ts.resultant.components(R0) == sp.Matrix([1, 0, 0])
     assert Ts.moment.components(R0) == sp.Matrix([0, 1, 0])
     assert Ts.point.coordinates(R0) == sp.Matrix([3, 1, 0])
+
+
+# --- printing that does not mislead: a frame fixed at an instant is shown as such -----------
+
+def test_vector_substituted_at_an_instant_does_not_print_as_the_moving_frame():
+    """(2 R1.i).subs(theta, 0): R1 fixed at theta = 0 is not the moving R1 (its derivative is
+    zero): repr and str show the substitution; the moving R1 still prints as R1."""
+    th = rm.coordinates("theta")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=th)
+    v = (2 * R1.i).subs(th, 0)
+    assert repr(v) == "2*R1[theta=0].i"
+    assert str(v) == "2 i_R1[theta=0]"
+    assert v.dt(R0) == rm.Vector.zero() and (2 * R1.i).dt(R0) != rm.Vector.zero()
+    assert repr(v + R1.j) == "2*R1[theta=0].i + R1.j"
+    assert repr(2 * R1.i) == "2*R1.i"
+    F = R1.subs(th, sp.pi / 2)
+    assert str(F) == "R1[theta=pi/2]" and F.name == "R1"          # the name is kept
+    assert F.label == "R1[theta=pi/2]" and R1.label == "R1"
+    assert "R1[theta=pi/2]" in repr(F)
+
+
+def test_substitution_label_shows_what_reaches_each_frame():
+    """A child of a substituted frame is substituted too; each frame's label lists the values
+    that reach it (its angle, origin, ancestors), a rate q' as q'; a symbol not in the frame
+    does not appear."""
+    q, x, a, R0, R1, R2 = setup()
+    S2 = R2.subs({q: sp.Rational(1, 3), a: 5})
+    assert S2.label == "R2[a=5, q=1/3]" and S2.parent.label == "R1[a=5, q=1/3]"
+    assert repr(R2.k.subs(q, 0)) == "R2[q=0].k"
+    b = sp.Symbol("b")
+    assert (b * R1.i).subs({b: 2, q: 1}).__repr__() == "2*R1[q=1].i"
+    w = sp.Symbol("w")
+    R3 = R0.rotated("R3", about=R0.k, angle=w * q.diff(rm.t))
+    assert R3.subs(q.diff(rm.t), 2).label == "R3[q'=2]"
+    # the LaTeX form shows it too
+    assert "[" not in R1.i._repr_latex_()
+    assert "q=0" in (R1.i.subs(q, 0))._repr_latex_()

@@ -175,3 +175,71 @@ def test_symbolic_equilibria_of_several_coordinates_and_a_free_one():
     found2 = equilibria(s2.equations_of_motion())
     assert sorted(e["theta"] for e in found2) == [0, sp.pi]
     assert all(e["free"] == ["phi"] for e in found2)
+
+
+def _two_springs(k2):
+    """x'' = -x, y'' = -k2 y: V = x^2/2 + k2 y^2/2, K = diag(1, k2)."""
+    x, y = rm.coordinates("x y")
+    qx, qy, ux, uy = sp.symbols("x y x_dot y_dot")
+    k = sp.Symbol("k")
+    eqs = rm.EquationsOfMotion(coordinates=(x, y), q=(qx, qy), u=(ux, uy),
+                               mass_matrix=sp.ImmutableMatrix(sp.eye(2)),
+                               forcing=sp.ImmutableMatrix([-qx, -k * qy]))
+    return eqs, x**2 / 2 + k * y**2 / 2, {"k": k2}
+
+
+@pytest.mark.parametrize("k2, verdict", [
+    (1e-10, "stable"), (2e-12, "stable"),                   # above the rounding level
+    (0.5e-12, "undecided"), (0.0, "undecided"),            # at rounding: not decided
+    (-0.5e-12, "undecided"), (-2e-12, "unstable"), (-1e-10, "unstable"),
+])
+def test_stability_and_potential_stability_decide_definiteness_by_one_rule(k2, verdict):
+    """The Lagrange-Dirichlet decision on K = diag(1, k2) (the Hessian of V): the same verdict
+    from the linearised equations and from the potential, one relative tolerance 1e-12
+    (boundary: |k2| = 1e-12 of the largest eigenvalue)."""
+    eqs, V, params = _two_springs(k2)
+    assert potential_stability(eqs, V, [0, 0], **params) == verdict
+    lin_verdict = stability(eqs, [0, 0], **params)
+    # an unstable K gives a real positive exponent sqrt(-k2): found by the eigenvalues
+    assert lin_verdict == verdict
+
+
+@pytest.mark.parametrize("offset, ok", [(1e-10, True), (1e-9, True), (1.00001e-9, False),
+                                         (1e-8, False)])
+def test_stationarity_uses_linearize_tolerance(offset, ok):
+    """A point off the equilibrium by `offset` (|f| = |dV/dq| = offset): one absolute
+    tolerance, linearize's 1e-9 (boundary included), for the linearised equations and for the
+    potential."""
+    eqs, V, params = _two_springs(1.0)
+    if ok:
+        assert potential_stability(eqs, V, [offset, 0], **params) == "stable"
+        assert stability(eqs, [offset, 0], **params) == "stable"
+    else:
+        with pytest.raises(ArgumentError, match="not a stationary point"):
+            potential_stability(eqs, V, [offset, 0], **params)
+        with pytest.raises(ArgumentError, match="not an equilibrium"):
+            stability(eqs, [offset, 0], **params)
+    with pytest.raises(ArgumentError, match="not a stationary point"):
+        potential_stability(eqs, V, [1e-10, 0], tol=1e-11, **params)
+
+
+def test_equilibria_of_a_stiff_system_are_accepted_by_stability():
+    """theta'' = -k sin(theta) with k = 1e8: pi is not a float, k sin(pi) = 1.2e-8 > 1e-9.
+    The equilibria found are accepted by stability/linearize/potential_stability (the rule
+    allows the rounding of q*: 8 eps |df/dq| max(|q|, 1) = 5.6e-7 here), a point off by 1e-6
+    (residual 100) is not."""
+    th = rm.coordinates("theta")
+    q, u = sp.symbols("theta theta_dot")
+    k = sp.Symbol("k", positive=True)
+    eqs = rm.EquationsOfMotion(coordinates=(th,), q=(q,), u=(u,),
+                               mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-k * sp.sin(q)]]))
+    found = equilibria(eqs, within=(-4, 4), k=1e8)
+    assert_allclose([e["theta"] for e in found], [-math.pi, 0.0, math.pi], atol=1e-15)
+    assert [stability(eqs, e, k=1e8) for e in found] == ["unstable", "stable", "unstable"]
+    V = -k * sp.cos(th)
+    assert potential_stability(eqs, V, [math.pi], k=1e8) == "unstable"
+    with pytest.raises(ArgumentError, match="not an equilibrium"):
+        stability(eqs, [math.pi + 1e-6], k=1e8)
+    with pytest.raises(ArgumentError, match="not a stationary point"):
+        potential_stability(eqs, V, [math.pi + 1e-6], k=1e8)

@@ -218,3 +218,59 @@ def test_linearisation_accepts_sympy_mechanics_dynamicsymbols():
                                                             - th.diff(tt)]]))
     lin = linearize(eqs, {th: sp.pi})
     assert (lin.C[0], lin.K[0]) == (1, -g * L * m)
+
+
+def _pendulum_eqs():
+    th = rm.coordinates("theta")
+    q, u = sp.symbols("theta theta_dot")
+    m, g, L = sp.symbols("m g L", positive=True)
+    return rm.EquationsOfMotion(coordinates=(th,), q=(q,), u=(u,),
+                                mass_matrix=sp.ImmutableMatrix([[m * L**2]]),
+                                forcing=sp.ImmutableMatrix([[-m * g * L * sp.sin(q)]]))
+
+
+@pytest.mark.parametrize("rate", [2.0, sp.Symbol("Omega")])
+def test_a_rate_on_a_coordinate_the_equations_depend_on_is_not_steady(rate):
+    """The pendulum at theta = 0 with theta' = 2: f(0, 2) = 0 but theta = 2t is no motion
+    (f(2t) = -m g L sin 2t); the rate of the residual along the motion, (df/dq) q'* = -m g L q'*,
+    is not zero: refused like on the path with constraints."""
+    with pytest.raises(ArgumentError, match=r"not a steady motion .*rate .*\(df/dq\) q'\* = "
+                                            r"\[.*g"):
+        linearize(_pendulum_eqs(), velocities={"theta": rate})
+
+
+def test_steadiness_uses_one_tolerance_on_the_residual_and_its_rate():
+    """x'' = -x - d y, y'' = 0 about 0 with y' = 1: residual 0, rate (df/dq) q'* = (-d, 0).
+    |d| <= tol is steady (the boundary included; plus the rounding allowance 8 eps
+    sum |df/dq| max(|q'|, 1) = 1.8e-15), above it is not."""
+    x, y = rm.coordinates("x y")
+    qx, qy, ux, uy = sp.symbols("x y x_dot y_dot")
+    d = sp.Symbol("d")
+    eqs = rm.EquationsOfMotion(coordinates=(x, y), q=(qx, qy), u=(ux, uy),
+                               mass_matrix=sp.ImmutableMatrix(sp.eye(2)),
+                               forcing=sp.ImmutableMatrix([-qx - d * qy, 0]))
+    for value in (1e-10, 1e-9):
+        lin = linearize(eqs, velocities={"y": 1.0}, parameters={"d": value}, tol=1e-9)
+        assert lin.velocities == {"x": 0, "y": 1.0}
+    for value in (1.00001e-9, -2e-9):           # tol + 8 eps (|J| |q|) = 1e-9 + 1.8e-15
+        with pytest.raises(ArgumentError, match="not a steady motion"):
+            linearize(eqs, velocities={"y": 1.0}, parameters={"d": value}, tol=1e-9)
+    with pytest.raises(ArgumentError, match="not a steady motion"):
+        linearize(eqs, velocities={"y": 1.0})          # d symbolic: not identically zero
+
+
+def test_values_must_respect_what_the_symbols_declare():
+    """m, g, L declared positive: a negative mass given as a number is refused where it
+    enters (linearize, stability, equilibria), not turned into M = -1."""
+    from rigidmech.vibrations import equilibria, stability
+
+    eqs = _pendulum_eqs()
+    with pytest.raises(ArgumentError, match=r"`parameters`: the value of `m` must be > 0 "
+                                            r"\(declared positive\); got -1.0"):
+        linearize(eqs, parameters={"m": -1.0, "g": 9.81, "L": 1.0})
+    with pytest.raises(ArgumentError, match=r"the value of `L` must be > 0"):
+        stability(eqs, [0], m=1.0, g=9.81, L=0)
+    with pytest.raises(ArgumentError, match=r"the value of `g` must be > 0"):
+        equilibria(eqs, within=(-3, 3), m=1.0, g=-9.81, L=1.0)
+    # boundary: any positive value passes
+    assert linearize(eqs, parameters={"m": 1e-300, "g": 9.81, "L": 1.0}).K[0, 0] > 0

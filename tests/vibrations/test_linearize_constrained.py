@@ -291,3 +291,23 @@ def test_gear_pair_turning_freely_is_a_steady_motion_with_the_reduced_inertia():
     assert sp.simplify(lin.velocities["q2"] - lam * w) == 0
     with pytest.raises(ArgumentError, match=r"`velocities` violate the constraints: residual"):
         linearize(eqs, velocities={"q1": 1, "q2": 1}, independent=[q1])
+
+
+@pytest.mark.parametrize("length", [1.0, 1e-10, 1e6])
+def test_rank_decisions_do_not_depend_on_the_unit_of_length(length):
+    """A particle on a circle of radius R (x^2 + y^2 = R^2) under gravity, about the bottom,
+    x independent: omega^2 = g / R whatever the unit of length (the rank of Phi_q = (0, -2R)
+    is decided relative to its size, as assemble does, not against an absolute 1e-9)."""
+    from rigidmech.dynamics import Constraints
+
+    x, y = rm.coordinates("x y")
+    m, g, R = rm.constants("m g R", positive=True)
+    phi = x**2 + y**2 - R**2
+    eqs = rm.EquationsOfMotion(
+        coordinates=(x, y), mass_matrix=sp.ImmutableMatrix(sp.diag(m, m)),
+        forcing=sp.ImmutableMatrix([0, -m * g]),
+        constraints=Constraints((x, y), [("rod", phi.diff(rm.t), phi)]))
+    lin = linearize(eqs, about={"x": 0, "y": -length}, independent=["x"],
+                    parameters={"m": 1.0, "g": 9.81, "R": length})
+    M, _, K, _ = lin.numeric()
+    np.testing.assert_allclose(K[0, 0] / M[0, 0], 9.81 / length, rtol=1e-12)

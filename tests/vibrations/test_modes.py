@@ -1,5 +1,7 @@
 """Natural modes of several degrees of freedom (ch. 21, 25.4, 27.5.2)."""
 
+import math
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -103,3 +105,28 @@ def test_frequency_response_plot_draws_amplitude_and_phase(tmp_path):
 def test_bad_matrices_are_refused(M, K, match):
     with pytest.raises(ArgumentError, match=match):
         natural_modes(M, K)
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-15, 1e15])
+def test_symmetry_is_decided_relative_to_the_size_of_the_matrix(scale):
+    """K with an asymmetry of 1e-4 of its size is refused whatever the unit (it was accepted
+    below 1e-12 in absolute value, i.e. for small units); a symmetric one is accepted."""
+    M = scale * np.eye(2)
+    K = scale * np.array([[2.0, -1.0], [-1.0, 2.0]])
+    assert_allclose(natural_modes(M, K).frequencies, [1.0, math.sqrt(3.0)], rtol=1e-12)
+    bad = K + scale * np.array([[0.0, 1e-4], [0.0, 0.0]])
+    with pytest.raises(ArgumentError, match="`stiffness` must be symmetric"):
+        natural_modes(M, bad)
+
+
+def test_direct_response_at_an_undamped_natural_frequency_is_refused_clearly():
+    """K - w^2 M singular without damping (w = 2 for k = 4, m = 1; w = 1 for the 2-dof chain):
+    the steady amplitude is infinite: a named error, not numpy's 'Singular matrix'."""
+    with pytest.raises(ArgumentError, match=r"`omega` = 2.0 is a natural frequency"):
+        harmonic_response_direct([[1.0]], [[0.0]], [[4.0]], [1.0], [1.0, 2.0])
+    with pytest.raises(ArgumentError, match=r"`omega` = 1.0 is a natural frequency"):
+        harmonic_response_direct(np.eye(2), np.zeros((2, 2)), [[2.0, -1.0], [-1.0, 2.0]],
+                                  [1.0, 0.0], [1.0])
+    # with damping the same frequency has a finite response
+    out = harmonic_response_direct([[1.0]], [[0.1]], [[4.0]], [1.0], [2.0])
+    assert_allclose(out, [[1 / (0.2j)]], rtol=1e-14)

@@ -14,7 +14,7 @@ import sympy as sp
 
 from .errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["finite_real", "nonnegative"]
+__all__ = ["finite_real", "nonnegative", "as_declared", "substitutions"]
 
 
 def finite_real(x, argument, *, hint=""):
@@ -79,3 +79,64 @@ def nonnegative(x, argument):
         raise ArgumentError(f"`{argument}` must be >= 0; got {x}.")
     return value
 
+
+
+_DECLARED = (("positive", "> 0"), ("negative", "< 0"), ("nonnegative", ">= 0"),
+             ("nonpositive", "<= 0"), ("nonzero", "!= 0"), ("integer", "an integer"),
+             ("real", "real"))
+
+
+def as_declared(symbol, value, argument):
+    """``value`` (sympified) for ``symbol``, refused when it is a number that contradicts what
+    the symbol declares (``rm.constants("m", positive=True)``: a mass given as -1): the
+    derivation may have used the declaration (sqrt(m**2) = m), so the result would be wrong.
+    A symbolic value passes.
+
+    Examples
+    --------
+    >>> m = sp.Symbol("m", positive=True)
+    >>> as_declared(m, 2, "values")
+    2
+    >>> as_declared(m, -1.0, "values")
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.ArgumentError: `values`: the value of `m` must be > 0 ...
+    """
+    v = sp.sympify(value)
+    if not getattr(v, "is_number", False):
+        return v
+    for attribute, expected in _DECLARED:
+        if getattr(symbol, f"is_{attribute}", None) is True \
+                and getattr(v, f"is_{attribute}", None) is False:
+            raise ArgumentError(
+                f"`{argument}`: the value of `{symbol}` must be {expected} (declared "
+                f"{attribute}); got {value}.")
+    return v
+
+
+def substitutions(values, symbols, argument="values"):
+    """``{symbol: value}`` from ``values`` keyed by symbol or by name: a name is resolved
+    among ``symbols`` (those of the problem), so that ``{"m": 2}`` reaches a symbol declared
+    ``positive`` (sympify would make a new plain symbol that matches nothing, or read "Q" as
+    sympy's assumptions object); every value is checked by :func:`as_declared`. A name of no
+    symbol of the problem is refused; a symbol key passes as it is.
+
+    Examples
+    --------
+    >>> m = sp.Symbol("m", positive=True)
+    >>> substitutions({"m": 2}, {m})
+    {m: 2}
+    """
+    by_name = {s.name: s for s in symbols if isinstance(s, sp.Symbol)}
+    out = {}
+    for key, value in (values or {}).items():
+        if isinstance(key, str):
+            if key not in by_name:
+                raise ArgumentError(
+                    f"`{argument}`: {key!r} names no symbol of the problem; expected some of "
+                    f"{sorted(by_name)} (or pass the symbol itself).")
+            key = by_name[key]
+        else:
+            key = sp.sympify(key)
+        out[key] = as_declared(key, value, argument)
+    return out

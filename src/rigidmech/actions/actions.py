@@ -34,6 +34,46 @@ def _check_vector(v, argument):
         raise ArgumentTypeError(f"`{argument}` must be a Vector; got {type(v).__name__}.")
 
 
+def _unit_vector(v, argument):
+    """``v`` for an argument documented as a unit vector: ``v`` itself when ``v . v``
+    simplifies to 1, otherwise ``v / sqrt(v . v)`` (symbolically when the norm holds symbols:
+    ``b R0.j`` with b real becomes ``b / |b| R0.j``), the rule of
+    :class:`~rigidmech.kinematics.ContactKinematics`. The components along the vector (a
+    normal force N, a couple about an axis) are then those along the unit vector whatever the
+    length given. Refuses a Point, a non-Vector and a zero vector."""
+    _check_vector(v, argument)
+    square = sp.simplify(v.dot(v)) if not v.is_zero else sp.S.Zero
+    if square == 0 or (square.is_number and abs(complex(square)) == 0):
+        raise ArgumentError(f"`{argument}` must be a non-zero vector (a direction, used as "
+                            f"a unit vector); got {v!r}.")
+    if square == 1:
+        return v
+    return (v / sp.sqrt(square)).compact()
+
+
+_PERPENDICULAR_TOL = 1e-12
+
+
+def _check_perpendicular(u, n, argument, other, what="", word="perpendicular"):
+    """Refuse unit vectors ``u`` and ``n`` that are not perpendicular. One rule for every
+    action that needs it (ContactLaws' tangent and rolling axis, KnifeEdge's blade,
+    LinearRectilinear's direction): a numeric cosine must be at most 1e-12 in magnitude
+    (rounding of vectors given in floats), a symbolic one must be shown zero (a value at sample
+    points refutes it cheaply, ``sympy.simplify`` proves it)."""
+    from .._core.symbolic import nonzero_somewhere
+
+    cosine = sp.sympify(u.dot(n))
+    if cosine.is_number:
+        ok = abs(complex(cosine)) <= _PERPENDICULAR_TOL
+    else:
+        ok = not nonzero_somewhere(cosine) and sp.simplify(cosine) == 0
+    if not ok:
+        raise ArgumentError(
+            f"{what}`{argument}` must be {word} to `{other}`; got {argument} . {other} "
+            f"= {sp.simplify(cosine)} (unit vectors). Pass its part in the plane "
+            f"perpendicular to `{other}`.")
+
+
 class Action:
     """Base of the mechanical actions known to a system (ch. 11.1).
 

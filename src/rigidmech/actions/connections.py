@@ -43,6 +43,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
+from .actions import _check_perpendicular
 from .joints import _MOTION_NAMES, Joint, Pivot, Prismatic, Spherical, _axis_basis
 
 __all__ = [
@@ -243,11 +244,8 @@ class LinearRectilinear(Joint):
         super().__init__(at=at, axis=_checked(normal, "normal"))
         u = _checked(direction, "direction")
         w = self._basis[2]
-        d = sp.simplify(u.dot(w))
-        if d != 0:
-            raise ArgumentError(
-                f"`direction` must be orthogonal to `normal` (the contact line lies in the "
-                f"plane); got direction . normal = {d}.")
+        _check_perpendicular(u, w, "direction", "normal", "the contact line lies in the "
+                             "plane: ", word="orthogonal")
         self._basis = (u, w.cross(u), w)
         self._direction = u
 

@@ -40,6 +40,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError
 from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
+from .actions import _check_perpendicular, _unit_vector
 
 __all__ = ["Coulomb", "RollingResistance", "PivotingResistance", "ContactLaws"]
 
@@ -71,6 +72,24 @@ def _is_zero_vector(v: Vector) -> bool:
         return True
     comps = v.components(v.frames[0])
     return all(c == 0 or sp.simplify(c) == 0 for c in comps)
+
+
+# A numeric rate (the sliding velocity, the rolling or pivoting rotation) whose magnitude is at
+# most this fraction of the vector it is a part of (the velocity of I, the rotation) is rounding
+# noise: zero, not a direction to oppose.
+_RATE_RTOL = 1e-12
+
+
+def _part(part: Vector, whole: Vector) -> Vector:
+    """``part`` of ``whole`` (its tangential or normal component), or zero when both are
+    numbers and |part| <= _RATE_RTOL |whole|."""
+    frame = whole.frames[0] if whole.frames else None
+    if frame is None or part.is_zero:
+        return part
+    p2, w2 = sp.sympify(part.dot(part)), sp.sympify(whole.dot(whole))
+    if p2.is_number and w2.is_number and float(p2) <= _RATE_RTOL**2 * float(w2):
+        return Vector.zero()
+    return part
 
 
 def _opposing(magnitude, rate: Vector) -> Vector:
@@ -141,8 +160,8 @@ class Coulomb:
 
     def in_cone(self, action, normal: Vector, *, rtol: float = 1e-12) -> bool:
         """Whether the resultant of ``action`` (a Torsor or a Vector) lies inside the friction
-        cone of axis ``normal`` (unit, pointing into the body acted on): N >= 0 and
-        ``|T| <= f_s N``, with a relative tolerance ``rtol`` on ``|R|``.
+        cone of axis ``normal`` (pointing into the body acted on, normalised here): N >= 0
+        and ``|T| <= f_s N``, with a relative tolerance ``rtol`` on ``|R|``.
 
         Raises
         ------
@@ -159,7 +178,7 @@ class Coulomb:
         """
         R = action.resultant if isinstance(action, Torsor) else action
         _check_vector(R, "action")
-        _check_vector(normal, "normal")
+        normal = _unit_vector(normal, "normal")
         N = R.dot(normal)
         T2 = R.dot(R) - N**2
         try:
@@ -299,10 +318,13 @@ class ContactLaws:
     at : Point
         The contact point I.
     normal : Vector
-        Unit common normal, pointing into the body acted on.
+        Common normal, pointing into the body acted on; normalised here (N is the component
+        along the unit normal n whatever the length given; a symbolic norm is divided out
+        symbolically). A zero vector is refused.
     tangent : Vector, optional
-        Unit tangent t (perpendicular to n) along which friction may act; needed with
-        ``friction``. The planar contact of the book's plane problems.
+        Tangent t (perpendicular to n, normalised here) along which friction may act; needed
+        with ``friction``. The planar contact of the book's plane problems. One not
+        perpendicular to n (numeric cosine above 1e-12) is refused.
     friction : Coulomb, optional
         Without it (or with f_s = 0) the contact is frictionless: T = 0, no unknown T.
     rolling : number, optional
@@ -314,8 +336,8 @@ class ContactLaws:
         ``|M_r| <= a N`` about ``rolling_axis``; when it reaches a N the body **tips** about an
         edge of the base. Mathematically a rolling resistance of coefficient a.
     rolling_axis : Vector, optional
-        Unit axis r of the rolling couple (perpendicular to n), needed with ``rolling`` or
-        ``footprint``.
+        Axis r of the rolling couple (perpendicular to n, normalised here), needed with
+        ``rolling`` or ``footprint``.
     pivoting : number, optional
         Pivoting-resistance coefficient eta (a length).
 
@@ -338,7 +360,7 @@ class ContactLaws:
                  friction: Coulomb | None = None, rolling=None, footprint=None,
                  rolling_axis: Vector | None = None, pivoting=None):
         check_point(at, "at")
-        _check_vector(normal, "normal")
+        normal = _unit_vector(normal, "normal")
         self._at, self._normal = at, normal
         if friction is not None and not isinstance(friction, Coulomb):
             raise ArgumentTypeError(
@@ -347,7 +369,8 @@ class ContactLaws:
             raise ArgumentError("`tangent` is needed with `friction`: the direction t along "
                                 "which the friction force acts; got None.")
         if tangent is not None:
-            _check_vector(tangent, "tangent")
+            tangent = _unit_vector(tangent, "tangent")
+            _check_perpendicular(tangent, normal, "tangent", "normal")
         if friction is not None and friction.static.is_zero:
             friction = None                   # f_s = 0: frictionless, no tangential unknown
         self._tangent, self._friction = tangent, friction
@@ -363,7 +386,8 @@ class ContactLaws:
             if rolling_axis is None:
                 raise ArgumentError(f"`rolling_axis` is needed with `{self._rolling_kind}`; "
                                     "got None.")
-            _check_vector(rolling_axis, "rolling_axis")
+            rolling_axis = _unit_vector(rolling_axis, "rolling_axis")
+            _check_perpendicular(rolling_axis, normal, "rolling_axis", "normal")
         self._axis = rolling_axis
         self._pivoting = None if pivoting is None else PivotingResistance(pivoting)
 
@@ -431,7 +455,9 @@ class ContactLaws:
         kinematic torsor ``motion`` (ch. 13.1): N n, the friction opposing the sliding
         velocity v(I) - (v(I).n) n, and the rolling and pivoting couples opposing the
         rolling and pivoting rotations. Each law needs a non-zero rate (sliding, rolling,
-        pivoting); with a zero rate its action is a reaction, an unknown of statics.
+        pivoting); with a zero rate its action is a reaction, an unknown of statics. With
+        numbers, a rate at most 1e-12 of the vector it is part of (the velocity of I, the
+        rotation) is rounding noise and counts as zero.
 
         Examples
         --------
@@ -453,11 +479,12 @@ class ContactLaws:
         v, w = V.moment, V.resultant
         action = Torsor(N * n, Vector.zero(), self._at)
         if self._friction is not None:
-            action = action + self._friction.sliding_action(N, v - v.dot(n) * n, self._at)
+            action = action + self._friction.sliding_action(N, _part(v - v.dot(n) * n, v),
+                                                            self._at)
         if self._rolling is not None:
-            action = action + self._rolling.couple(N, w - w.dot(n) * n, self._at)
+            action = action + self._rolling.couple(N, _part(w - w.dot(n) * n, w), self._at)
         if self._pivoting is not None:
-            action = action + self._pivoting.couple(N, w.dot(n) * n, self._at)
+            action = action + self._pivoting.couple(N, _part(w.dot(n) * n, w), self._at)
         return action
 
     def __repr__(self):

@@ -29,7 +29,7 @@ from .._core.errors import ArgumentError
 from ..torsors import couple, slider
 from ..vectors import Point, Vector, t
 from ..vectors.points import check_point
-from .actions import Action, _check_solid, _check_vector
+from .actions import Action, _check_solid, _unit_vector
 
 __all__ = ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
 
@@ -168,7 +168,8 @@ class Damper(Action):
 
 class TorsionalDamper(Action):
     """A torsional viscous damper of coefficient ``damping`` (N m s/rad) about the unit
-    vector ``axis``, between ``on`` and ``reaction_on`` (the reference if None).
+    vector of ``axis`` (normalised here), between ``on`` and ``reaction_on`` (the reference
+    if None).
 
     Couple on ``on``: :math:`-c\\,(\\boldsymbol\\omega(on/reaction)\\cdot\\mathbf u)\\,
     \\mathbf u`; the opposite one on ``reaction_on``.
@@ -188,7 +189,7 @@ class TorsionalDamper(Action):
 
     def __init__(self, damping, *, axis: Vector, on, reaction_on=None):
         self._c = _coefficient(damping, "damping")
-        _check_vector(axis, "axis")
+        axis = _unit_vector(axis, "axis")
         _check_solid(on, "on")
         if reaction_on is not None:
             _check_solid(reaction_on, "reaction_on")
@@ -238,7 +239,9 @@ class TorsionSpring(Action):
         θ, the angle of ``on`` relative to ``reaction_on`` about ``axis`` (usually a parameter
         of situation): checked against the frames, :math:`\\dot\\theta =
         \\boldsymbol\\omega(on/reaction)\\cdot\\mathbf u`.
-    axis : Vector (unit)
+    axis : Vector
+        The axis u (normalised here: the couple is about the unit vector whatever the length
+        given; a zero vector is refused).
     on, reaction_on : Body
     free_angle : θ0, the angle at which the spring is unloaded (default 0)
 
@@ -262,7 +265,7 @@ class TorsionSpring(Action):
 
     def __init__(self, stiffness, angle, *, axis: Vector, on, reaction_on=None, free_angle=0):
         self._k = _coefficient(stiffness, "stiffness")
-        _check_vector(axis, "axis")
+        axis = _unit_vector(axis, "axis")
         _check_solid(on, "on")
         if reaction_on is not None:
             _check_solid(reaction_on, "reaction_on")

@@ -33,6 +33,7 @@ from ..kinematics.solid import as_solid as _solid
 from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
+from .actions import _check_perpendicular
 
 __all__ = ["KnifeEdge"]
 
@@ -113,11 +114,8 @@ class KnifeEdge:
         check_point(at, "at")
         self._e = _unit(direction, "direction", self._blade)
         self._n = _unit(normal, "normal", self._support)
-        if not _zero(self._e.dot(self._n)):
-            raise ArgumentError(
-                f"the blade must lie in the plane: `direction` must be perpendicular to "
-                f"`normal`; got direction . normal = {sp.simplify(self._e.dot(self._n))} "
-                f"(direction {direction!r}, normal {normal!r}).")
+        _check_perpendicular(self._e, self._n, "direction", "normal",
+                             "the blade must lie in the plane: ")
         self._at = at
         v = self._blade.velocity(at, relative_to=self._support.frame)
         if not _zero(sp.expand(v.dot(self._n))):

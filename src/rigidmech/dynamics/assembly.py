@@ -7,6 +7,10 @@ conditions Φ(q) = 0 (Newton's method on the dependent parameters, with the Jaco
 conditions A q' + a = 0 (linear). The independent parameters are the user's, or chosen by
 QR factorisation with column pivoting of the Jacobian: its first pivot columns, the best
 conditioned, become the dependent ones.
+
+Time: constraints that depend on it explicitly (a driven joint, a pin moving with t) are
+assembled at the time ``t`` given; without ``t`` they are refused rather than assembled at an
+arbitrary instant. Constraints that do not depend on it need no ``t``.
 """
 
 from __future__ import annotations
@@ -19,7 +23,7 @@ from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ConnectionError_
 from ..vectors import t as _t
 
-__all__ = ["assemble"]
+__all__ = ["assemble", "Closure", "ON_CONSTRAINTS"]
 
 
 def _name(q):
@@ -40,17 +44,143 @@ def _by_name(values, coordinates, argument):
     return out
 
 
-def assemble(constraints, values, *, independent=None, rates=None, params=None,
+# A state is on the constraints when every residual Φ(q, t) and A q' + a is at most this (in
+# the units of the conditions): what assemble reaches, and what multipliers requires.
+ON_CONSTRAINTS = 1e-9
+
+
+class Closure:
+    """The constraints compiled once: ``evaluate(q, t, constants)`` gives the holonomic
+    residuals Φ(q, t), the Jacobian A(q, t) and a(q, t) (so that A q' + a = 0); ``timed``
+    says whether they depend on the time explicitly.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rigidmech as rm
+    >>> from rigidmech.dynamics import Constraints
+    >>> x, y = rm.coordinates("x y")
+    >>> phi = x**2 + y**2 - 1
+    >>> c = Closure(Constraints((x, y), [("circle", phi.diff(rm.t), phi)]))
+    >>> r, J, a = c.evaluate(np.array([0.6, 0.8]), 0.0, [])
+    >>> np.round(r, 12).tolist(), J.tolist(), c.timed
+    ([0.0], [[1.2, 1.6]], False)
+    """
+
+    def __init__(self, constraints):
+        coords = constraints.coordinates
+        self.names = [_name(q) for q in coords]
+        self.n, self.m = len(coords), len(constraints.labels)
+        self.labels = constraints.labels
+        q_s = [sp.Dummy(nm, real=True) for nm in self.names]
+        u_s = [sp.Dummy(nm + "_dot", real=True) for nm in self.names]
+        rule = {}
+        for qq, qs, us in zip(coords, q_s, u_s, strict=True):
+            rule[qq.diff(_t)] = us
+            rule[qq] = qs
+        self.holo = [i for i, p in enumerate(constraints.position) if p is not None]
+        phi = [constraints.position[i].xreplace(rule) for i in self.holo]
+        A = constraints.jacobian.xreplace(rule)
+        a = [c.xreplace(rule).xreplace(dict.fromkeys(u_s, 0)) for c in constraints.velocity]
+        exprs = [*phi, *list(A), *a]
+        self.timed = any(_t in sp.sympify(e).free_symbols for e in exprs)
+        self.consts = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs))
+                             - set(q_s) - set(u_s) - {_t}, key=lambda s: s.name)
+        self._f = compile_expressions(
+            (sp.Matrix(len(phi), 1, phi), sp.Matrix(A), sp.Matrix(a)),
+            [_t, q_s, *self.consts], name="closure")
+
+    def constants(self, params):
+        """The values of the constants, in order, from ``params`` by name."""
+        missing = [c.name for c in self.consts if c.name not in params]
+        if missing:
+            raise ArgumentError(
+                f"give the values of the constants {missing} (keyword arguments).")
+        return [float(params[c.name]) for c in self.consts]
+
+    def evaluate(self, q, t, cvals):
+        """(Φ, A, a) at (q, t) as float arrays."""
+        r, J, a0 = self._f(t, q, *cvals)
+        return (np.asarray(r, float).reshape(-1), np.asarray(J, float).reshape(self.m, self.n),
+                np.asarray(a0, float).reshape(-1))
+
+    def off(self, q, u, t, cvals):
+        """Labels and residuals of the conditions (q, u) violates by more than
+        ON_CONSTRAINTS at t: the holonomic ones, then the velocity ones."""
+        r, J, a0 = self.evaluate(q, t, cvals)
+        out = [(self.labels[i], float(x)) for i, x in zip(self.holo, r, strict=True)
+               if not abs(x) <= ON_CONSTRAINTS]
+        out += [(f"{self.labels[i]} (rate)", float(x)) for i, x in enumerate(J @ u + a0)
+                if not abs(x) <= ON_CONSTRAINTS]
+        return out
+
+
+def explicit_time(exprs, coordinates, inputs=()) -> bool:
+    """Whether ``exprs`` depend on the time t explicitly: other than through the coordinates
+    q(t) and their derivatives, and the ``inputs`` F(t) (whose values decide for them); any
+    other function of time counts as explicit.
+
+    Examples
+    --------
+    >>> import rigidmech as rm
+    >>> x = rm.coordinates("x")
+    >>> explicit_time([x.diff(rm.t) * x], [x]), explicit_time([x - rm.t], [x])
+    (False, True)
+    """
+    rule = {}
+    for q in coordinates:
+        rule[q.diff(_t, 2)] = sp.Dummy()
+        rule[q.diff(_t)] = sp.Dummy()
+        rule[q] = sp.Dummy()
+    for w in inputs:
+        rule[w] = sp.Dummy()
+    for e in exprs:
+        e = sp.sympify(e)
+        if isinstance(e, sp.MatrixBase):
+            if any(_t in x.xreplace(rule).free_symbols for x in e):
+                return True
+        elif _t in e.xreplace(rule).free_symbols:
+            return True
+    return False
+
+
+def time_of(t, depends, what):
+    """The time to evaluate at: ``t`` as a float, or 0.0 when it is None and nothing depends
+    on it; refused when ``depends`` and no t is given (one rule for assemble and the
+    multipliers)."""
+    if t is None:
+        if depends:
+            raise ArgumentError(
+                f"`t` must be given: {what} depend on the time explicitly (a driven joint, a "
+                "moving support), so the result depends on the instant; got t=None. Pass "
+                "t=<the time of the state>.")
+        return 0.0
+    try:
+        t = float(t)
+    except (TypeError, ValueError):
+        raise ArgumentError(f"`t` must be a real number; got {t!r}.") from None
+    if not np.isfinite(t):
+        raise ArgumentError(f"`t` must be finite; got {t}.")
+    return t
+
+
+def assemble(constraints, values, *, independent=None, rates=None, params=None, t=None,
              tol: float = 1e-12, max_iterations: int = 50):
-    """(q0, u0) by name satisfying ``constraints`` (see the module notes).
+    """(q0, u0) by name satisfying ``constraints`` (see the module notes) at the time ``t``.
+
+    ``t`` is needed (and only then used) when the constraints depend on the time explicitly.
 
     Raises
     ------
     ConnectionError\\_
         If Newton's method does not reach the constraints (a loop with no solution near the
-        given values: the message names the conditions left unsatisfied).
+        given values: the message names the conditions left unsatisfied), or if the
+        constraints do not determine the dependent rates at the configuration (the Jacobian
+        on the dependent parameters has a lower rank than their number: choose other
+        independent parameters).
     ArgumentError
-        For an unknown coordinate or a missing constant.
+        For an unknown coordinate, a missing constant, or constraints depending on the time
+        without ``t``.
 
     Examples
     --------
@@ -65,38 +195,17 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
     >>> round(q0["y"], 12), round(u0["y"], 12)
     (0.8, -0.75)
     """
+    closure = Closure(constraints)
+    names, n, m, holo = closure.names, closure.n, closure.m, closure.holo
     coords = constraints.coordinates
-    names = [_name(q) for q in coords]
-    n = len(coords)
     q = np.zeros(n)
     for name, v in _by_name(values, coords, "values").items():
         q[names.index(name)] = v
-    q_s = [sp.Dummy(nm, real=True) for nm in names]
-    u_s = [sp.Dummy(nm + "_dot", real=True) for nm in names]
-    rule = {}
-    for qq, qs, us in zip(coords, q_s, u_s, strict=True):
-        rule[qq.diff(_t)] = us
-        rule[qq] = qs
-    holo = [i for i, p in enumerate(constraints.position) if p is not None]
-    phi = [constraints.position[i].xreplace(rule) for i in holo]
-    A = constraints.jacobian.xreplace(rule)
-    a = [c.xreplace(rule).xreplace(dict.fromkeys(u_s, 0)) for c in constraints.velocity]
-    exprs = [*phi, *list(A), *a]
-    consts = sorted(set().union(*(sp.sympify(e).free_symbols for e in exprs))
-                    - set(q_s) - set(u_s) - {_t}, key=lambda s: s.name)
-    params = params or {}
-    missing = [c.name for c in consts if c.name not in params]
-    if missing:
-        raise ArgumentError(f"give the values of the constants {missing} (keyword arguments).")
-    f = compile_expressions((sp.Matrix(len(phi), 1, phi), sp.Matrix(A), sp.Matrix(a)),
-                            [_t, q_s, *consts], name="closure")
-    cvals = [float(params[c.name]) for c in consts]
-    m = len(constraints.labels)
+    time = time_of(t, closure.timed, "the constraints")
+    cvals = closure.constants(params or {})
 
     def evaluate(qv):
-        r, J, a0 = f(0.0, qv, *cvals)
-        return (np.asarray(r, float).reshape(-1), np.asarray(J, float).reshape(m, n),
-                np.asarray(a0, float).reshape(-1))
+        return closure.evaluate(qv, time, cvals)
 
     _, J, _ = evaluate(q)
     rank = np.linalg.matrix_rank(J) if m else 0
@@ -119,8 +228,9 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
         step, *_ = np.linalg.lstsq(J[holo][:, dependent], -r, rcond=None)
         q[dependent] += step
     r, J, a0 = evaluate(q)
-    if len(r) and not (np.all(np.isfinite(r)) and np.max(np.abs(r)) < 1e-9):
-        bad = [constraints.labels[i] for i, x in zip(holo, r, strict=True) if abs(x) > 1e-9]
+    if len(r) and not (np.all(np.isfinite(r)) and np.max(np.abs(r)) <= ON_CONSTRAINTS):
+        bad = [constraints.labels[i] for i, x in zip(holo, r, strict=True)
+               if abs(x) > ON_CONSTRAINTS]
         raise ConnectionError_(
             f"the loop cannot be closed near the given values: the closure conditions "
             f"{bad} keep residuals {np.abs(r).max():.3g} after {max_iterations} Newton steps "
@@ -130,10 +240,19 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None,
     for name, v in _by_name(rates, coords, "rates").items():
         u[names.index(name)] = v
     free = [i for i in range(n) if i not in dependent]
+    JD = J[:, dependent]
+    # the rank rule of the choice of the dependent set above (numpy's default tolerance)
+    if dependent and np.linalg.matrix_rank(JD) < len(dependent):
+        raise ConnectionError_(
+            f"the dependent rates {[names[i] for i in dependent]} are not determined by the "
+            f"constraints at this configuration (their Jacobian has rank "
+            f"{np.linalg.matrix_rank(JD)} < {len(dependent)}; a singular position for this "
+            f"choice): choose other independent parameters than "
+            f"{[names[i] for i in free]}, or leave `independent` to the default.")
     rhs = -(a0 + J[:, free] @ u[free])
-    sol, *_ = np.linalg.lstsq(J[:, dependent], rhs, rcond=None)
+    sol, *_ = np.linalg.lstsq(JD, rhs, rcond=None)
     u[dependent] = sol
-    if m and np.max(np.abs(J @ u + a0)) > 1e-9:
+    if m and np.max(np.abs(J @ u + a0)) > ON_CONSTRAINTS:
         raise ConnectionError_(
             "the velocity conditions cannot all be satisfied with the given independent rates: "
             f"choose other independent parameters than {[names[i] for i in free]}.")

@@ -12,9 +12,10 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from .._core.errors import ConnectionError_
+from .._core.errors import ArgumentError, ConnectionError_
 from ..systems import closure_forces
-from .assembly import assemble
+from ._run import merge_values
+from .assembly import ON_CONSTRAINTS, Closure, assemble, explicit_time, time_of
 from .constraints import Constraints
 
 __all__ = ["LinkedParameters"]
@@ -128,7 +129,8 @@ class LinkedParameters:
         """
         return self._graph.mobility(plane=plane, values=values)
 
-    def assemble(self, values, *, independent=None, rates=None, **params):
+    def assemble(self, values, *, independent=None, rates=None, t=None, params=None,
+                 **constants):
         """A configuration and velocities that satisfy the constraints: the dependent
         parameters solved from the closure conditions by Newton's method, the independent
         ones kept (see :func:`rigidmech.dynamics.assembly.assemble`).
@@ -143,7 +145,16 @@ class LinkedParameters:
             constraints (the best conditioned set).
         rates : dict, optional
             The rates of the independent parameters (default zero).
-        **params
+        t : float, optional
+            The time of the configuration. Required when the constraints depend on the time
+            explicitly (a driven joint, a moving support): they are then refused without it,
+            rather than assembled at an arbitrary t = 0. Not needed (and not used) otherwise.
+        params : dict, optional
+            Values of the constants by name, as in :meth:`EquationsOfMotion.simulate`: needed
+            for a constant whose name is also an argument here (``u``, ``t``, ``values``,
+            ``rates``, ...); the others may also be given as keywords (a name given both ways
+            is refused).
+        **constants
             Values of the constants the constraints depend on.
 
         Returns
@@ -155,22 +166,50 @@ class LinkedParameters:
         if c is None:
             raise ConnectionError_(
                 "the system has no linking connection: every set of values is consistent.")
-        return assemble(c, values, independent=independent, rates=rates, params=params)
+        return assemble(c, values, independent=independent, rates=rates, t=t,
+                        params=merge_values(params, constants))
 
-    def multipliers(self, q, u, t=0.0, **params):
+    def multipliers(self, q, u, t=None, *, params=None, **constants):
         """The Lagrange multipliers lambda (one per closure condition, in the order of
-        :meth:`closure_conditions`) at the state (q, u), from the augmented system: the
-        generalised constraint forces are A^T lambda. For a joint closing a loop, the
-        multiplier of the condition along e is the component along e of the action of
-        ``parent`` on ``child`` at the point of the joint. Give a state on the constraints
-        (:meth:`assemble`): elsewhere the values include Baumgarte's correction.
-        Examples: see :meth:`closure_conditions`."""
+        :meth:`closure_conditions`) at the state (q, u) at the time ``t``, from the augmented
+        system: the generalised constraint forces are A^T lambda. For a joint closing a loop,
+        the multiplier of the condition along e is the component along e of the action of
+        ``parent`` on ``child`` at the point of the joint. The state must be on the
+        constraints (:meth:`assemble`, at the same t): every residual Φ and A q' + a at most
+        1e-9 (the tolerance assemble reaches), otherwise it is refused (the values would
+        include Baumgarte's correction).
+
+        ``t`` is required when the equations or the constraints depend on the time
+        explicitly (a driven joint) or an input F(t) is given as a function of t, refused as
+        missing then; otherwise it is not used. ``params`` gives the constants by name as in
+        :meth:`EquationsOfMotion.simulate` (needed for a constant named ``q``, ``u`` or
+        ``t``). Examples: see :meth:`closure_conditions`."""
         eqs = self.equations_of_motion()
         if eqs.constraints is None:
             raise ConnectionError_("the system has no linking connection: no multiplier.")
-        values, inputs, _ = eqs._values(params)
+        c = eqs.constraints
+        given = merge_values(params, constants)
+        depends = any(callable(given.get(w.func.__name__)) for w in eqs.inputs) \
+            or explicit_time([eqs.mass_matrix, eqs.forcing, *c.velocity, *c.bias,
+                              *[p for p in c.position if p is not None]],
+                             eqs.coordinates, eqs.inputs)
+        t = time_of(t, depends, "the equations or the constraints (or an input given as a "
+                    "function of t)")
+        values, inputs, _ = eqs._values(given)
+        inputs = [w(t) if callable(w) else w for w in inputs]   # an input F(t) at t
+        if "closure" not in self._cache:
+            self._cache["closure"] = Closure(c)
+        closure = self._cache["closure"]
+        q_arr, u_arr = np.asarray(q, float), np.asarray(u, float)
+        off = closure.off(q_arr, u_arr, t, closure.constants(given))
+        if off:
+            raise ArgumentError(
+                f"(`q`, `u`) is not on the constraints at t = {t}: the conditions "
+                f"{', '.join(f'{lab} = {x:.3g}' for lab, x in off)} exceed {ON_CONSTRAINTS} "
+                "(the multipliers there would carry Baumgarte's correction). Pass a state "
+                "from System.assemble or from a simulation that keeps the constraints.")
         full = eqs._solver().full
-        out = full(t, np.asarray(q, float), np.asarray(u, float), *values, *inputs)
+        out = full(t, q_arr, u_arr, *values, *inputs)
         return -np.asarray(out)[len(eqs.coordinates):]
 
     def multiplier_symbols(self) -> tuple:

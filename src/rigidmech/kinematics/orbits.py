@@ -11,9 +11,13 @@ centre (ch. 8.2). From one state (r0, v0) the invariants are
     \\mathbf{e} = \\frac{\\mathbf{v}\\wedge\\mathbf{h}}{\\mu} - \\frac{\\mathbf{r}}{r},
 
 the semi-latus rectum p = h^2/mu, the semi-major axis a = -mu/(2 epsilon) and the
-polar equation r = p / (1 + e cos nu). The position at a time follows from Kepler's equation
-M = E - e sin E (ellipse), M = e sinh H - H (hyperbola) or Barker's equation (parabola),
-M being the mean anomaly.
+polar equation r = p / (1 + e cos nu). The kind of conic is decided by the sign of the specific
+energy epsilon (the physical invariant), not by the eccentricity computed from it. Kepler's
+equation M = E - e sin E (ellipse), M = e sinh H - H (hyperbola), M being the mean anomaly, is
+solved by :func:`kepler_elliptic` and :func:`kepler_hyperbolic`; :meth:`Orbit.state_at` uses
+the universal-variable form of it (Stumpff functions), one formula for every conic that stays
+accurate near the parabola and for nearly radial orbits, where the anomalies lose their
+precision.
 
 This module is numeric (numpy, scipy): it needs no frame nor symbol, only arrays of three
 components in any inertial frame centred at the attracting centre. It belongs to kinematics
@@ -24,15 +28,20 @@ produces it is in :mod:`rigidmech.actions.gravitation`.
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+from ._universal import propagate, time_from_periapsis
 
 __all__ = ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
            "circular_speed", "escape_speed", "hohmann_transfer"]
 
 _MAX_ITER = 200
+# eccentricity up to which the conic is a circle: e_vec is computed to about 1e-16 (times
+# v^2 r / mu), so below 1e-12 its direction, the periapsis, is not defined
+_CIRCLE_E = 1e-12
 
 
 def _positive(x, argument):
@@ -177,19 +186,34 @@ class Orbit:
     epoch : float, optional
         The time t0 of the state (default 0).
     parabolic_tol : float, optional
-        abs(e - 1) below which the conic is treated as a parabola (default 1e-12).
+        Relative tolerance on the specific energy: the conic is a parabola when
+        ``abs(epsilon) <= parabolic_tol * (v0**2 / 2 + mu / r0)`` (the two terms whose
+        difference is epsilon set its rounding scale), otherwise an ellipse (epsilon < 0) or
+        a hyperbola (epsilon > 0). Default 1e-12; 0 keeps only an energy exactly zero.
 
     Raises
     ------
     ArgumentError
-        Zero angular momentum (radial motion: no conic), r0 = 0, mu <= 0.
+        Radial motion (angular momentum below 1e-14 r0 max(v0, sqrt(mu/r0)), the rounding
+        level of r0 ^ v0: the conic degenerates into a segment and its plane and periapsis
+        are undefined), r0 = 0, mu <= 0.
 
     Notes
     -----
+    The kind decides only the elements (``is_bound``, ``period``, ``apoapsis``,
+    ``semi_major_axis``, ``eccentricity``, which is 1 for a parabola). :meth:`state_at`
+    propagates the given state with its own energy whatever the kind, so it is continuous
+    across the parabolic band; for a bound orbit it is accurate to about 1e-12 relative to the
+    size of the orbit, also when the orbit is nearly radial (e close to 1 with a tiny
+    periapsis), except close to such a periapsis, where the state itself is ill-conditioned.
+    A nearly radial ellipse may report ``eccentricity == 1.0``: 1 - e is below the rounding
+    of 1; a, the period and the apoapsis come from the energy and stay exact.
+
     ``argument_of_periapsis`` is the angle from the ascending node to the periapsis in the
     plane of the orbit (the usual omega). For an orbit in the plane z = 0, where the node is
-    undefined, it is measured from the x axis in the sense of the motion. For a circle
-    (e = 0) the periapsis is the position at the epoch.
+    undefined, it is measured from the x axis in the sense of the motion. The conic is a
+    circle when it is bound with e <= 1e-12 (below that, the direction of the eccentricity
+    vector is rounding noise); the periapsis of a circle is the position at the epoch.
 
     Examples
     --------
@@ -202,7 +226,7 @@ class Orbit:
     """
 
     __slots__ = ("_mu", "_r0", "_v0", "_epoch", "_h", "_e_vec", "_e", "_p", "_energy",
-                 "_kind", "_P", "_Q", "_nu0", "_tp")
+                 "_alpha", "_kind", "_P", "_Q", "_nu0", "_tp")
 
     def __init__(self, position, velocity, *, mu, epoch=0.0, parabolic_tol=1e-12):
         mu = _positive(mu, "mu")
@@ -221,26 +245,33 @@ class Orbit:
                 "the angular momentum r0 ^ v0 is zero (radial motion): there is no conic; "
                 f"got position {r0} and velocity {v0}, which are parallel.")
         e_vec = np.cross(v0, h) / mu - r0 / r
-        e = float(np.linalg.norm(e_vec))
         self._mu, self._r0, self._v0 = mu, r0, v0
+        if isinstance(epoch, bool) or not isinstance(epoch, numbers.Real) \
+                or not math.isfinite(epoch):
+            raise ArgumentError(f"`epoch` must be a finite number (the time of the state); "
+                                f"got {epoch!r}.")
         self._epoch = float(epoch)
         self._h, self._e_vec = h, e_vec
-        self._p = float(hn**2 / mu)
-        self._energy = float(v0 @ v0 / 2 - mu / r)
-        if abs(e - 1) < parabolic_tol:
+        self._p = p = float(hn**2 / mu)
+        kinetic, potential = float(v0 @ v0 / 2), mu / r
+        self._energy = energy = kinetic - potential
+        self._alpha = alpha = -2 * energy / mu          # 1 / a, of the sign of -epsilon
+        e_norm = float(np.linalg.norm(e_vec))
+        if abs(energy) <= parabolic_tol * (kinetic + potential):
             e, kind = 1.0, "parabola"
-        elif e < 1:
-            kind = "circle" if e == 0 else "ellipse"
         else:
-            kind = "hyperbola"
+            # e^2 = 1 - alpha p: on the side of 1 the energy says, accurate near e = 1 (a
+            # nearly radial orbit); the norm of e_vec is the accurate one near e = 0
+            e = e_norm if e_norm < 0.5 else math.sqrt(max(0.0, 1 - alpha * p))
+            kind = ("circle" if e <= _CIRCLE_E else "ellipse") if energy < 0 else "hyperbola"
         self._e, self._kind = e, kind
         w = h / hn
-        P = e_vec / np.linalg.norm(e_vec) if np.linalg.norm(e_vec) > 0 else r0 / r
+        # a circle's periapsis is the position at the epoch (e_vec is rounding noise there)
+        P = e_vec / e_norm if kind != "circle" else r0 / r
         self._P = P
         self._Q = np.cross(w, P)
-        nu0 = math.atan2(r0 @ self._Q, r0 @ P)
-        self._nu0 = nu0
-        self._tp = self._epoch - self._time_since_periapsis(nu0)
+        self._nu0 = math.atan2(r0 @ self._Q, r0 @ P)
+        self._tp = self._epoch - self._time_since_periapsis()
         for a in (self._r0, self._v0, self._h, self._e_vec, self._P, self._Q):
             a.setflags(write=False)
 
@@ -290,7 +321,7 @@ class Orbit:
         a parabola."""
         if self._kind == "parabola":
             return math.inf
-        return self._p / (1 - self._e**2)
+        return 1 / self._alpha
 
     @property
     def periapsis(self) -> float:
@@ -299,15 +330,15 @@ class Orbit:
 
     @property
     def apoapsis(self) -> float:
-        """Greatest distance p / (1 - e) (inf if unbound)."""
-        return self._p / (1 - self._e) if self.is_bound else math.inf
+        """Greatest distance a (1 + e) (inf if unbound)."""
+        return (1 + self._e) / self._alpha if self.is_bound else math.inf
 
     @property
     def period(self) -> float:
         """2 pi sqrt(a^3 / mu) (inf if unbound)."""
         if not self.is_bound:
             return math.inf
-        return 2 * math.pi * math.sqrt(self.semi_major_axis**3 / self._mu)
+        return 2 * math.pi / (math.sqrt(self._mu) * self._alpha**1.5)
 
     @property
     def periapsis_direction(self) -> np.ndarray:
@@ -350,30 +381,45 @@ class Orbit:
     def radius_at(self, true_anomaly):
         """r = p / (1 + e cos nu), the polar equation of the conic (ch. 8.2).
 
+        Raises
+        ------
+        ArgumentError
+            For a hyperbola or a parabola, a true anomaly outside the branch,
+            abs(nu) >= acos(-1/e) (beyond the asymptotes, where the formula gives r <= 0).
+
         Examples
         --------
         >>> Orbit([1.0, 0, 0], [0, 1.0, 0], mu=1.0).radius_at(2.0)
         1.0
         """
         nu = np.asarray(true_anomaly, dtype=float)
-        out = self._p / (1 + self._e * np.cos(nu))
+        denominator = 1 + self._e * np.cos(nu)
+        if np.any(~(denominator > 0)):
+            limit = math.acos(-1 / self._e)
+            raise ArgumentError(
+                f"`true_anomaly` must lie between the asymptotes of this {self._kind}, "
+                f"abs(nu) < acos(-1/e) = {limit:.6g} (modulo 2 pi); got {true_anomaly}.")
+        out = self._p / denominator
         return float(out) if out.ndim == 0 else out
 
-    def _time_since_periapsis(self, nu):
-        e, mu, p = self._e, self._mu, self._p
-        if self._kind == "parabola":
-            D = math.tan(nu / 2)
-            return math.sqrt(p**3 / mu) / 2 * (D + D**3 / 3)
-        if self.is_bound:
-            E = math.atan2(math.sqrt(1 - e * e) * math.sin(nu), e + math.cos(nu))
-            a = p / (1 - e * e)
-            return (E - e * math.sin(E)) * math.sqrt(a**3 / mu)
-        H = math.asinh(math.sqrt(e * e - 1) * math.sin(nu) / (1 + e * math.cos(nu)))
-        a = p / (e * e - 1)
-        return (e * math.sinh(H) - H) * math.sqrt(a**3 / mu)
+    def _time_since_periapsis(self):
+        """Time from the periapsis to the epoch state (universal Kepler equation); zero for
+        a circle, whose periapsis is the position at the epoch."""
+        if self._kind == "circle":
+            return 0.0
+        t = time_from_periapsis(self._r0, self._v0, self._alpha, self._mu,
+                                self._p / (1 + self._e))
+        if self.is_bound and t < 0:
+            t += self.period                         # the last passage before the epoch
+        return t
 
     def state_at(self, time):
         """Position and velocity at ``time`` (scalar or array of shape (n,)).
+
+        Universal-variable propagation of the epoch state (Lagrange's f and g with the
+        Stumpff functions): one formula for the ellipse, the parabola and the hyperbola,
+        accurate near e = 1 and for nearly radial orbits. A bound orbit is first reduced to
+        within half a period of the epoch.
 
         Returns
         -------
@@ -391,38 +437,16 @@ class Orbit:
         t = np.asarray(time, dtype=float)
         if not np.all(np.isfinite(t)):
             raise ArgumentError(f"`time` must be finite; got {time}.")
-        e, mu, p = self._e, self._mu, self._p
-        dt = t - self._tp
-        if self._kind == "parabola":
-            # Barker's equation D + D^3/3 = 2 sqrt(mu/p^3) dt, solved in closed form
-            B = 3 * math.sqrt(mu / p**3) * dt
-            z = np.cbrt(np.abs(B) + np.sqrt(B * B + 1))
-            D = np.sign(B) * (z - 1 / z)
-            cos_nu, sin_nu = (1 - D * D) / (1 + D * D), 2 * D / (1 + D * D)
-            r = p / (1 + cos_nu)
-            x, y = r * cos_nu, r * sin_nu
-            k = math.sqrt(mu / p)
-            vx, vy = -k * sin_nu, k * (1 + cos_nu)
-        elif self.is_bound:
-            a = p / (1 - e * e)
-            n = math.sqrt(mu / a**3)
-            E = np.asarray(kepler_elliptic(n * dt, e))
-            b = a * math.sqrt(1 - e * e)
-            r = a * (1 - e * np.cos(E))
-            x, y = a * (np.cos(E) - e), b * np.sin(E)
-            vx = -math.sqrt(mu * a) / r * np.sin(E)
-            vy = math.sqrt(mu * a * (1 - e * e)) / r * np.cos(E)
-        else:
-            a = p / (e * e - 1)
-            n = math.sqrt(mu / a**3)
-            H = np.asarray(kepler_hyperbolic(n * dt, e))
-            r = a * (e * np.cosh(H) - 1)
-            x, y = a * (e - np.cosh(H)), a * math.sqrt(e * e - 1) * np.sinh(H)
-            vx = -math.sqrt(mu * a) / r * np.sinh(H)
-            vy = math.sqrt(mu * a * (e * e - 1)) / r * np.cosh(H)
-        P, Q = self._P, self._Q
-        pos = np.multiply.outer(x, P) + np.multiply.outer(y, Q)
-        vel = np.multiply.outer(vx, P) + np.multiply.outer(vy, Q)
+        alpha = self._alpha
+        period = 2 * math.pi / (math.sqrt(self._mu) * alpha**1.5) if alpha > 0 else math.inf
+        pos = np.empty(t.shape + (3,))
+        vel = np.empty(t.shape + (3,))
+        for index, ti in np.ndenumerate(t):
+            dt = float(ti) - self._epoch
+            if math.isfinite(period):
+                dt -= period * round(dt / period)
+            pos[index], vel[index] = propagate(self._r0, self._v0, alpha, self._mu, dt,
+                                               float(ti))
         return pos, vel
 
     def __repr__(self):

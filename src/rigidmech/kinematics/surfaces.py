@@ -69,12 +69,24 @@ def _unit(v):
     return v if n2 == 1 else v / sp.sqrt(n2)
 
 
-def _zero(x) -> bool:
-    """Exact decision: a value at a sample point proves a gap is not zero (cheap, where
-    ``simplify`` of a non-zero expression is slow); a zero is proved by algebra."""
+# A numeric gap at most this fraction of the size of the surfaces (``scale``) is rounding of data
+# given in floats (0.7 - 0.6 for 0.1): a contact, the rule of every gap below.
+_GAP_RTOL = 1e-12
+
+
+def _zero(x, scale=None) -> bool:
+    """Exact decision for symbols: a value at a sample point proves a gap is not zero
+    (cheap, where ``simplify`` of a non-zero expression is slow); a zero is proved by algebra.
+    A number is zero when its magnitude is at most _GAP_RTOL times the number ``scale`` (the
+    size the gap is a difference of: a radius, a squared distance), exactly zero without
+    one."""
     x = sp.sympify(x)
     if x == 0:
         return True
+    if scale is not None and x.is_number:
+        size = sp.sympify(scale)
+        if size.is_number:
+            return abs(complex(x)) <= _GAP_RTOL * abs(complex(size))
     if nonzero_somewhere(x):
         return False
     return simplifies_to_zero(x)
@@ -263,9 +275,9 @@ def _not_in_contact(what, gap):
 def _sphere_plane(s, p, name, _inner):
     n = _unit(p.normal)
     h = sp.simplify((s.centre - p.point).dot(n))
-    if _zero(h - s.radius):
+    if _zero(h - s.radius, s.radius):
         return s.centre.moved(name, -s.radius * n), n
-    if _zero(h + s.radius):
+    if _zero(h + s.radius, s.radius):
         return s.centre.moved(name, s.radius * n), -n
     _not_in_contact("the distance from the centre to the plane must equal the radius",
                     abs(h) - s.radius)
@@ -273,14 +285,14 @@ def _sphere_plane(s, p, name, _inner):
 
 def _cylinder_plane(c, p, name, _inner):
     n = _unit(p.normal)
-    if not _zero(c.axis.direction.dot(n)):
+    if not _zero(c.axis.direction.dot(n), sp.sqrt(c.axis.direction.dot(c.axis.direction))):
         raise ConnectionError_(
             "the surfaces are not in contact along a line: the cylinder's axis must be "
             f"parallel to the plane; got axis . normal = {sp.simplify(c.axis.direction.dot(n))}.")
     h = sp.simplify((c.axis.point - p.point).dot(n))
-    if _zero(h - c.radius):
+    if _zero(h - c.radius, c.radius):
         return c.axis.point.moved(name, -c.radius * n), n
-    if _zero(h + c.radius):
+    if _zero(h + c.radius, c.radius):
         return c.axis.point.moved(name, c.radius * n), -n
     _not_in_contact("the distance from the axis to the plane must equal the radius",
                     abs(h) - c.radius)
@@ -290,14 +302,14 @@ def _circle_line(c, line, name, _inner):
     d = _unit(line.direction)
     k = c.normal
     off = sp.simplify((line.point - c.centre).dot(k))
-    if not (_zero(d.dot(k)) and _zero(off)):
+    if not (_zero(d.dot(k), 1) and _zero(off, c.radius)):
         raise ConnectionError_(
             "the surfaces are not in contact: the line must lie in the circle's plane; got "
             f"direction . normal = {sp.simplify(d.dot(k))} and an offset of {off} from the "
             "plane.")
     cp = line.point - c.centre
     foot = cp - cp.dot(d) * d
-    if not _zero(foot.dot(foot) - c.radius**2):
+    if not _zero(foot.dot(foot) - c.radius**2, 2 * c.radius**2):   # d^2 - r^2 ~ 2 r gap
         _not_in_contact("the distance from the centre to the line must equal the radius",
                         sp.sqrt(foot.dot(foot)) - c.radius)
     return c.centre.moved(name, foot), -foot / c.radius
@@ -337,9 +349,9 @@ def _circle_plane(c, p, name, _inner):
     # C + r d/|d| at h = -r |d|. With d = lam e both cases give C - r e when h = r lam and
     # C + r e when h = -r lam, whatever the sign of lam.
     normal = -n if h.is_negative else n
-    if _zero(h - c.radius * lam):
+    if _zero(h - c.radius * lam, c.radius):
         return c.centre.moved(name, -c.radius * e), normal
-    if _zero(h + c.radius * lam):
+    if _zero(h + c.radius * lam, c.radius):
         return c.centre.moved(name, c.radius * e), normal
     _not_in_contact("the height of the centre above the plane must be r |n - (n . a) a|",
                     abs(h) - c.radius * abs(lam))
@@ -350,16 +362,17 @@ def _round_round(a, b, name, inner_a):
     if isinstance(a, Circle):
         k = a.normal
         off = sp.simplify((b.centre - a.centre).dot(k))
-        if not (_zero(a.normal.cross(b.normal).dot(a.normal.cross(b.normal))) and _zero(off)):
+        if not (_zero(a.normal.cross(b.normal).dot(a.normal.cross(b.normal)))
+                and _zero(off, a.radius + b.radius)):
             raise ConnectionError_(
                 "the surfaces are not in contact: the circles must lie in one plane; got an "
                 f"offset of {off} between their planes or planes that are not parallel.")
     ab = b.centre - a.centre
     d2 = ab.dot(ab)
     ra, rb = a.radius, b.radius
-    if inner_a is None and _zero(d2 - (ra + rb) ** 2):
+    if inner_a is None and _zero(d2 - (ra + rb) ** 2, 2 * (ra + rb) ** 2):
         return a.centre.moved(name, ra / (ra + rb) * ab), -ab / (ra + rb)
-    if not _zero(d2 - (ra - rb) ** 2):
+    if not _zero(d2 - (ra - rb) ** 2, 2 * (ra + rb) ** 2):
         _not_in_contact(
             "the distance between the centres must be the sum (external contact) or the "
             "difference (internal contact) of the radii",

@@ -31,6 +31,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.validation import substitutions
 from ..actions import Action
 from ..kinematics import Solid
 from ..torsors import Torsor, torsor_of_field
@@ -345,7 +346,9 @@ class Statics:
         Parameters
         ----------
         values : dict, optional
-            Numbers for symbols (masses, lengths, loads) substituted first.
+            Numbers for symbols (masses, lengths, loads) substituted first, keyed by symbol or
+            by name; a number that contradicts the symbol's declaration (a negative value
+            for a positive symbol) is refused.
         unknowns : sequence of sympy.Symbol
             Further unknowns, e.g. the load that holds a mechanism at rest.
         method : {"auto", "symbolic", "numeric"}
@@ -385,7 +388,7 @@ class Statics:
             raise ArgumentError("`unknowns`: the problem has no unknown; connect bodies or "
                                 "name the unknown loads.")
         rows = self.equations()
-        subs = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
+        subs = substitutions(values, set().union(*(e.free_symbols for _, _, e in rows)))
         exprs = [e.xreplace(subs) if subs else e for _, _, e in rows]
         try:
             A, b = sp.linear_eq_to_matrix(exprs, xs)

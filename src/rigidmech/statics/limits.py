@@ -29,6 +29,7 @@ import sympy as sp
 from scipy.optimize import brentq, linprog
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.validation import substitutions
 from .errors import EquilibriumError
 
 __all__ = ["limiting_equilibrium", "Limit"]
@@ -121,7 +122,8 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     interval : (float, float)
         From the value where the bodies are at rest to the end of the search (may decrease).
     values : dict
-        Numbers for every other symbol.
+        Numbers for every other symbol, keyed by symbol or by name (checked against the
+        symbol's declaration: a negative value for a positive symbol is refused).
     samples : int
         Points of the scan that brackets the first sign change of the margin.
 
@@ -174,9 +176,11 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     if p0 == p1:
         raise ArgumentError(f"`interval` must have two different ends; got {interval!r}.")
     xs = list(statics.unknowns)
-    subs = {sp.sympify(k): sp.sympify(v) for k, v in (values or {}).items()}
-    exprs = [e.xreplace(subs) for _, _, e in statics.equations()]
+    rows = statics.equations()
     conds = statics.contact_conditions()
+    subs = substitutions(values, set().union(*(e.free_symbols for _, _, e in rows),
+                                             *(e.free_symbols for _, _, e in conds)))
+    exprs = [e.xreplace(subs) for _, _, e in rows]
     if not conds:
         raise ArgumentError("`statics` has no contact law (ContactLaws with friction, rolling, "
                             "footprint or pivoting): nothing can break.")

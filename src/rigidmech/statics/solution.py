@@ -3,17 +3,25 @@
 :meth:`~rigidmech.statics.equilibrium.Statics.solve` hands the linear equations
 A x = b of statics to a symbolic solver (independent rows by row reduction, then
 ``sympy.linsolve``) or a numeric one (rank by SVD, independent rows by pivoted QR, least
-squares), and wraps the outcome in an :class:`Equilibrium`.
+squares), and wraps the outcome in an :class:`Equilibrium`. A numeric system whose
+condition number exceeds 1e10 is solved with a :class:`~rigidmech.errors.RigidmechWarning`:
+its values are accurate to about (condition number) x 2.2e-16 only.
 """
 
 from __future__ import annotations
+
+import warnings
 
 import numpy as np
 import scipy.linalg
 import sympy as sp
 
+from .._core.errors import RigidmechWarning
 from ..torsors import Torsor
 from .errors import EquilibriumError
+
+# condition number above which the numeric solution is flagged (accurate to ~1e-6 or worse)
+_ILL_CONDITIONED = 1e10
 
 __all__ = ["Equilibrium"]
 
@@ -62,6 +70,13 @@ def _solve_numeric(A, b, xs, names):
     tol = max(An.shape) * np.finfo(float).eps * 1e3 * scale
     r = int(np.sum(s > tol))
     rows = sorted(piv[:r])
+    if r and s[0] > _ILL_CONDITIONED * s[r - 1]:
+        warnings.warn(
+            f"the equations of statics are ill-conditioned (condition number "
+            f"{s[0] / s[r - 1]:.3g} > {_ILL_CONDITIONED:.0e}): the values are accurate to about "
+            f"{s[0] / s[r - 1] * np.finfo(float).eps:.1g} relative only; the configuration "
+            "is close to one where the connections cannot hold the loads (a near mechanism).",
+            RigidmechWarning, stacklevel=4)
     x, *_ = np.linalg.lstsq(An[rows], bn[rows], rcond=None)
     bscale = max(np.abs(bn).max(), np.abs(An).max() * np.abs(x).max() if n else 0, 1e-300)
     bad = []

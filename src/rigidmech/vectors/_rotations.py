@@ -35,7 +35,7 @@ class FrameBase:
     """
 
     __slots__ = ("_name", "_parent", "_axis", "_angle", "_matrix", "_origin", "_depth",
-                 "_hash", "_basis")
+                 "_hash", "_basis", "_at")
 
     def _set(self, name, parent, axis, angle, matrix, origin):
         if not isinstance(name, str) or not name:
@@ -49,6 +49,7 @@ class FrameBase:
         self._depth = 0 if parent is None else parent._depth + 1
         self._hash = hash((name, parent, axis, angle, matrix))
         self._basis = None
+        self._at = None      # the values substituted into it (Frame.subs), for printing
 
     @property
     def name(self) -> str:
@@ -85,8 +86,15 @@ class FrameBase:
     def __hash__(self):
         return self._hash
 
+    @property
+    def label(self) -> str:
+        """The name as printed: the name, followed for a frame made by ``subs`` by the
+        values substituted into it, ``R1[theta=0]`` (R1 fixed at theta = 0 is not the
+        moving R1: its basis has a zero derivative)."""
+        return self._name if self._at is None else f"{self._name}[{self._at}]"
+
     def __str__(self):
-        return self._name
+        return self.label
 
 
 def elementary(axis, angle):

@@ -33,6 +33,53 @@ def _coordinates3(x, y, z):
     return tuple(finite_real(v, n) for v, n in ((x, "x"), (y, "y"), (z, "z")))
 
 
+def _pairs(args):
+    """sympy's ``subs`` arguments as (old, new) pairs."""
+    if len(args) == 2:
+        return [(sp.sympify(args[0]), sp.sympify(args[1]))]
+    if len(args) == 1:
+        items = args[0].items() if isinstance(args[0], dict) else args[0]
+        try:
+            return [(sp.sympify(a), sp.sympify(b)) for a, b in items]
+        except (TypeError, ValueError):
+            return []
+    return []
+
+
+def _shown(x):
+    """q(t) as q, q'(t) as q' (the names of the parameters of situation), else sympy's."""
+    if isinstance(x, sp.Derivative) and len(x.variables) == 1 and x.variables[0] == t \
+            and isinstance(x.expr, sp.core.function.AppliedUndef):
+        return f"{x.expr.func.__name__}'"
+    if isinstance(x, sp.core.function.AppliedUndef) and x.args == (t,):
+        return x.func.__name__
+    return sp.sstr(x)
+
+
+def _reaches(frame, old):
+    """Whether ``old`` occurs in the angle, rotation matrix or origin of ``frame`` or of an
+    ancestor: a value substituted for it changes the frame."""
+    f = frame
+    while f._parent is not None:
+        own = [f._angle] + ([x for row in f._matrix for x in row] if f._matrix else [])
+        if any(sp.sympify(x).has(old) for x in own):
+            return True
+        for g, comps in f._origin.position._parts:
+            if any(c.has(old) for c in comps) or (g is not f and _reaches(g, old)):
+                return True
+        f = f._parent
+    return False
+
+
+def _substituted(frame, args, before):
+    """The label of the frame made by substituting ``args`` in ``frame``: the values that
+    reach it, sorted (``a=5, q=1/3``), after those of an earlier substitution."""
+    shown = sorted(f"{_shown(old)}={sp.sstr(new)}" for old, new in _pairs(args)
+                   if _reaches(frame, old))
+    parts = ([before] if before else []) + ([", ".join(shown)] if shown else [])
+    return "; ".join(parts) or "subs"
+
+
 class Frame(FrameBase):
     """A reference system (O; i, j, k): an origin and a direct orthonormal basis.
 
@@ -212,7 +259,9 @@ class Frame(FrameBase):
         those of its ancestors (sympy's ``subs`` arguments).
 
         The result keeps the names; it is the same frame (``is``) when nothing changes. A
-        root frame is returned as it is.
+        root frame is returned as it is. A frame that changed prints with the values that
+        reached it (its :attr:`label`, ``R1[q=0]``, also in the vectors that use it): it is
+        fixed at that instant, not the moving frame of the same name.
 
         Examples
         --------
@@ -226,6 +275,9 @@ class Frame(FrameBase):
         [1, 0, 0],
         [0, 1, 0],
         [0, 0, 1]])
+        >>> print(R1.subs(q, 0)), R1.subs(q, 0).name
+        R1[q=0]
+        (None, 'R1')
         """
         return self._subs(args, kwargs, {})
 
@@ -246,6 +298,7 @@ class Frame(FrameBase):
         else:
             out = Frame._child(self._name, parent, axis=self._axis, angle=angle, matrix=matrix,
                                origin=origin)
+            out._at = _substituted(self, args, self._at)
         memo[self] = out
         return out
 
@@ -380,7 +433,12 @@ class Frame(FrameBase):
     def __repr__(self):
         if self._parent is None:
             return f"Frame({self._name!r})"
-        parent = self._parent._name
+        if self._at is not None:
+            return f"<Frame {self.label}: {self._repr_plain()}>"
+        return self._repr_plain()
+
+    def _repr_plain(self):
+        parent = self._parent.label
         moved = self._origin != self._parent._origin
         origin = f", origin={self._origin.name}" if moved else ""
         if self._axis is not None:

@@ -661,14 +661,14 @@ class Vector:
                 s = f"({s})"
             return s + "*"
 
-        return self._join(self._terms(coeff, lambda f, n: f"{f.name}.{'ijk'[n]}"))
+        return self._join(self._terms(coeff, lambda f, n: f"{f.label}.{'ijk'[n]}"))
 
     def __str__(self):
         def coeff(x):
             s = sp.sstr(x)
             return (f"({s})" if isinstance(x, sp.Add) else s) + " "
 
-        return self._join(self._terms(coeff, lambda f, n: f"{'ijk'[n]}_{f.name}"))
+        return self._join(self._terms(coeff, lambda f, n: f"{'ijk'[n]}_{f.label}"))
 
     def _latex(self, printer=None):
         printer = printer or LatexPrinter()
@@ -678,7 +678,11 @@ class Vector:
             return (rf"\left({s}\right)" if isinstance(x, sp.Add) else s) + " "
 
         def unit(f, n):
-            return rf"\vec{{{'ijk'[n]}}}_{{{sp.latex(sp.Symbol(f.name))}}}"
+            name = sp.latex(sp.Symbol(f.name))
+            if f._at is not None:
+                at = f._at.replace("_", r"\_")
+                name += rf"\left[\mathrm{{{at}}}\right]"
+            return rf"\vec{{{'ijk'[n]}}}_{{{name}}}"
 
         return self._join(self._terms(coeff, unit))
 

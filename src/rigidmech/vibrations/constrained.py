@@ -117,8 +117,11 @@ def _holonomic_split(phi_q, dep):
                                           strict=True)}
     num = np.array(phi_q.xreplace(sub).evalf().tolist(), dtype=complex).real
     chosen = []
+    # relative to the size of Phi_q (the rule of _invertible and of the mass check), so that
+    # the decision does not depend on the unit of length
+    tol = 1e-12 * max(np.linalg.norm(num, 2), 1e-300)
     for j in dep:
-        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=1e-9) == len(chosen) + 1:
+        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=tol) == len(chosen) + 1:
             chosen.append(j)
         if len(chosen) == p:
             return chosen
@@ -279,10 +282,11 @@ def linearize_constrained(eqs, about, velocities, w, w_star, extra, *, check, to
     Kfull = T.T * (Rq + Rv * Vq - P.M * dep_solve(gq + gv * Vq))
     Blin = -T.T * (Rw - P.M * dep_solve(gw)) if w else sp.zeros(k, 0)
     if check:
-        res = [_simple(x) for x in T.T * R0]
-        rate = [_simple(x) for x in Kfull * sp.Matrix(rates)]
-        if not all(_vanishes(r, tol) for r in res + rate):
-            moving = any(not _vanishes(r, 0.0) for r in rates)
+        from .linearize import _steady  # the one rule of both paths
+
+        ok, moving, res, rate = _steady(list(T.T * R0), list(Kfull * sp.Matrix(rates)),
+                                        rates, tol, Kfull.tolist(), q_star)
+        if not ok:
             kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(
                 f"`about` is not {kind} of the reduced equations (u'* = 0 needs f_r = 0 "

@@ -30,8 +30,10 @@ import sympy as sp
 
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
+from .._core.validation import as_declared
 from ._symbols import normalise
-from .linearize import _values, linearize
+from .linearize import _ROUNDING, _residual_vanishes, _values, linearize, rounding_allowance
+from .modes import is_symmetric
 
 __all__ = ["equilibria", "stability", "potential_stability", "Bifurcation", "bifurcation"]
 
@@ -47,6 +49,8 @@ def _params(norm, params, exclude=()):
     if unknown:
         raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                             f"{sorted(names)}.")
+    for key, value in params.items():
+        as_declared(names[key], value, "params")
     return names
 
 
@@ -92,6 +96,41 @@ def _static_function(norm, syms):
                                [list(norm.q), *syms], name="static_forcing")
 
 
+def _jacobian(fun, x):
+    """Central differences (steps 1e-7 max(|x_j|, 1)): for the rounding allowance and the
+    polishing Newton steps only."""
+    n = x.size
+    J = np.empty((n, n))
+    for j in range(n):
+        h = 1e-7 * max(abs(x[j]), 1.0)
+        e = np.zeros(n)
+        e[j] = h
+        J[:, j] = (fun(x + e) - fun(x - e)) / (2 * h)
+    return J
+
+
+def _accepted(fun, x, tol=1e-9):
+    """The root ``x`` polished by up to 3 Newton steps, and whether it is an equilibrium by
+    the rule of :func:`~rigidmech.vibrations.linearize` (absolute ``tol`` plus the rounding
+    allowance of x, taken at half its size so that a point accepted here is accepted there)."""
+    x = np.asarray(x, dtype=float)
+    r = fun(x)
+    for _ in range(3):
+        J = _jacobian(fun, x)
+        allowance = _ROUNDING / 2 * (np.abs(J) @ np.maximum(np.abs(x), 1.0))
+        if np.all(np.abs(r) <= allowance):
+            break
+        step = np.linalg.lstsq(J, -r, rcond=None)[0]
+        y = x + step
+        ry = fun(y)
+        if not np.all(np.isfinite(ry)) or np.max(np.abs(ry)) >= np.max(np.abs(r)):
+            break
+        x, r = y, ry
+    J = _jacobian(fun, x)
+    allowance = _ROUNDING / 2 * (np.abs(J) @ np.maximum(np.abs(x), 1.0))
+    return x, bool(np.all(np.abs(r) <= tol + allowance))
+
+
 def _search(norm, f, values, within, samples, xtol):
     """All the roots of the compiled f(q, *values) in the box (the strategy of the module's
     docstring)."""
@@ -117,7 +156,11 @@ def _search(norm, f, values, within, samples, xtol):
                                                    grid[k + 1], xtol=xtol, rtol=1e-15))
         if y[-1] == 0 or abs(y[-1]) <= 1e-14 * scale:
             roots.append(grid[-1])
-        points = [np.array([r]) for r in roots]
+        points = []
+        for r in roots:
+            x, ok = _accepted(fun, np.array([r]))
+            if ok:
+                points.append(x)
     else:
         axes = [np.linspace(a, b, samples or 7) for a, b in box]
         points = []
@@ -127,9 +170,9 @@ def _search(norm, f, values, within, samples, xtol):
             if not sol.success or not all(a - xtol <= xi <= b + xtol
                                           for xi, (a, b) in zip(x, box, strict=True)):
                 continue
-            if np.max(np.abs(fun(x))) > 1e-8:
-                continue
-            points.append(x)
+            x, ok = _accepted(fun, x)
+            if ok:
+                points.append(x)
     merged = []
     for x in sorted(points, key=lambda p: tuple(p)):
         if not any(np.max(np.abs(x - y)) <= 10 * xtol for y in merged):
@@ -166,6 +209,9 @@ def equilibria(eqs, *, within=None, samples=None, xtol=1e-12, **params) -> list:
     list of dict
         Coordinate name -> position, one dict per equilibrium (increasing for 1 dof). A
         symbolic family that leaves a coordinate free lists it under the key ``"free"``.
+        A numeric root is polished by Newton steps and kept only if it is an equilibrium by
+        the rule of :func:`~rigidmech.vibrations.linearize` (its default tolerance), so that
+        :func:`stability` accepts it.
 
     Raises
     ------
@@ -236,9 +282,35 @@ def stability(eqs, at, *, tol=1e-9, **params) -> str:
     return _classify(M, C, K, tol)
 
 
+# Relative tolerance of the Lagrange-Dirichlet decision on a symmetric K (or Hessian of V):
+# eigenvalues within 1e-12 of the largest one in magnitude are not told from zero. One rule for
+# stability (C = 0, K symmetric) and potential_stability.
+_DEFINITE_TOL = 1e-12
+
+
+def _definiteness(k):
+    """'stable' (positive definite), 'unstable' (a negative eigenvalue) or 'undecided', from
+    the eigenvalues ``k`` of a symmetric stiffness, relative tolerance _DEFINITE_TOL."""
+    scale = max(float(np.max(np.abs(k))), 1e-300)
+    if np.min(k) > _DEFINITE_TOL * scale:
+        return "stable"
+    return "unstable" if np.min(k) < -_DEFINITE_TOL * scale else "undecided"
+
+
 def _classify(M, C, K, tol=1e-9):
-    """The verdict of :func:`stability` from numeric M, C, K."""
+    """The verdict of :func:`stability` from numeric M, C, K.
+
+    Conservative (C zero to _DEFINITE_TOL relative to sqrt(|M| |K|), K symmetric by the rule
+    of :func:`~rigidmech.vibrations.modes.is_symmetric`): the Lagrange-Dirichlet rule on K,
+    the one of
+    :func:`potential_stability` (a negative eigenvalue of K is a real positive exponent:
+    unstable). Otherwise the real parts of the exponents, relative tolerance ``tol``."""
     n = M.shape[0]
+    Kscale = float(np.max(np.abs(K), initial=0.0))
+    Cscale = float(np.max(np.abs(C), initial=0.0))
+    Mscale = float(np.max(np.abs(M), initial=0.0))
+    if Cscale <= _DEFINITE_TOL * np.sqrt(Mscale * Kscale) and is_symmetric(K):
+        return _definiteness(np.linalg.eigvalsh((K + K.T) / 2))
     try:
         A = np.block([[np.zeros((n, n)), np.eye(n)],
                       [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
@@ -250,14 +322,10 @@ def _classify(M, C, K, tol=1e-9):
         return "unstable"
     if np.max(s.real) < -tol * scale:
         return "asymptotically stable"
-    if np.allclose(C, 0) and np.allclose(K, K.T):
-        k = np.linalg.eigvalsh((K + K.T) / 2)
-        if np.min(k) > tol * max(np.max(np.abs(k)), 1e-300):
-            return "stable"
     return "undecided"
 
 
-def potential_stability(eqs, potential, at, **params) -> str:
+def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
     """Stability of an equilibrium of a conservative system by its potential energy V
     (Lagrange–Dirichlet, ch. 25.2.3): a strict minimum of V (Hessian positive definite) is
     stable; a Hessian with a negative eigenvalue (V not a minimum) unstable; otherwise
@@ -270,6 +338,11 @@ def potential_stability(eqs, potential, at, **params) -> str:
     potential : sympy expression
     at : dict or sequence
         The position.
+    tol : float
+        Absolute tolerance on each numeric dV/dq at ``at`` (plus the rounding allowance of
+        ``at``), the rule of :func:`~rigidmech.vibrations.linearize` on the residual
+        f = -dV/dq; the Hessian's eigenvalues are decided to 1e-12 relative to the largest
+        one, as in :func:`stability`.
     **params : values of the parameters (optional; symbolic otherwise, when sympy decides
         the signs)
 
@@ -299,19 +372,18 @@ def potential_stability(eqs, potential, at, **params) -> str:
     subs = {}
     if params:
         names = {p.name: p for p in (V.free_symbols - set(norm.q))}
-        subs = {names[k]: v for k, v in params.items() if k in names}
+        subs = {names[k]: as_declared(names[k], v, "params") for k, v in params.items()
+                if k in names}
     grad = [sp.simplify(V.diff(q).xreplace(point).xreplace(subs)) for q in norm.q]
-    if any(sp.simplify(x) != 0 and not (x.is_number and abs(float(x)) < 1e-12) for x in grad):
-        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad}.")
     H = sp.Matrix(len(norm.q), len(norm.q),
                   lambda i, j: sp.simplify(V.diff(norm.q[i], norm.q[j]).xreplace(point)
                                            .xreplace(subs)))
+    if not all(_residual_vanishes(x, tol, rounding_allowance(H.row(i), lin_point))
+               for i, x in enumerate(grad)):
+        raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "
+                            f"(tolerance {tol}).")
     if all(x.is_number for x in H):
-        k = np.linalg.eigvalsh(np.array(H.tolist(), dtype=float))
-        scale = max(np.max(np.abs(k)), 1e-300)
-        if np.min(k) > 1e-12 * scale:
-            return "stable"
-        return "unstable" if np.min(k) < -1e-12 * scale else "undecided"
+        return _definiteness(np.linalg.eigvalsh(np.array(H.tolist(), dtype=float)))
     minors = [sp.simplify(H[:r, :r].det()) for r in range(1, H.shape[0] + 1)]
     if all(m.is_positive for m in minors):
         return "stable"

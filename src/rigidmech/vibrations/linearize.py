@@ -28,6 +28,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
 from .._core.symbolic import is_identically_zero
+from .._core.validation import as_declared
 from ._jet import values_and_jacobian
 from ._symbols import normalise
 from .modes import Modes, harmonic_response_direct, natural_modes
@@ -35,12 +36,52 @@ from .modes import Modes, harmonic_response_direct, natural_modes
 __all__ = ["LinearSystem", "linearize"]
 
 
-def _residual_vanishes(x, tol):
-    """Whether a residual f(q*, q'*) is zero: within ``tol`` for a number (a point found
-    numerically), identically otherwise (``is_identically_zero``)."""
+_ROUNDING = 8 * float(np.finfo(float).eps)
+
+
+def rounding_allowance(jac_row, values) -> float:
+    """What a residual f_i may keep because q* is rounded: 8 eps sum_j |df_i/dq_j|
+    max(|q_j*|, 1) (the backward error of a point given in floats: pi is not representable,
+    so k sin(pi) = 1.2e-16 k). Zero when an entry is not a number."""
+    total = 0.0
+    for d, v in zip(jac_row, values, strict=True):
+        d, v = sp.sympify(d), sp.sympify(v)
+        if not (d.is_number and v.is_number):
+            return 0.0
+        total += abs(complex(d)) * max(abs(complex(v)), 1.0)
+    return _ROUNDING * total
+
+
+def _residual_vanishes(x, tol, allowance=0.0):
+    """Whether a residual f(q*, q'*) or its rate along the motion is zero: within ``tol``
+    (absolute, boundary included) plus the ``allowance`` for the rounding of q*
+    (:func:`rounding_allowance`) for a number (a point found numerically), identically
+    otherwise (``is_identically_zero``). The one test of steadiness of both paths of
+    :func:`linearize` (with and without constraints), of the equilibria found numerically and
+    of the stationarity of a potential."""
+    x = sp.sympify(x)
     if x.is_number:
-        return abs(complex(x)) <= tol
+        return abs(complex(x)) <= tol + allowance
     return is_identically_zero(x)
+
+
+def _steady(residual, rate, rates, tol, jac=None, q=None):
+    """The one rule of steadiness, for the equations (no constraints) or the reduced ones:
+    the residual f(q*, q'*) and its rate along the motion (df/dq) q'* both vanish
+    (:func:`_residual_vanishes`; with ``jac`` the rows df_i/dq and ``q`` = q*, the residual
+    may keep the rounding of q* and the rate that of q'*). Returns (ok, moving, residual,
+    rate), simplified."""
+    residual = [r if sp.sympify(r).is_number else sp.simplify(r) for r in residual]
+    rate = [r if sp.sympify(r).is_number else sp.simplify(r) for r in rate]
+    if jac is None:
+        slack_q = slack_u = [0.0] * len(residual)
+    else:
+        slack_q = [rounding_allowance(row, q) for row in jac]
+        slack_u = [rounding_allowance(row, rates) for row in jac]
+    ok = all(_residual_vanishes(r, tol, a) for r, a in zip(residual, slack_q, strict=True)) \
+        and all(_residual_vanishes(r, tol, a) for r, a in zip(rate, slack_u, strict=True))
+    moving = any(not _residual_vanishes(v, 0.0) for v in rates)
+    return ok, moving, residual, rate
 
 
 class LinearSystem:
@@ -295,11 +336,20 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     parameters : dict, optional
         Values of some parameters (by name), substituted before linearising.
     check : bool
-        Check that the reference state is one (``f(q*, q'*) = 0``) and that ``M(q*)`` is
-        invertible.
+        Check that the reference state is one and that ``M(q*)`` is invertible. One rule on
+        both paths (with and without constraints): the residual ``f(q*, q'*)`` (of the
+        reduced equations with constraints) **and its rate along the motion**
+        ``(df/dq)(q*, q'*) q'*`` vanish, so that q* + q'* t satisfies the equations to first
+        order in t: a rate on a coordinate the equations depend on is refused (the pendulum
+        at θ = 0 with θ' = 2), one on a cyclic coordinate is a steady motion. The test is
+        first order: it is exact when the moving coordinates are cyclic (absent from M and
+        f), the usual steady motion.
     tol : float
-        Absolute tolerance on a numeric residual ``f(q*, q'*)`` (a numerically found
-        equilibrium satisfies f = 0 to round-off only).
+        Absolute tolerance on each numeric entry of the residual and of its rate (a
+        numerically found equilibrium satisfies f = 0 to round-off only): ``abs(x) <= tol +
+        8 eps sum_j |df_i/dq_j| max(|q_j|, 1)`` passes, the second term being what the
+        rounding of q* (of q'* for the rate) leaves in f_i (k sin(pi) = 1.2e-16 k for a
+        stiff pendulum). Symbolic entries must vanish identically.
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
@@ -320,8 +370,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     ------
     ArgumentError
         If the state is not an equilibrium / steady motion: the message gives the residual
-        ``f(q*, q'*)``; with constraints, if it violates them (the residual Φ(q*) or
-        A q'* + a), or if the reduced equations are not steady along it.
+        ``f(q*, q'*)`` and its rate ``(df/dq) q'*``; with constraints, if it violates them
+        (the residual Φ(q*) or A q'* + a), or if the reduced equations are not steady along it.
     SingularMassMatrixError
         If ``M(q*)`` is singular.
 
@@ -363,7 +413,8 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
         if unknown:
             raise ArgumentError(f"unknown parameters {unknown}; the equations depend on "
                                 f"{sorted(by_name)}.")
-        point |= {by_name[k]: sp.sympify(v) for k, v in parameters.items()}
+        point |= {by_name[k]: as_declared(by_name[k], v, "parameters")
+                  for k, v in parameters.items()}
     if constrained:
         return _constrained(eqs, norm, about, velocities, w, w_star, point, check=check,
                             tol=tol, simplify=simplify, independent=independent)
@@ -381,14 +432,18 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
     about_named = dict(zip(norm.names, q_star, strict=True))
     vel_named = dict(zip(norm.names, u_star, strict=True))
     if check:
-        residual = [sp.simplify(r) if not r.is_number else r for r in f_values]
-        bad = [r for r in residual if not _residual_vanishes(r, tol)]
-        if bad:
-            kind = "an equilibrium" if all(v == 0 for v in u_star) else "a steady motion"
+        rate = [sum((jac[i][j] * u_star[j] for j in range(n)), sp.S.Zero) for i in range(n)]
+        ok, moving, residual, rate = _steady(f_values, rate, u_star, tol,
+                                             [row[:n] for row in jac], q_star)
+        if not ok:
+            kind = "a steady motion" if moving else "an equilibrium"
             raise ArgumentError(
-                f"`about` is not {kind} (q''* = 0 needs f(q*, q'*) = 0): f(q*, q'*) = "
-                f"{residual} at q* = {about_named}, q'* = {vel_named}. Find the equilibria "
-                f"with rigidmech.vibrations.equilibria.")
+                f"`about` is not {kind} (q''* = 0 along q* + q'* t needs f = 0 and its rate "
+                f"df/dt = 0 along the motion): f(q*, q'*) = {residual} and its rate "
+                f"(df/dq) q'* = {rate} at q* = {about_named}, q'* = {vel_named} (tolerance "
+                f"{tol} plus what the rounding of q* leaves). A rate is steady only on a "
+                f"coordinate the equations do not depend on; find the equilibria with "
+                f"rigidmech.vibrations.equilibria.")
         _check_mass(M0, about_named)
     if simplify is None:
         simplify = n <= 4

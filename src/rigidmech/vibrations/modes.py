@@ -218,6 +218,26 @@ def _symbolic_2dof(M, K):
     return freqs, shapes
 
 
+SYMMETRY_RTOL = 1e-10
+
+
+def is_symmetric(X) -> bool:
+    """Whether the numeric square matrix X is symmetric: max |X - X^T| <= 1e-10 max |X|,
+    relative to its size so that the decision does not depend on the units (the one rule of
+    :func:`natural_modes` and of :func:`rigidmech.vibrations.stability`).
+
+    Examples
+    --------
+    >>> is_symmetric(np.array([[2e-15, -1e-15], [-1e-15, 2e-15]]))
+    True
+    >>> is_symmetric(np.array([[2e-15, -0.9e-15], [-1e-15, 2e-15]]))
+    False
+    """
+    X = np.asarray(X, dtype=float)
+    return bool(np.max(np.abs(X - X.T), initial=0.0)
+                <= SYMMETRY_RTOL * np.max(np.abs(X), initial=0.0))
+
+
 def natural_modes(mass, stiffness) -> Modes:
     """Natural frequencies and mode shapes of :math:`M\\ddot q + K q = 0` (ch. 27.5.2).
 
@@ -274,7 +294,7 @@ def natural_modes(mass, stiffness) -> Modes:
     M = _square(mass, "mass")
     K = _square(stiffness, "stiffness", M.shape[0])
     for X, name in ((M, "mass"), (K, "stiffness")):
-        if not np.allclose(X, X.T, rtol=1e-10, atol=1e-12 * np.max(np.abs(X), initial=1.0)):
+        if not is_symmetric(X):
             raise ArgumentError(f"`{name}` must be symmetric; got {X.tolist()}.")
     try:
         lam, phi = scipy.linalg.eigh((K + K.T) / 2, (M + M.T) / 2)
@@ -315,7 +335,13 @@ def harmonic_response_direct(mass, damping, stiffness, force, omega):
     w = np.atleast_1d(np.asarray(omega, dtype=float))
     out = np.empty((n, w.size), dtype=complex)
     for k, wk in enumerate(w):
-        out[:, k] = np.linalg.solve(K - wk**2 * M + 1j * wk * C, F)
+        try:
+            out[:, k] = np.linalg.solve(K - wk**2 * M + 1j * wk * C, F)
+        except np.linalg.LinAlgError:
+            raise ArgumentError(
+                f"`omega` = {wk} is a natural frequency of the system without damping there "
+                "(K - omega^2 M + i omega C is singular): the steady amplitude is infinite. "
+                "Add damping or leave out that frequency.") from None
     return out
 
 
