@@ -192,9 +192,13 @@ class LinkedParameters:
         links = [k for k in self._graph.links if k.first is parent and k.second is child
                  and (label is None or k.label == str(label))]
         if not links:
+            known = [f"{k.first.name} -> {k.second.name} (label {k.label!r})"
+                     for k in self._graph.links_of(child)]
             raise ConnectionError_(
                 f"there is no connection from {parent.name} to {child.name}"
-                + ("." if label is None else f" labelled {label!r}."))
+                + ("" if label is None else f" labelled {label!r}") + ": give the parent "
+                "and the child as connected by System.connect; the connections of "
+                f"{child.name} are: {'; '.join(known) or 'none'}.")
         if len(links) > 1:
             raise ConnectionError_(
                 f"{len(links)} connections join {parent.name} to {child.name} (labels "
