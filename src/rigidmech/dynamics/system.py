@@ -39,6 +39,8 @@ delegate to functions of private modules):
 
 from __future__ import annotations
 
+import math
+
 from .._core.errors import ArgumentError, ConnectionError_
 from ..actions import Action
 from ..kinetics import Body
@@ -53,6 +55,21 @@ from .linked import LinkedParameters
 from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
+
+
+def _checked_stabilization(value):
+    """Baumgarte's (alpha, beta) as two finite floats >= 0 (the residuals obey
+    c' + 2 alpha c + beta^2 Phi = 0: damped for alpha >= 0)."""
+    try:
+        alpha, beta = (float(x) for x in value)
+    except (TypeError, ValueError):
+        alpha = beta = math.nan
+    if not (math.isfinite(alpha) and math.isfinite(beta) and alpha >= 0 and beta >= 0):
+        raise ArgumentError(
+            "`stabilization` must be two finite numbers >= 0 (alpha, beta), Baumgarte's "
+            f"rates in 1/time; got {value!r}. Pass for example (5.0, 5.0), or (0.0, 0.0) "
+            "for no stabilization.")
+    return (alpha, beta)
 
 
 class System(LinkedParameters):
@@ -76,6 +93,10 @@ class System(LinkedParameters):
         of motion and connection actions are relative to R, and the inertial actions of
         entrainment and Coriolis (:class:`~rigidmech.kinetics.InertialActions`) are among
         its :attr:`actions`. Default: ``galilean`` itself.
+    stabilization : (alpha, beta), optional
+        Baumgarte's rates (in 1/time, finite, >= 0) with which the compiled equations of a
+        system with linking connections damp the drift off the constraints (see
+        :class:`~rigidmech.dynamics.Constraints`); (0, 0) for none.
 
     Notes
     -----
@@ -117,7 +138,7 @@ class System(LinkedParameters):
         self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
         self._closures: list = []  # (link, rows): connections that link parameters
         self._meets: dict = {}  # id(link) -> the point of the child that closes a loop
-        self._stabilization = tuple(float(x) for x in stabilization)
+        self._stabilization = _checked_stabilization(stabilization)
         self._given_coordinates = None
         if coordinates is not None:
             coords = tuple(coordinates)
