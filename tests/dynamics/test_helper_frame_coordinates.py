@@ -9,10 +9,12 @@ Reference values: a particle in polar coordinates (r, phi) under a force F_r er 
 and the simple pendulum m L^2 theta'' = -m g L sin(theta) (theta from the downward vertical).
 """
 
+import pytest
 import sympy as sp
 
 import rigidmech as rm
 from rigidmech.dynamics._tree import body_coordinates
+from rigidmech.errors import FrameError
 
 m, L, g = rm.constants("m L g", positive=True)
 F_r, F_phi = rm.constants("F_r F_phi")
@@ -124,3 +126,12 @@ def test_constants_of_the_basis_of_an_action_are_parameters_of_the_model():
     s.act(rm.Force(on=cart, vector=F * Rb.i, at=P))
     assert sp.simplify(s.equations_of_motion().forcing[0] - F * sp.cos(beta)) == 0
     assert beta in s.parameters
+
+
+def test_a_galilean_frame_placed_on_a_turning_helper_frame_is_refused():
+    # its origin r0 Rt.i moves with Rt (turning with time) though no component has t
+    R0 = rm.Frame("R0")
+    Rt = R0.rotated("Rt", about=R0.k, angle=2 * rm.t)
+    Rg = R0.translated("Rg", R0.origin.moved("O1", 3 * Rt.i))
+    with pytest.raises(FrameError, match=r"`galilean` frame Rg moves relative to the root"):
+        rm.System(galilean=Rg)
