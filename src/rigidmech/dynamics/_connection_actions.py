@@ -96,7 +96,14 @@ def connection_action(system, parent, child, label):
 
 
 def _raw_action(system, link):
-    """The action through ``link`` with the silent unknowns as symbols."""
+    """The action through ``link`` with the silent unknowns as symbols, cached."""
+    key = ("raw action", id(link))
+    if key not in system._cache:
+        system._cache[key] = _derive_raw_action(system, link)
+    return system._cache[key]
+
+
+def _derive_raw_action(system, link):
     child = link.second
     tree = any(k is link for k in system._graph.tree_links())
     actions = [*system._closure_actions(), *silent_actions(system)]
