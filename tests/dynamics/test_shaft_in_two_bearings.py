@@ -120,3 +120,15 @@ def test_two_coaxial_pivots_are_hyperstatic_and_say_so():
 def test_an_isostatic_loop_has_no_undetermined_unknown():
     s, *_ = rotor_system(unbalance=e)
     assert s.hyperstatic_unknowns() == ()
+
+
+def test_the_undetermined_unknowns_count_the_hyperstaticity():
+    # the multipliers being determined (independent closure conditions), the unknowns the
+    # fundamental principle leaves free are those of the degree of hyperstaticity (ch. 14.2):
+    # a planar four-bar of pivots, spatially, has h = 3 (C's Z, L, M)
+    from test_connection_action_along_loops import four_bar
+    s = four_bar()[0]
+    assert s.hyperstatic_unknowns() == ("C.Z", "C.L", "C.M")
+    assert len(s.hyperstatic_unknowns()) == s.mobility().hyperstaticity
+    s = rotor_system()[0]
+    assert len(s.hyperstatic_unknowns()) == s.mobility().hyperstaticity == 0
