@@ -126,3 +126,19 @@ def test_galilean_reference_fixed_relative_to_the_root():
     a = sp.Symbol("alpha")
     R = R0.rotated("R", about=R0.k, angle=a).translated("RT", R0.point("P", 1, L, 0))
     assert rm.System(galilean=R).galilean is R
+
+
+@pytest.mark.parametrize("bad", [(-1.0, 5.0), (5.0, float("nan")), (5.0, float("inf")),
+                                 (5.0,), "fast"])
+def test_stabilization_must_be_two_finite_non_negative_rates(bad):
+    # Baumgarte's residual equation c' + 2 alpha c + beta^2 Phi = 0 is damped only for
+    # alpha >= 0 (beta enters squared, but a negative or non-finite one is a typo)
+    from rigidmech.errors import ArgumentError
+    with pytest.raises(ArgumentError, match=r"`stabilization` must be two finite numbers "
+                                            r">= 0 \(alpha, beta\)"):
+        rm.System(galilean=rm.Frame("R0"), stabilization=bad)
+
+
+@pytest.mark.parametrize("good", [(0.0, 0.0), (0, 1e-300), (5.0, 5.0)])
+def test_stabilization_at_and_above_zero_is_accepted(good):
+    rm.System(galilean=rm.Frame("R0"), stabilization=good)

@@ -62,9 +62,10 @@ def input_values(sim):
     return out
 
 
-def evaluate(sim, expr, frame=None):
+def evaluate(sim, expr, frame=None, along=None):
     """``expr`` along the motion of ``sim`` (see :meth:`Simulation.evaluate
-    <rigidmech.dynamics.Simulation.evaluate>`)."""
+    <rigidmech.dynamics.Simulation.evaluate>`); ``along`` maps more symbols to their values
+    at the samples (the Lagrange multipliers)."""
     if isinstance(expr, Vector):
         if not isinstance(frame, Frame):
             raise ArgumentTypeError(
@@ -91,7 +92,8 @@ def evaluate(sim, expr, frame=None):
             f"`expr` contains {', '.join(sorted(map(str, functions | derivatives)))}, "
             "which is neither a coordinate of the equations, one of its first two "
             "derivatives nor an input.")
-    known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t}
+    extra = list(along or {})
+    known = set(q_s) | set(u_s) | set(a_s) | set(w_s) | {_t} | set(extra)
     constants = sorted(symbols - known, key=lambda s: s.name)
     missing = [c.name for c in constants if c.name not in sim._params]
     if missing:
@@ -100,22 +102,25 @@ def evaluate(sim, expr, frame=None):
             "them to simulate().")
     values = [float(sim._params[c.name]) for c in constants]
     f = compile_expressions(e, [_t, list(q_s), list(u_s), list(a_s), *constants,
-                                *w_s])
+                                *w_s, *extra])
     inputs = input_values(sim)
     if any(e.has(a) for a in a_s):
         params = [float(sim._params[p.name]) for p in eqs.parameters]
         acc = eqs._solver()(sim.t, sim.q, sim.u, *params, *inputs)
     else:
         acc = np.zeros_like(sim.q)
-    out = f(sim.t, sim.q, sim.u, acc, *values, *inputs)
+    out = f(sim.t, sim.q, sim.u, acc, *values, *inputs, *(along[x] for x in extra))
     if isinstance(e, sp.MatrixBase):
         return np.broadcast_to(out, tuple(e.shape) + sim.t.shape).copy()
     return np.broadcast_to(out, sim.t.shape).copy()
 
 
-def connection_action(sim, parent, child, basis, system):
+def connection_action(sim, parent, child, basis, system, label=None):
     """The six components of the action of ``parent`` on ``child`` along the motion (see
-    :meth:`Simulation.connection_action <rigidmech.dynamics.Simulation.connection_action>`)."""
+    :meth:`Simulation.connection_action <rigidmech.dynamics.Simulation.connection_action>`):
+    the Lagrange multipliers of a system with linking connections are evaluated at the
+    stored states (from the augmented system, as :meth:`System.multipliers
+    <rigidmech.dynamics.System.multipliers>`)."""
     eqs = need_equations(sim, "connection_action()")
     system = system if system is not None else getattr(eqs, "system", None)
     if system is None:
@@ -125,21 +130,38 @@ def connection_action(sim, parent, child, basis, system):
     if system.equations_of_motion() is not eqs:
         raise ArgumentError(
             "`system` has changed since these equations were derived (or is another "
-            "system): its connection actions would not match this motion.")
+            "system): its connection actions would not match this motion. Simulate the "
+            "system's current equations (system.equations_of_motion().simulate(...)).")
     if basis is None:
-        comps = system.connection_components(parent, child)
+        comps = system.connection_components(parent, child, label=label)
         keys = list(comps)
         exprs = [comps[k] for k in keys]
     else:
         if not isinstance(basis, Frame):
             raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
                                     f"{type(basis).__name__}.")
-        torsor = system.connection_action(parent, child)
+        torsor = system.connection_action(parent, child, label=label)
         moment = torsor.moment_at(torsor.point)   # at the connection's point
         keys = ["X", "Y", "Z", "L", "M", "N"]
         exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
-    values = evaluate(sim, sp.ImmutableMatrix(len(exprs), 1, exprs))
+    matrix = sp.ImmutableMatrix(len(exprs), 1, exprs)
+    lams = [x for x in system.multiplier_symbols() if matrix.has(x)]
+    along = None
+    if lams:
+        along = dict(zip(system.multiplier_symbols(), multipliers(sim), strict=True))
+        along = {x: along[x] for x in lams}
+    values = evaluate(sim, matrix, along=along)
     return {k: values[i, 0] for i, k in enumerate(keys)}
+
+
+def multipliers(sim):
+    """The Lagrange multipliers at the samples of ``sim``, shape (m, n_samples): the last
+    rows of the solution of the augmented system (see :meth:`System.multipliers
+    <rigidmech.dynamics.System.multipliers>`)."""
+    eqs = need_equations(sim, "multipliers")
+    params = [float(sim._params[p.name]) for p in eqs.parameters]
+    full = eqs._solver().full(sim.t, sim.q, sim.u, *params, *input_values(sim))
+    return -np.asarray(full)[len(eqs.coordinates):]
 
 
 def energy(sim):

@@ -34,9 +34,15 @@ import logging
 import numpy as np
 import sympy as sp
 
-from .._core.compile import compile_linear_solve
-from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
+from .._core.compile import compile_expressions, compile_linear_solve
+from .._core.errors import (
+    ArgumentError,
+    ArgumentTypeError,
+    CompilationError,
+    SingularMassMatrixError,
+)
 from .._core.symbolic import xreplace_shared
+from ..systems.mobility import _rank
 from ..vectors import t as _t
 
 __all__ = ["acceleration_only", "check_compilable", "coordinate_name", "rhs", "solver",
@@ -185,11 +191,51 @@ def constrained_solver(eqs):
         name="accelerations_and_multipliers")
     n = len(q_s)
 
-    def solve(*args):
-        return full(*args)[:n]
+    def checked(*args):
+        try:
+            return full(*args)
+        except SingularMassMatrixError as exc:
+            raise locked(eqs, exc, args) from exc
 
-    solve.full = full
+    def solve(*args):
+        return checked(*args)[:n]
+
+    solve.full = checked
     return solve
+
+
+def locked(eqs, exc, args):
+    """The error of a singular augmented matrix at the state ``args`` (t, q, u, parameters,
+    inputs): a constraint Jacobian A of lower rank than its rows there (a singular
+    configuration of the loop) is named with the conditions, otherwise ``exc`` (M singular
+    on the motions the constraints allow). The rank is decided by the rule of
+    :func:`rigidmech.systems.analyse`."""
+    if "jacobian_compiled" not in eqs._cache:
+        q_s, u_s, w_s, rule, _, _ = symbolic(eqs)
+        c = eqs._constraints
+        A = sp.ImmutableMatrix(len(c), len(q_s), xreplace_shared(list(c.jacobian), rule))
+        eqs._cache["jacobian_compiled"] = compile_expressions(
+            A, [_t, list(q_s), list(u_s), *eqs._params, *w_s])
+    A = np.asarray(eqs._cache["jacobian_compiled"](*args), dtype=float)
+    t, q = args[0], np.asarray(args[1], dtype=float)
+    samples = [None] if A.ndim == 2 else range(A.shape[-1])
+    for k in samples:
+        Ak = A if k is None else A[..., k]
+        if not np.all(np.isfinite(Ak)) or _rank(Ak) == Ak.shape[0]:
+            continue
+        tk = t if k is None or np.ndim(t) == 0 else np.asarray(t)[k]
+        qk = q if k is None else q[:, k]
+        state = ", ".join(f"{coordinate_name(x)}={v:.6g}"
+                          for x, v in zip(eqs.coordinates, qk, strict=True))
+        labels = ", ".join(eqs._constraints.labels)
+        return SingularMassMatrixError(
+            f"the augmented matrix [[M, A^T], [A, 0]] is singular at t={float(tk):.6g}, "
+            f"{state}: the constraint Jacobian A has rank {_rank(Ak)} < {Ak.shape[0]} there "
+            f"(conditions {labels}), a singular configuration of the loop (bars aligned, a "
+            "dead point) where the multipliers are not determined. Start from a "
+            "configuration away from it (System.assemble), or check the dimensions of the "
+            "loop.")
+    return exc
 
 
 def solver(eqs):

@@ -7,7 +7,19 @@ set of bodies it carries: {A(parent -> child)} = the sum over the carried bodies
 dynamic torsors minus the other actions exerted on them (the given actions, and the actions of
 the linking connections written with their Lagrange multipliers). The action of a connection
 that closes a loop, rolls or meshes is the sum of its multipliers' unit torsors on the child.
-Each action is cached in the system's cache.
+
+A joint that closes a loop may block motions the frames already block (a linear annular
+bearing B on the axis of a rotor held by a ball joint A: B stays on the axis whatever the
+spin): those give no closure condition, hence no multiplier, yet the joint carries the
+corresponding components of its action (B's Y, Z). They are the *silent unknowns* of the
+loop: they enter the fundamental principle for the bodies each tree joint carries, and the
+components every tree joint cannot carry (a perfect joint's zero components: no moment at a
+ball joint) give the linear equations that determine them, the statics-style solve of the
+loop's unknowns with the dynamic torsors on the left (ch. 14.2, 18.2). Those the equations
+leave undetermined are hyperstatic (two coaxial pivots): they are taken zero in the closing
+joint, the tree joints carrying the load, and :meth:`System.hyperstatic_unknowns
+<rigidmech.dynamics.System.hyperstatic_unknowns>` names them. Each action is cached in the
+system's cache.
 
 Examples
 --------
@@ -23,13 +35,22 @@ g*m*R0.j
 
 from __future__ import annotations
 
+import numpy as np
+import sympy as sp
+
 from .._core.errors import ConnectionError_
+from ..actions import Joint
+from ..systems.mobility import _Numbers, _rank
 from ..torsors import Torsor
-from ..vectors import Frame
+from ..vectors import Frame, Vector
 from ._derivation import contributions
 from ._tree import solid as as_solid
 
-__all__ = ["connection_action", "connection_components", "subtree"]
+__all__ = ["connection_action", "connection_components", "hyperstatic_unknowns",
+           "silent_actions", "subtree"]
+
+_NAMES = ("X", "Y", "Z", "L", "M", "N")
+_AXES = ("u", "v", "w")
 
 
 def subtree(system, body):
@@ -57,7 +78,6 @@ def connection_action(system, parent, child, label):
         return system._cache[key]
     actions = system._closure_actions()
     own = next((rows for k, rows in actions if k is link), None)
-    tree = any(k is link for k in system._graph.tree_links())
     if own is not None and any(f is None for _, f in own) or (
             actions and any(f is None for k, rows in actions if k is not link
                             for _, f in rows)):
@@ -65,7 +85,30 @@ def connection_action(system, parent, child, label):
             "a linking connection of this system has no action torsor for its multiplier "
             "(a gear mesh whose power is not proportional to its ratio condition): its "
             "connection actions are not derived.")
+    result = _raw_action(system, link)
+    solution, _ = _silent_solution(system)
+    if solution:
+        result = Torsor(result.resultant.xreplace(solution),
+                        result.moment.xreplace(solution), result.point)
+    system._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
+                                result.point)
+    return system._cache[key]
+
+
+def _raw_action(system, link):
+    """The action through ``link`` with the silent unknowns as symbols, cached."""
+    key = ("raw action", id(link))
+    if key not in system._cache:
+        system._cache[key] = _derive_raw_action(system, link)
+    return system._cache[key]
+
+
+def _derive_raw_action(system, link):
+    child = link.second
+    tree = any(k is link for k in system._graph.tree_links())
+    actions = [*system._closure_actions(), *silent_actions(system)]
     if not tree:
+        own = [row for k, rows in actions if k is link for row in rows]
         P = system._meets.get(id(link))
         P = P.origin if isinstance(P, Frame) else P
         if P is None:
@@ -76,30 +119,112 @@ def connection_action(system, parent, child, label):
             for solid, T in forces:
                 if solid is child:
                     total = total + lam * T
-        result = total.at(P)
-    else:
-        conn = link.connection
-        P = conn.contact.point if hasattr(conn, "contact") else conn.at
-        carried = (subtree(system, child) if not system._closures
-                   else list(system._graph.carried_by(link)))
-        total = Torsor.zero(P)
-        for b in carried:
-            if b.mass:
-                total = total + b.dynamic_torsor(system._galilean, at=P)
-        for solid, torsor, _ in contributions(system):
-            if solid in carried:
-                total = total - torsor
-        for k, rows in actions:
-            if k is link:
+        return total.at(P)
+    conn = link.connection
+    P = conn.contact.point if hasattr(conn, "contact") else conn.at
+    carried = (subtree(system, child) if not system._closures
+               else list(system._graph.carried_by(link)))
+    total = Torsor.zero(P)
+    for b in carried:
+        if b.mass:
+            total = total + b.dynamic_torsor(system._galilean, at=P)
+    for solid, torsor, _ in contributions(system):
+        if solid in carried:
+            total = total - torsor
+    for k, rows in actions:
+        if k is link:
+            continue
+        for lam, forces in rows:
+            for solid, T in forces:
+                if solid in carried:
+                    total = total - lam * T
+    return Torsor(total.resultant.compact(), total.moment.compact(), P)
+
+
+def silent_actions(system):
+    """The silent unknowns of the joints that close loops (see the module notes), in the
+    form of the multipliers' actions: ``[(link, [(symbol, [(solid, unit torsor), ...]),
+    ...]), ...]``, the symbol named ``<label>.<component>`` (``B.Y``), cached."""
+    if "silent_actions" not in system._cache:
+        out = []
+        for link, rows in system._closures:
+            conn = link.connection
+            if not isinstance(conn, Joint):
                 continue
-            for lam, forces in rows:
-                for solid, T in forces:
-                    if solid in carried:
-                        total = total - lam * T
-        result = Torsor(total.resultant.compact(), total.moment.compact(), P)
-    system._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
-                                result.point)
-    return system._cache[key]
+            have = {row[0] for row in rows}
+            meets = system._meets.get(id(link))
+            P1 = conn.at
+            P2 = meets.origin if isinstance(meets, Frame) else (meets or P1)
+            silent = []
+            for i in conn.blocked_motion:
+                e = conn.basis[i % 3]
+                if i < 3:
+                    condition, name = f"{link.label}.r{_AXES[i]}", _NAMES[i + 3]
+                    unit = [(link.second, Torsor(Vector.zero(), e, P2)),
+                            (link.first, Torsor(Vector.zero(), -e, P1))]
+                else:
+                    condition, name = f"{link.label}.{_AXES[i - 3]}", _NAMES[i - 3]
+                    unit = [(link.second, Torsor(e, Vector.zero(), P2)),
+                            (link.first, Torsor(-e, Vector.zero(), P1))]
+                if condition not in have:
+                    silent.append((_NAMES.index(name),
+                                   sp.Symbol(f"{link.label}.{name}", real=True), unit))
+            if silent:   # in the order (X, Y, Z, L, M, N)
+                out.append((link, [(sym, unit) for _, sym, unit in sorted(
+                    silent, key=lambda x: x[0])]))
+        system._cache["silent_actions"] = out
+    return system._cache["silent_actions"]
+
+
+def _silent_solution(system):
+    """({silent symbol: value}, undetermined names): the silent unknowns solved from the
+    zero components of the tree joints' actions (linear in them), those left undetermined
+    (hyperstatic) taken zero; cached. The rank is decided at a generic configuration by the
+    rule of :func:`rigidmech.systems.analyse` (the same decision as the hyperstaticity)."""
+    if "silent_solution" in system._cache:
+        return system._cache["silent_solution"]
+    symbols = [sym for _, rows in silent_actions(system) for sym, _ in rows]
+    if not symbols:
+        system._cache["silent_solution"] = ({}, ())
+        return system._cache["silent_solution"]
+    closures = {id(k) for k, _ in system._closures}
+    equations = []
+    for link in system._graph.tree_links():
+        conn = link.connection
+        if not isinstance(conn, Joint) or id(link) in closures or not conn.zero_components:
+            continue
+        comps = conn.components(_raw_action(system, link))
+        equations.extend(sp.expand(comps[_NAMES[i]]) for i in conn.zero_components)
+    zero = dict.fromkeys(symbols, 0)
+    B = sp.Matrix([[eq.coeff(s) for s in symbols] for eq in equations]) if equations \
+        else sp.zeros(0, len(symbols))
+    E0 = sp.Matrix([eq.xreplace(zero) for eq in equations])
+    numbers = _Numbers(None, 0)
+    Bn = np.array([[numbers(x) for x in row] for row in B.tolist()], dtype=float) \
+        if equations else np.zeros((0, len(symbols)))
+    columns, rows = [], []
+    for c in range(len(symbols)):       # the unknowns met first are determined first
+        if _rank(Bn[:, columns + [c]]) > len(columns):
+            columns.append(c)
+    for r in range(len(equations)):
+        if _rank(Bn[rows + [r]][:, columns]) > len(rows):
+            rows.append(r)
+        if len(rows) == len(columns):
+            break
+    solution = dict(zero)
+    if columns:
+        values = B.extract(rows, columns).LUsolve(-E0.extract(rows, [0]))
+        solution.update({symbols[c]: v for c, v in zip(columns, values, strict=True)})
+    undetermined = tuple(s.name for n, s in enumerate(symbols) if n not in columns)
+    system._cache["silent_solution"] = (solution, undetermined)
+    return system._cache["silent_solution"]
+
+
+def hyperstatic_unknowns(system):
+    """The names of the silent unknowns of ``system`` that the fundamental principle does
+    not determine (see :meth:`System.hyperstatic_unknowns
+    <rigidmech.dynamics.System.hyperstatic_unknowns>`)."""
+    return _silent_solution(system)[1]
 
 
 def connection_components(system, parent, child, label):

@@ -46,6 +46,7 @@ from . import _euler_parameters
 from ._singularities import orientation_singularities
 from .equations import EquationsOfMotion
 from .reference import _placing as _frame_exprs
+from .reference import _point_placing, _vector_placing
 
 __all__ = ["contributions", "equations_of_motion", "generalized_forces", "kinetic_energy_of",
            "mechanical_energy", "parameters", "partials", "symbols"]
@@ -84,14 +85,14 @@ def _constants(bodies, contributions):
     exprs = []
     for b in bodies:
         exprs.extend(_frame_exprs(b.frame))
-        exprs.extend(x for _, c in b.centre.position.parts for x in c)
+        exprs.extend(_point_placing(b.centre))
         if b.mass is not None:
             exprs.append(b.mass)
         if b.inertia is not None:
             exprs.extend(b.inertia.matrix)
     for _, torsor, _ in contributions:
         for v in (torsor.resultant, torsor.moment, torsor.point.position):
-            exprs.extend(x for _, c in v.parts for x in c)
+            exprs.extend(_vector_placing(v))
     return tuple(sorted(free_symbols_shared(exprs) - {t}, key=lambda s: s.name))
 
 

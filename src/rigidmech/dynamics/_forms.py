@@ -19,8 +19,9 @@ Matrix([[-x(t)*Derivative(x(t), t)]])
 from __future__ import annotations
 
 import sympy as sp
+from sympy.matrices.exceptions import NonInvertibleMatrixError
 
-from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.errors import ArgumentError, ArgumentTypeError, SingularMassMatrixError
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..vectors import t as _t
 from ._compiled import coordinate_name as _name
@@ -94,16 +95,36 @@ def accelerations(eqs, simplify):
     """q'' = M^-1 f symbolically; with constraints, the first n unknowns of the augmented
     eqs (see :meth:`EquationsOfMotion.accelerations
     <rigidmech.dynamics.EquationsOfMotion.accelerations>`)."""
-    if eqs._constraints is not None:
-        c = eqs._constraints
-        n, m = len(eqs._q), len(c)
-        K = sp.BlockMatrix([[eqs._M, c.jacobian.T],
-                            [c.jacobian, sp.zeros(m, m)]]).as_explicit()
-        sol = K.LUsolve(sp.Matrix(list(eqs._f) + list(c.bias)))
-        acc = sol[:n, :]
-        return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
-    acc = eqs._M.LUsolve(eqs._f)
+    try:
+        if eqs._constraints is not None:
+            c = eqs._constraints
+            n, m = len(eqs._q), len(c)
+            K = sp.BlockMatrix([[eqs._M, c.jacobian.T],
+                                [c.jacobian, sp.zeros(m, m)]]).as_explicit()
+            sol = K.LUsolve(sp.Matrix(list(eqs._f) + list(c.bias)))
+            acc = sol[:n, :]
+        else:
+            acc = eqs._M.LUsolve(eqs._f)
+    except (NonInvertibleMatrixError, ValueError) as exc:
+        raise _singular(eqs) from exc
     return sp.ImmutableMatrix(sp.simplify(acc) if simplify else acc)
+
+
+def _singular(eqs):
+    """The error of a mass (or augmented) matrix singular at every configuration, naming the
+    coordinates whose row of M is zero (they move no mass) when there are some."""
+    names = [_name(q) for q in eqs._q]
+    zero = [nm for nm, row in zip(names, eqs._M.tolist(), strict=True)
+            if all(x == 0 for x in row)]
+    what = ("the augmented matrix [[M, A^T], [A, 0]]" if eqs._constraints is not None
+            else "the mass matrix M")
+    cause = (f" (the row of {', '.join(zero)} is zero: no body with mass or inertia moves "
+             "with it)" if zero else "")
+    return SingularMassMatrixError(
+        f"`accelerations()`: {what} is singular at every configuration of "
+        f"[{', '.join(names)}]{cause}, so q'' is not determined. Give mass or inertia to "
+        "the bodies that move with each coordinate, remove a coordinate that moves nothing, "
+        "or a linking connection that repeats others.")
 
 
 def display_rule(eqs) -> dict:

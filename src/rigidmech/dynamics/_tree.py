@@ -36,6 +36,7 @@ from ..systems import closure_conditions
 from ..vectors import Frame
 from ..vectors.symbols import declared_order, declared_ranks, is_coordinate
 from .reference import _placing as _frame_exprs
+from .reference import _point_placing
 
 __all__ = ["add", "body_coordinates", "connect", "ordered_coordinates", "solid", "touch"]
 
@@ -59,7 +60,7 @@ def coordinates_in(expr_iterable):
 def body_coordinates(body):
     """The parameters of situation q(t) on which the body's frame or mass centre depends."""
     exprs = _frame_exprs(body.frame)
-    exprs.extend(x for _, c in body.centre.position.parts for x in c)
+    exprs.extend(_point_placing(body.centre))
     return coordinates_in(exprs)
 
 
@@ -110,7 +111,7 @@ def ordered_coordinates(system):
     exprs = []
     for b in system._bodies:
         exprs.extend(_frame_exprs(b.frame))
-        exprs.extend(x for _, c in b.centre.position.parts for x in c)
+        exprs.extend(_point_placing(b.centre))
     found = declared_order(coordinates_in(exprs), ranks=system._ranks)
     if not found:
         raise ArgumentError("the system has no parameter of situation: nothing moves.")

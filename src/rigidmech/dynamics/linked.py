@@ -14,11 +14,36 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, ConnectionError_
 from ..systems import closure_forces
+from ..systems.mobility import _Numbers, _rank
 from ._run import merge_values
 from .assembly import ON_CONSTRAINTS, Closure, assemble, explicit_time, time_of
 from .constraints import Constraints
 
 __all__ = ["LinkedParameters"]
+
+
+def _check_independent(constraints):
+    """Refuse closure conditions that depend on the others at a generic configuration (a
+    connection repeating what others already impose): the multipliers would not be
+    determined and the augmented matrix would be singular everywhere. The rank is decided
+    by the rule of :func:`rigidmech.systems.analyse` (the same decision as the mobility)."""
+    A = constraints.jacobian
+    numbers = _Numbers(None, 0)
+    An = np.array([[numbers(x) for x in row] for row in A.tolist()], dtype=float)
+    kept, redundant = [], []
+    for r, label in enumerate(constraints.labels):
+        if _rank(An[kept + [r]]) > len(kept):
+            kept.append(r)
+        else:
+            redundant.append(label)
+    if redundant:
+        raise ConnectionError_(
+            f"the closure conditions {', '.join(redundant)} depend on the other closure "
+            f"conditions ({', '.join(constraints.labels[r] for r in kept)}) at every "
+            "configuration: the Lagrange multipliers would not be determined and the "
+            "equations could not be solved. The mounting is hyperstatic (see mobility()): "
+            "remove the connection that repeats the others, or use one that blocks fewer "
+            "motions (a linear annular or a point contact instead of a pivot).")
 
 
 class LinkedParameters:
@@ -93,8 +118,9 @@ class LinkedParameters:
         if not rows:
             return None
         if "constraints" not in self._cache:
-            self._cache["constraints"] = Constraints(self.coordinates, rows,
-                                                     stabilization=self._stabilization)
+            c = Constraints(self.coordinates, rows, stabilization=self._stabilization)
+            _check_independent(c)
+            self._cache["constraints"] = c
         return self._cache["constraints"]
 
     def loops(self) -> tuple:
@@ -231,9 +257,13 @@ class LinkedParameters:
         links = [k for k in self._graph.links if k.first is parent and k.second is child
                  and (label is None or k.label == str(label))]
         if not links:
+            known = [f"{k.first.name} -> {k.second.name} (label {k.label!r})"
+                     for k in self._graph.links_of(child)]
             raise ConnectionError_(
                 f"there is no connection from {parent.name} to {child.name}"
-                + ("." if label is None else f" labelled {label!r}."))
+                + ("" if label is None else f" labelled {label!r}") + ": give the parent "
+                "and the child as connected by System.connect; the connections of "
+                f"{child.name} are: {'; '.join(known) or 'none'}.")
         if len(links) > 1:
             raise ConnectionError_(
                 f"{len(links)} connections join {parent.name} to {child.name} (labels "

@@ -51,19 +51,48 @@ __all__ = ["resolve_reference", "check_inertial_action"]
 
 def _placing(frame, stop=None):
     """The expressions that place ``frame`` relative to ``stop`` (default: the root): for
-    each frame of the chain, its origin's position and its rotation from its parent."""
+    each frame of the chain, its origin's position and its rotation from its parent, and
+    recursively the placing of every frame in whose basis an origin's position is written
+    (a position r Rp.i depends on the angle of Rp even if no component does)."""
+    out = []
+    _place_frame(frame, stop, out, set())
+    return out
+
+
+def _point_placing(point):
+    """The expressions that place ``point``: the components of its position and the
+    placing of every frame in whose basis the position is written (see :func:`_placing`)."""
+    return _vector_placing(point.position)
+
+
+def _vector_placing(v):
+    """The components of the vector ``v`` and the placing of every frame in whose basis it
+    is written (see :func:`_placing`)."""
+    out = []
+    _place_vector(v, out, set())
+    return out
+
+
+def _place_frame(frame, stop, out, seen):
     chain = []
     f = frame
     while f is not None and f is not stop:
         chain.append(f)
         f = f.parent
-    out = []
     for g in reversed(chain):
-        out.extend(x for _, c in g.origin.position.parts for x in c)
+        if g in seen:
+            continue
+        seen.add(g)
+        _place_vector(g.origin.position, out, seen)
         out.append(g.angle)
         if g._matrix is not None:
             out.extend(x for row in g._matrix for x in row)
-    return out
+
+
+def _place_vector(v, out, seen):
+    for basis, components in v.parts:
+        out.extend(components)
+        _place_frame(basis, None, out, seen)
 
 
 def check_fixed_reference(galilean, argument="galilean"):

@@ -239,7 +239,8 @@ class Simulation:
         """
         return _along.evaluate(self, expr, frame)
 
-    def connection_action(self, parent, child, *, basis=None, system=None) -> dict:
+    def connection_action(self, parent, child, *, basis=None, system=None,
+                          label=None) -> dict:
         """The action of ``parent`` on ``child`` through their connection (ch. 18.2) along the
         motion: its six components as time series, in one call (compiled once).
 
@@ -255,6 +256,13 @@ class Simulation:
             The system the equations were derived from; by default the one they remember
             (equations derived by ``System.equations_of_motion``). It must not have changed
             since (an action or a connection added): its equations would differ.
+        label : str, optional
+            The connection's label, when several connections join the same two solids (as
+            :meth:`System.connection_action`).
+
+        In a system with linking connections (closed loops, rolling, gears) the Lagrange
+        multipliers the actions are written with are evaluated at each sample from the
+        stored state (as :meth:`System.multipliers`).
 
         Returns
         -------
@@ -275,7 +283,7 @@ class Simulation:
         >>> bool(np.allclose(N["X"], -2.0 * 9.81))       # at rest below the pivot: -m g
         True
         """
-        return _along.connection_action(self, parent, child, basis, system)
+        return _along.connection_action(self, parent, child, basis, system, label)
 
     def energy(self):
         """Total mechanical energy T + V along the motion."""

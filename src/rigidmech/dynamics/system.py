@@ -39,6 +39,8 @@ delegate to functions of private modules):
 
 from __future__ import annotations
 
+import math
+
 from .._core.errors import ArgumentError, ConnectionError_
 from ..actions import Action
 from ..kinetics import Body
@@ -53,6 +55,21 @@ from .linked import LinkedParameters
 from .reference import check_inertial_action, resolve_reference
 
 __all__ = ["System"]
+
+
+def _checked_stabilization(value):
+    """Baumgarte's (alpha, beta) as two finite floats >= 0 (the residuals obey
+    c' + 2 alpha c + beta^2 Phi = 0: damped for alpha >= 0)."""
+    try:
+        alpha, beta = (float(x) for x in value)
+    except (TypeError, ValueError):
+        alpha = beta = math.nan
+    if not (math.isfinite(alpha) and math.isfinite(beta) and alpha >= 0 and beta >= 0):
+        raise ArgumentError(
+            "`stabilization` must be two finite numbers >= 0 (alpha, beta), Baumgarte's "
+            f"rates in 1/time; got {value!r}. Pass for example (5.0, 5.0), or (0.0, 0.0) "
+            "for no stabilization.")
+    return (alpha, beta)
 
 
 class System(LinkedParameters):
@@ -76,6 +93,10 @@ class System(LinkedParameters):
         of motion and connection actions are relative to R, and the inertial actions of
         entrainment and Coriolis (:class:`~rigidmech.kinetics.InertialActions`) are among
         its :attr:`actions`. Default: ``galilean`` itself.
+    stabilization : (alpha, beta), optional
+        Baumgarte's rates (in 1/time, finite, >= 0) with which the compiled equations of a
+        system with linking connections damp the drift off the constraints (see
+        :class:`~rigidmech.dynamics.Constraints`); (0, 0) for none.
 
     Notes
     -----
@@ -117,7 +138,7 @@ class System(LinkedParameters):
         self._joints: dict = {}  # child body -> (parent solid, joint): the tree joints
         self._closures: list = []  # (link, rows): connections that link parameters
         self._meets: dict = {}  # id(link) -> the point of the child that closes a loop
-        self._stabilization = tuple(float(x) for x in stabilization)
+        self._stabilization = _checked_stabilization(stabilization)
         self._given_coordinates = None
         if coordinates is not None:
             coords = tuple(coordinates)
@@ -425,13 +446,15 @@ class System(LinkedParameters):
         In a system with linking connections (loops, rolling, gears) the actions of those
         connections are written with their Lagrange multipliers (:meth:`multiplier_symbols`,
         values from :meth:`multipliers`): the action of a loop-closing joint is
-        sum lambda_i e_i at its point (only the components its conditions carry: those the
-        frames already enforce are carried by the tree joints), and the actions of the other
-        connections include the multipliers' actions on the bodies they carry. In a
-        hyperstatic mounting (a shaft on two pivots) the split of the action between the
-        redundant connections is not determined by the equations (see :meth:`mobility`): the
-        one given is the solution in which the closing connection transmits only its
-        conditions' multipliers (nothing, for a second coaxial pivot).
+        sum lambda_i e_i at its point, plus the components along the motions it blocks that
+        the frames already block (a linear annular bearing on the axis of a rotor held by a
+        ball joint): those are solved from the components the tree joints cannot transmit
+        (ch. 14.2), and the actions of the other connections include all these actions on
+        the bodies they carry. In a hyperstatic mounting (a shaft on two pivots) the split
+        of the action between the redundant connections is not determined by the equations
+        (see :meth:`mobility`): the one given takes the undetermined components of the
+        closing connection zero (nothing, for a second coaxial pivot), and
+        :meth:`hyperstatic_unknowns` names them.
 
         Parameters
         ----------
@@ -453,6 +476,28 @@ class System(LinkedParameters):
         -L*m*Derivative(q(t), t)**2*R1.i + L*m*Derivative(q(t), (t, 2))*R1.j - g*m*R0.i
         """
         return _connection_actions.connection_action(self, parent, child, label)
+
+    def hyperstatic_unknowns(self) -> tuple:
+        """The names (``<label>.<component>``) of the components of the actions of the
+        loop-closing joints that the fundamental principle does not determine: the degree of
+        hyperstaticity of those joints' blocked motions that the frames already block, taken
+        zero by :meth:`connection_action` (ch. 14.2). Empty for an isostatic loop.
+
+        Examples
+        --------
+        A shaft in two coaxial pivots: the load is shared between them in a way the
+        equations do not tell.
+
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); Rr = R0.rotated("Rr", about=R0.i, angle=rm.coordinates("q"))
+        >>> s = System(galilean=R0); shaft = rm.Body("shaft", frame=Rr, mass=1)
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.origin, axis=R0.i), label="A")
+        >>> s.connect(R0, shaft, rm.joints.Pivot(at=R0.point("B", 1, 0, 0), axis=R0.i),
+        ...           label="B")
+        >>> s.hyperstatic_unknowns()
+        ('B.X', 'B.Y', 'B.Z', 'B.L', 'B.M')
+        """
+        return _connection_actions.hyperstatic_unknowns(self)
 
     def connection_components(self, parent, child, *, label=None) -> dict:
         """The components (X, Y, Z, L, M, N) of the action of ``parent`` on ``child`` in the
