@@ -10,9 +10,10 @@ and 2.1 sin(q1 + q2 - q3) + 0.6 sin(q1 - q3): both vanish at q = (0, 0, 0).
 
 import numpy as np
 import pytest
-from test_connection_action_along_loops import L2, L3, four_bar
+from test_connection_action_along_loops import L0, L1, L2, L3, four_bar
 
 import rigidmech as rm
+from rigidmech import models
 from rigidmech.errors import ConnectionError_, SingularMassMatrixError
 
 
@@ -28,9 +29,17 @@ def test_a_repeated_closure_is_refused_naming_its_conditions():
 
 
 def test_aligned_bars_name_the_constraint_jacobian():
-    s, _, _ = four_bar()
+    # rocker 0.7 instead of 1.0: the aligned state q = 0 is then on the loop (crank + coupler
+    # = ground + rocker = 2.7), as multipliers() requires, and the Jacobian's rank drops there
+    s = models.four_bar(lengths=(L0, L1, L2, L1 + L2 - L0)).system
     with pytest.raises(SingularMassMatrixError, match=r"constraint Jacobian A .* rank 1 < 2 "
-                                                      r".*C\.u, C\.v"):
+                                                      r".*conditions 4\.u, 4\.v"):
+        s.multipliers(np.zeros(3), np.zeros(3), m=1.0, g=9.81)
+
+
+def test_aligned_bars_off_the_loop_are_refused_as_off_the_constraints():
+    s, _, _ = four_bar()                     # q = 0 leaves C 0.3 short of the rocker's end
+    with pytest.raises(rm.errors.ArgumentError, match=r"not on the constraints .*C\.u = 0\.3"):
         s.multipliers(np.zeros(3), np.zeros(3))
 
 
