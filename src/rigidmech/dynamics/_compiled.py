@@ -42,7 +42,7 @@ from .._core.errors import (
     SingularMassMatrixError,
 )
 from .._core.symbolic import xreplace_shared
-from ..systems.mobility import _rank
+from ..systems.mobility import numeric_rank
 from ..vectors import t as _t
 
 __all__ = ["acceleration_only", "check_compilable", "coordinate_name", "rhs", "solver",
@@ -221,7 +221,7 @@ def locked(eqs, exc, args):
     samples = [None] if A.ndim == 2 else range(A.shape[-1])
     for k in samples:
         Ak = A if k is None else A[..., k]
-        if not np.all(np.isfinite(Ak)) or _rank(Ak) == Ak.shape[0]:
+        if not np.all(np.isfinite(Ak)) or numeric_rank(Ak) == Ak.shape[0]:
             continue
         tk = t if k is None or np.ndim(t) == 0 else np.asarray(t)[k]
         qk = q if k is None else q[:, k]
@@ -230,7 +230,7 @@ def locked(eqs, exc, args):
         labels = ", ".join(eqs._constraints.labels)
         return SingularMassMatrixError(
             f"the augmented matrix [[M, A^T], [A, 0]] is singular at t={float(tk):.6g}, "
-            f"{state}: the constraint Jacobian A has rank {_rank(Ak)} < {Ak.shape[0]} there "
+            f"{state}: the constraint Jacobian A has rank {numeric_rank(Ak)} < {Ak.shape[0]} there "
             f"(conditions {labels}), a singular configuration of the loop (bars aligned, a "
             "dead point) where the multipliers are not determined. Start from a "
             "configuration away from it (System.assemble), or check the dimensions of the "

@@ -40,7 +40,7 @@ import sympy as sp
 
 from .._core.errors import ConnectionError_
 from ..actions import Joint
-from ..systems.mobility import _Numbers, _rank
+from ..systems.mobility import GenericValues, numeric_rank
 from ..torsors import Torsor
 from ..vectors import Frame, Vector
 from ._derivation import contributions
@@ -199,15 +199,15 @@ def _silent_solution(system):
     B = sp.Matrix([[eq.coeff(s) for s in symbols] for eq in equations]) if equations \
         else sp.zeros(0, len(symbols))
     E0 = sp.Matrix([eq.xreplace(zero) for eq in equations])
-    numbers = _Numbers(None, 0)
+    numbers = GenericValues(None, 0)
     Bn = np.array([[numbers(x) for x in row] for row in B.tolist()], dtype=float) \
         if equations else np.zeros((0, len(symbols)))
     columns, rows = [], []
     for c in range(len(symbols)):       # the unknowns met first are determined first
-        if _rank(Bn[:, columns + [c]]) > len(columns):
+        if numeric_rank(Bn[:, columns + [c]]) > len(columns):
             columns.append(c)
     for r in range(len(equations)):
-        if _rank(Bn[rows + [r]][:, columns]) > len(rows):
+        if numeric_rank(Bn[rows + [r]][:, columns]) > len(rows):
             rows.append(r)
         if len(rows) == len(columns):
             break

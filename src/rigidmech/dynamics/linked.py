@@ -14,7 +14,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError, ConnectionError_
 from ..systems import closure_forces
-from ..systems.mobility import _Numbers, _rank
+from ..systems.mobility import GenericValues, numeric_rank
 from ._run import merge_values
 from .assembly import ON_CONSTRAINTS, Closure, assemble, explicit_time, time_of
 from .constraints import Constraints
@@ -28,11 +28,11 @@ def _check_independent(constraints):
     determined and the augmented matrix would be singular everywhere. The rank is decided
     by the rule of :func:`rigidmech.systems.analyse` (the same decision as the mobility)."""
     A = constraints.jacobian
-    numbers = _Numbers(None, 0)
+    numbers = GenericValues(None, 0)
     An = np.array([[numbers(x) for x in row] for row in A.tolist()], dtype=float)
     kept, redundant = [], []
     for r, label in enumerate(constraints.labels):
-        if _rank(An[kept + [r]]) > len(kept):
+        if numeric_rank(An[kept + [r]]) > len(kept):
             kept.append(r)
         else:
             redundant.append(label)

@@ -43,7 +43,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError
 from ..torsors import Torsor
 from ..vectors import Vector
 
-__all__ = ["Mobility", "analyse"]
+__all__ = ["Mobility", "analyse", "GenericValues", "numeric_rank"]
 
 
 class Mobility:
@@ -140,8 +140,29 @@ def _components(T: Torsor, O, basis, planar):
     return R + M, R + M
 
 
-class _Numbers:
-    """Random (seeded) or given values for everything but the chosen unknowns."""
+class GenericValues:
+    """Numbers for an expression at a generic configuration (book, ch. 13.2): the values
+    given, and seeded random ones for every other symbol, coordinate and derivative.
+
+    One object keeps the values it drew, so every expression evaluated through it sees the
+    same configuration; ranks computed from such numbers are the generic ranks (a rank lost
+    at one configuration only is found with probability zero).
+
+    Parameters
+    ----------
+    values : mapping, optional
+        Values of symbols or coordinates (by object or by name).
+    seed : int
+        Seed of the random values.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> a, b = sp.symbols("a b")
+    >>> numbers = GenericValues({a: 2.0}, seed=0)
+    >>> numbers(a * b) == 2.0 * numbers(b)
+    True
+    """
 
     def __init__(self, values, seed):
         self._given = {} if values is None else dict(values)
@@ -183,7 +204,16 @@ def _matrix(rows, symbols, numbers):
     return A
 
 
-def _rank(A):
+def numeric_rank(A) -> int:
+    """Rank of a numeric matrix by numpy's singular-value rule (0 for an empty matrix): the
+    one rank rule of the mobility analysis and of the checks on closure conditions.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> numeric_rank(np.array([[1.0, 2.0], [2.0, 4.0]])), numeric_rank(np.zeros((0, 3)))
+    (1, 0)
+    """
     if A.size == 0:
         return 0
     return int(np.linalg.matrix_rank(A))
@@ -228,7 +258,7 @@ def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:
     O = R0.origin
     planar = plane is not None
     basis = _plane_basis(plane, R0) if planar else R0
-    numbers = _Numbers(values, seed)
+    numbers = GenericValues(values, seed)
     links = mechanism.links
     # -- kinematics: one block of columns per link --------------------------------------
     motions, kin_cols, n_c = {}, [], 0
@@ -237,7 +267,7 @@ def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:
         rows, _ = _components(V, O, basis, planar)
         motions[id(link)] = rows
         kin_cols.extend(free)
-        n_c += _rank(_matrix(rows, list(free), numbers))
+        n_c += numeric_rank(_matrix(rows, list(free), numbers))
     loops = mechanism.loops()
     closure = []
     for loop in loops:
@@ -247,7 +277,7 @@ def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:
             total = rows if total is None else [a + b for a, b in zip(total, rows,
                                                                       strict=True)]
         closure.extend(total)
-    r_c = _rank(_matrix(closure, kin_cols, numbers))
+    r_c = numeric_rank(_matrix(closure, kin_cols, numbers))
     # groups of bodies not connected to the ground float freely
     _, parent = mechanism._structure()
     floating = 0
@@ -260,7 +290,7 @@ def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:
     for link in links:
         T, unk = link.connection.action_torsor(link.label)
         _, rows = _components(T, O, basis, planar)
-        rank = _rank(_matrix(rows, list(unk), numbers))
+        rank = numeric_rank(_matrix(rows, list(unk), numbers))
         n_s += rank
         torsors.append((link, rows))
         unknowns.extend(unk)
@@ -274,7 +304,7 @@ def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:
                 total = [a - r for a, r in zip(total, rows, strict=True)]
         eq.extend(total)
     S = _matrix(eq, unknowns, numbers)
-    r_s = _rank(S)
+    r_s = numeric_rank(S)
     h = n_s - r_s
     undetermined = ()
     if h > 0 and S.size:
