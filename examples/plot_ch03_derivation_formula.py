@@ -63,6 +63,7 @@ fig, ax = plt.subplots(figsize=(6.5, 4), constrained_layout=True)
 ax.plot(tt, values, label=r"$|d\mathbf{u}/dt|_0|$")
 ax.plot(tt, np.ones_like(tt), "--", label=r"$|d\mathbf{u}/dt|_1| = a$")
 ax.set(xlabel="time t (s)", ylabel="magnitude (m/s)",
-       title=r"$\mathbf{u} = a t\,\mathbf{i}_1 + b\,\mathbf{k}_1$, $\psi = \omega t$, $\omega$ = 1.5 rad/s")
+       title=r"$\mathbf{u} = a t\,\mathbf{i}_1 + b\,\mathbf{k}_1$, $\psi = \omega t$, "
+       r"$\omega$ = 1.5 rad/s")
 ax.legend()
 plt.show()

@@ -10,7 +10,8 @@ A point :math:`M` is located in the reference :math:`\\mathcal{T}_0 = (O; \\math
 .. math:: \\mathbf{v} = \\dot r\\,\\mathbf{e}_r + r\\dot\\theta\\,\\mathbf{e}_\\theta
           + \\dot z\\,\\mathbf{k}_0, \\qquad
           \\mathbf{a} = (\\ddot r - r\\dot\\theta^2)\\,\\mathbf{e}_r
-          + (2\\dot r\\dot\\theta + r\\ddot\\theta)\\,\\mathbf{e}_\\theta + \\ddot z\\,\\mathbf{k}_0,
+          + (2\\dot r\\dot\\theta + r\\ddot\\theta)\\,\\mathbf{e}_\\theta
+          + \\ddot z\\,\\mathbf{k}_0,
 
 and the tangential and normal components of the acceleration (ch. 6.2.3),
 :math:`a_t = dV/dt` and :math:`a_n = V^2/\\rho`, :math:`\\rho` the radius of curvature of the

@@ -1,6 +1,6 @@
 """
-Plane motion of the connecting rod of a slider-crank: kinematic torsor and instantaneous centre (ch. 9)
-=======================================================================================================
+Slider-crank: kinematic torsor and instantaneous centre of the connecting rod (ch. 9)
+=====================================================================================
 
 The crank :math:`OA` (length :math:`r`) turns by the angle :math:`q` about :math:`(O,
 \\mathbf{k}_0)`; the connecting rod :math:`AB` (length :math:`L`) has its end :math:`B` guided
@@ -66,11 +66,11 @@ qk = np.radians(50)
 pts = {n: np.array([float(c.subs(values).subs(q, qk)) for c in P.coordinates(R0)[:2]])
        for n, P in (("O", R0.origin), ("A", A), ("B", B), ("I", I))}
 fig, ax = plt.subplots(figsize=(7, 5.5), constrained_layout=True)
-ax.plot(*zip(pts["O"], pts["A"]), "k-o", lw=3, label="crank OA")
-ax.plot(*zip(pts["A"], pts["B"]), "-o", color="tab:blue", lw=3, label="rod AB")
+ax.plot(*zip(pts["O"], pts["A"], strict=True), "k-o", lw=3, label="crank OA")
+ax.plot(*zip(pts["A"], pts["B"], strict=True), "-o", color="tab:blue", lw=3, label="rod AB")
 ax.plot([-0.15, 0.5], [0, 0], color="gray", lw=1)
-ax.plot(*zip(pts["O"], pts["I"]), ":", color="k", lw=1)
-ax.plot(*zip(pts["B"], pts["I"]), ":", color="k", lw=1)
+ax.plot(*zip(pts["O"], pts["I"], strict=True), ":", color="k", lw=1)
+ax.plot(*zip(pts["B"], pts["I"], strict=True), ":", color="k", lw=1)
 ax.plot(*pts["I"], "r*", ms=14, label="instantaneous centre I")
 for n, p in pts.items():
     ax.annotate(n, p, textcoords="offset points", xytext=(6, 6))

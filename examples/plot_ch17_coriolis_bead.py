@@ -11,13 +11,15 @@ The acceleration of :math:`B` relative to :math:`\\mathcal{T}_0` is the sum of t
 acceleration, the acceleration of entrainment and the acceleration of Coriolis (ch. 17.1.3),
 
 .. math:: \\mathbf{a}(B/\\mathcal{T}_0) = \\mathbf{a}(B/\\mathcal{T}_1) + \\mathbf{a}_e(B)
-          + 2\\,\\boldsymbol{\\omega}(\\mathcal{T}_1/\\mathcal{T}_0)\\wedge\\mathbf{v}(B/\\mathcal{T}_1),
+          + 2\\,\\boldsymbol{\\omega}(\\mathcal{T}_1/\\mathcal{T}_0)
+          \\wedge\\mathbf{v}(B/\\mathcal{T}_1),
 
 and the same holds for the dynamic torsors (ch. 17.2.3):
-:math:`\\{\\mathcal{D}_{/\\mathcal{T}_0}\\} = \\{\\mathcal{D}_{/\\mathcal{T}_1}\\} + \\{\\mathcal{D}_e\\}
-+ \\{\\mathcal{D}_c\\}`. In the rod's reference the bead is driven outwards by the inertia force
-of entrainment :math:`m\\omega^2 r\\,\\mathbf{i}_1`, and the rod must push it sideways to balance the
-inertia force of Coriolis :math:`-2m\\omega\\dot r\\,\\mathbf{j}_1`.
+:math:`\\{\\mathcal{D}_{/\\mathcal{T}_0}\\} = \\{\\mathcal{D}_{/\\mathcal{T}_1}\\}
++ \\{\\mathcal{D}_e\\} + \\{\\mathcal{D}_c\\}`. In the rod's reference the bead is driven
+outwards by the inertia force of entrainment :math:`m\\omega^2 r\\,\\mathbf{i}_1`, and the rod
+must push it sideways to balance the inertia force of Coriolis
+:math:`-2m\\omega\\dot r\\,\\mathbf{j}_1`.
 """
 
 # %%

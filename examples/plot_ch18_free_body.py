@@ -22,7 +22,6 @@ Euler angles then give a **regular precession**: :math:`\\theta` constant,
 # ---------------------------------------------------------------
 import matplotlib.pyplot as plt
 import numpy as np
-import sympy as sp
 
 import rigidmech as rm
 
@@ -73,7 +72,7 @@ for k, unit in enumerate((R0.i, R0.j, R0.k)):
     series = np.asarray(sim.evaluate(sigma_G.dot(unit)), dtype=float)
     expected = sigma if k == 2 else 0.0
     assert np.allclose(series, expected, atol=1e-9), k
-print("sigma(G) = (0, 0, %.3f) kg m^2/s all along the flight" % sigma)
+print(f"sigma(G) = (0, 0, {sigma:.3f}) kg m^2/s all along the flight")
 
 # %%
 # The flight

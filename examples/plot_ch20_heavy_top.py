@@ -77,7 +77,8 @@ gyro = values["m"] * values["g"] * values["l"] / (values["C"] * spin)
 print(f"mean precession rate {mean_rate:.4f} rad/s, gyroscopic approximation {gyro:.4f} rad/s")
 assert abs(mean_rate - gyro) < 0.02 * gyro
 A_O = values["A"] + values["m"] * values["l"] ** 2
-dip = 2 * A_O * values["m"] * values["g"] * values["l"] * np.sin(np.pi / 3) / (values["C"] * spin) ** 2
+mgl = values["m"] * values["g"] * values["l"]
+dip = 2 * A_O * mgl * np.sin(np.pi / 3) / (values["C"] * spin) ** 2
 print(f"largest dip of the axis {np.ptp(sim.q[1]):.3e} rad, approximation {dip:.3e} rad")
 assert abs(np.ptp(sim.q[1]) - dip) < 0.05 * dip
 

@@ -86,7 +86,7 @@ for tab, expected in ((tableaux.EULER, -2.0), (tableaux.HEUN, -2.0), (tableaux.R
 re, im = np.meshgrid(np.linspace(-5, 1.5, 261), np.linspace(-4, 4, 321))
 fig, ax = plt.subplots(figsize=(7, 6), constrained_layout=True)
 colors = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
-for tab, color in zip(methods, colors):
+for tab, color in zip(methods, colors, strict=True):
     modulus = np.abs(stability_function(tab, re + 1j * im))
     ax.contourf(re, im, modulus, levels=[0, 1], colors=[color], alpha=0.12)
     ax.contour(re, im, modulus, levels=[1], colors=[color], linewidths=1.6)
