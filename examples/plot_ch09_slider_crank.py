@@ -76,5 +76,6 @@ for n, p in pts.items():
     ax.annotate(n, p, textcoords="offset points", xytext=(6, 6))
 ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal",
        title="Slider-crank, r = 0.1 m, L = 0.35 m, q = 50 degrees")
-ax.legend(loc="lower right")
+ax.margins(0.12)
+ax.legend(loc="upper left")
 plt.show()

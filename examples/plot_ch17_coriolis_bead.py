@@ -95,5 +95,6 @@ ax.plot([], [], color="gray", lw=0.8, label="rod")
 ax.plot([], [], color="tab:red", label=r"action of the rod $2m\omega\dot r\,\mathbf{j}_1$")
 ax.set(xlabel="x (m)", ylabel="y (m)", aspect="equal",
        title=r"Bead on a rod turning at $\omega$ = 2 rad/s")
+ax.set(xlim=(-0.6, 0.2), ylim=(-0.05, 0.45))  # room for the arrows (quiver does not autoscale)
 ax.legend(loc="lower left")
 plt.show()

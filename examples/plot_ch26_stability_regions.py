@@ -81,8 +81,9 @@ for tab, expected in ((tableaux.EULER, -2.0), (tableaux.HEUN, -2.0), (tableaux.R
     assert abs(stable.min() - expected) < 1e-3, tab.name
 
 # %%
-# The regions |R(z)| <= 1
-# -----------------------
+# The regions of absolute stability
+# ----------------------------------
+# Where :math:`|R(z)| \le 1`, shaded, for each method.
 re, im = np.meshgrid(np.linspace(-5, 1.5, 261), np.linspace(-4, 4, 321))
 fig, ax = plt.subplots(figsize=(7, 6), constrained_layout=True)
 colors = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
@@ -90,7 +91,8 @@ for tab, color in zip(methods, colors, strict=True):
     modulus = np.abs(stability_function(tab, re + 1j * im))
     ax.contourf(re, im, modulus, levels=[0, 1], colors=[color], alpha=0.12)
     ax.contour(re, im, modulus, levels=[1], colors=[color], linewidths=1.6)
-    ax.plot([], [], color=color, label=f"{tab.name} (order {tab.order})")
+    same = " = heun's region" if tab.name == "midpoint" else ""   # same R(z) = 1 + z + z^2/2
+    ax.plot([], [], color=color, label=f"{tab.name} (order {tab.order}){same}")
 ax.axhline(0, color="k", lw=0.6)
 ax.axvline(0, color="k", lw=0.6)
 ax.set(xlabel=r"Re$(h\lambda)$", ylabel=r"Im$(h\lambda)$", aspect="equal",
