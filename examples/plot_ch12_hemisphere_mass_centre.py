@@ -4,8 +4,8 @@ Mass centre of a solid hemisphere (ch. 12.4.1, 12.4.3)
 
 The mass centre :math:`G` of a material system is the measure centre of its mass
 distribution (ch. 12.3.1): :math:`\\mathbf{OG} = \\frac{1}{m}\\int_D \\rho\\,\\mathbf{OP}\\,dV`.
-For a homogeneous solid hemisphere of radius :math:`R` (ch. 12.4.1), the plane of symmetry
-containing the axis puts :math:`G` on the axis (ch. 12.3.4), and the integral in spherical
+For a homogeneous solid hemisphere of radius :math:`R` (ch. 12.4.1), the planes of symmetry
+containing the axis put :math:`G` on the axis (ch. 12.3.4), and the integral in spherical
 coordinates gives :math:`OG = 3R/8` from the centre of the flat face. A non-homogeneous
 solid (the subject of ch. 12.4.3) is treated the same way: here the hemisphere with a density
 that grows with the height, :math:`\\rho = \\rho_0 (1 + z/R)`.
