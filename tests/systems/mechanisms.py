@@ -12,9 +12,10 @@ def bar(name, frame, length, origin, m):
                    inertia=rm.inertia.rod(m, length, axis=frame.i, centre=G))
 
 
-def four_bar(lengths=(L0, L1, L2, L3), gravity=True):
+def four_bar(lengths=(L0, L1, L2, L3), gravity=True, stabilization=(5.0, 5.0)):
     """Crank O-B (q1), coupler B-C (q2, relative to the crank), rocker D-C (q3), ground
-    O-D along i; the loop is closed by the pivot at C (the coupler's C meets the rocker's)."""
+    O-D along i; the loop is closed by the pivot at C (the coupler's C meets the rocker's).
+    A length may be a sympy symbol; `stabilization` is Baumgarte's (alpha, beta)."""
     l0, l1, l2, l3 = lengths
     q1, q2, q3 = rm.coordinates("q1 q2 q3")
     m, g = rm.constants("m g", positive=True)
@@ -27,7 +28,7 @@ def four_bar(lengths=(L0, L1, L2, L3), gravity=True):
     R3 = R0.rotated("R3", about=k, angle=q3, origin=D)
     crank, coupler, rocker = (bar("crank", R1, l1, R0.origin, m), bar("coupler", R2, l2, B, m),
                               bar("rocker", R3, l3, D, m))
-    s = System(galilean=R0)
+    s = System(galilean=R0, stabilization=stabilization)
     s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=k))
     s.connect(crank, coupler, rm.joints.Pivot(at=B, axis=k))
     s.connect(R0, rocker, rm.joints.Pivot(at=D, axis=k))

@@ -23,7 +23,7 @@ from ..ode._progress import Progress, interactive
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 
-__all__ = ["run"]
+__all__ = ["canonical_method", "run"]
 
 #: seconds of wall time before a progress bar appears
 PROGRESS_DELAY = 2.0
@@ -245,6 +245,16 @@ def _loop_options(options, eqs, method, project, progress, span, values):
     return prog
 
 
+def canonical_method(method):
+    """The registered name of `method` (lower case, an alias such as ``"rk45"`` resolved to
+    its method ``"dopri5"``): one name for every decision of a run made by method (projection,
+    fixed step, second order), so that an alias or another case behaves exactly as its
+    method."""
+    from ..ode import _registry
+
+    return _registry.get(method).name
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -255,6 +265,7 @@ def _takes(method, option):
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
         first_step, max_step, dense_output, progress, values, notes, project=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
+    method = canonical_method(method)
     t0, t1 = float(t[0]), float(t[1])
     kinds = {k: ode.methods(k) for k in ("fixed", "second_order")}
     fixed = method in kinds["fixed"] + kinds["second_order"]

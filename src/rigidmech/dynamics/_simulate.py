@@ -24,7 +24,7 @@ from .. import ode
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ._compiled import acceleration_only
 from ._compiled import coordinate_name as _name
-from ._run import merge_values, run
+from ._run import canonical_method, merge_values, run
 from ._singularities import warn_near_singularities
 
 __all__ = ["check_simulation_inputs", "initial", "simulate"]
@@ -44,7 +44,8 @@ def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, even
     y0 = np.concatenate((q0, u0))
     if not isinstance(method, str):
         raise ArgumentTypeError(f"`method` must be a method name; got {method!r}.")
-    if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
+    method = canonical_method(method)
+    if method in ode.methods("second_order") + ode.methods("adaptive_second_order"):
         fun = acceleration_only(eqs, method, values)
     else:
         fun = eqs.rhs(**values)
