@@ -75,3 +75,97 @@ def test_constant_only_in_closure_conditions_is_a_parameter():
     assert np.abs(sim.evaluate(phi)).max() < 1e-12
     with pytest.raises(rm.errors.ArgumentError, match="L0"):
         eqs.simulate(t=(0, 1), q0=list(q0.values()), **VALUES)
+
+
+# -- item 2: the initial state on the constraints -------------------------------------------
+def test_loop_that_cannot_close_is_refused():
+    """crank, coupler, rocker 1, 1, 1 and ground 4: simulate(q0=[0, 0, pi]) ran to
+    status 'finished' with q(0) ~ (-3e15, -2e15, 8e15); assemble refuses it, so must
+    simulate."""
+    s, *_ = four_bar((4.0, 1.0, 1.0, 1.0))
+    eqs = s.equations_of_motion()
+    with pytest.raises(rm.errors.ConnectionError_, match=r"`q0`.*cannot be closed"):
+        eqs.simulate(t=(0, 0.1), q0=[0.0, 0.0, np.pi], **VALUES)
+
+
+def test_q0_off_the_loop_keeps_the_independent_coordinates(bar4):
+    """q0 = (1.0, 0.5, 1.5) off the loop was moved to another branch, the crank angle
+    included: (-1.58, 2.39, 0.08). The first coordinate (the crank) is kept by default, the
+    dependent ones moved by Newton's method from the values given, as System.assemble does
+    with independent=["q1"]; the simulation reports q0 given, q0 used and a note."""
+    s, eqs, _, _ = bar4
+    sim = eqs.simulate(t=(0, 0.5), q0=[1.0, 0.5, 1.5], u0=[1.0, 0.0, 0.0], n_output=6,
+                       **VALUES)
+    q_ref, u_ref = s.assemble({"q1": 1.0, "q2": 0.5, "q3": 1.5}, independent=["q1"],
+                              rates={"q1": 1.0}, **VALUES)
+    assert sim.q[0, 0] == 1.0 and sim.u[0, 0] == 1.0
+    np.testing.assert_allclose(sim.q[:, 0], list(q_ref.values()), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(sim.u[:, 0], list(u_ref.values()), rtol=0, atol=1e-12)
+    assert sim.q0_given.tolist() == [1.0, 0.5, 1.5]
+    assert sim.u0_given.tolist() == [1.0, 0.0, 0.0]
+    note = " ".join(sim.notes)
+    assert "`q0`" in note and "q2" in note and "q3" in note and "kept: q1" in note
+    assert closure_residual(s, sim) < 1e-12
+
+
+def test_q0_off_the_loop_with_independent(bar4):
+    s, eqs, _, _ = bar4
+    sim = eqs.simulate(t=(0, 0.1), q0=[1.0, 0.5, 1.5], independent=["q3"], n_output=2,
+                       **VALUES)
+    q_ref, _ = s.assemble({"q1": 1.0, "q2": 0.5, "q3": 1.5}, independent=["q3"], **VALUES)
+    assert sim.q[2, 0] == 1.5
+    np.testing.assert_allclose(sim.q[:, 0], list(q_ref.values()), rtol=0, atol=1e-12)
+
+
+def test_q0_dict_keeps_the_coordinates_named(bar4):
+    """A dict q0 names the coordinates the user chose: those are kept, the others (a guess
+    of 0) are the dependent ones first."""
+    s, eqs, _, _ = bar4
+    sim = eqs.simulate(t=(0, 0.1), q0={"q2": -0.5, "q3": 1.5}, n_output=2, **VALUES)
+    assert sim.q[1, 0] == -0.5
+    assert "kept: q2" in " ".join(sim.notes)
+    assert closure_residual(s, sim) < 1e-12
+
+
+def test_q0_on_the_loop_is_used_as_given(bar4):
+    s, eqs, q0, u0 = bar4
+    sim = eqs.simulate(t=(0, 0.1), q0=q0, u0=u0, n_output=2, **VALUES)
+    assert sim.notes == () and sim.q[:, 0].tolist() == q0 and sim.u[:, 0].tolist() == u0
+
+
+def test_independent_without_constraints_is_refused():
+    x = rm.coordinates("x")
+    eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[-x]]))
+    with pytest.raises(rm.errors.ArgumentError, match="`independent`.*no constraints"):
+        eqs.simulate(t=(0, 1), q0=[1.0], independent=["x"])
+
+
+def _line():
+    """x on the line x = 0 (y free): Φ = x exactly, the boundary testable to the last bit."""
+    from rigidmech.dynamics import Constraints
+
+    x, y = rm.coordinates("x y")
+    c = Constraints((x, y), [("line", x.diff(rm.t), x)])
+    return rm.EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+                                forcing=sp.Matrix([0, -1]), constraints=c)
+
+
+@pytest.mark.parametrize("x0, moved", [(1e-9, False), (1e-9 * (1 - 1e-6), False),
+                                       (1e-9 * (1 + 1e-6), True), (-1e-9, False),
+                                       (1e-9 * (1 + 1e-12), True)])
+def test_on_the_constraints_boundary(x0, moved):
+    """A state is on the constraints when |Φ| <= 1e-9 (and |A q' + a| <= 1e-9), the
+    tolerance System.assemble reaches: used as given; beyond, moved (with a note)."""
+    sim = _line().simulate(t=(0, 0.1), q0=[x0, 2.0], n_output=2)
+    assert (sim.q[0, 0] == 0.0 and len(sim.notes) == 1) if moved else \
+        (sim.notes == () and sim.q0_given[0] == x0)
+    assert sim.q[1, 0] == 2.0
+
+
+@pytest.mark.parametrize("v0, moved", [(1e-9, False), (1e-9 * (1 + 1e-6), True)])
+def test_rates_on_the_constraints_boundary(v0, moved):
+    sim = _line().simulate(t=(0, 0.1), q0=[0.0, 2.0], u0=[v0, 3.0], n_output=2,
+                           project=False)
+    assert (sim.u[0, 0] == 0.0 and "`u0`" in sim.notes[0]) if moved else sim.notes == ()
+    assert sim.u[1, 0] == 3.0

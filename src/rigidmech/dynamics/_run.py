@@ -116,15 +116,11 @@ PROJECTION_ITERATIONS = 3
 PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau")
 
 
-def projector(eqs, values):
-    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
-    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
-    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
-    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
-    (exact: c is linear in q'). None if `eqs` has no constraints."""
+def closure_functions(eqs):
+    """(rows of Φ, Φ(t, q, *params, *inputs), A(t, q, ...), c(t, q, u, ...)) of the
+    constraints of `eqs`, compiled once (cached): Φ the holonomic rows (None if there are
+    none), A the Jacobian of every row, c = A q' + a the velocity residual."""
     c = eqs.constraints
-    if c is None:
-        return None
     q_s, u_s, _, w_s, rule = eqs._stand_ins()
     key = "projector"
     if key not in eqs._cache:
@@ -141,7 +137,19 @@ def projector(eqs, values):
                                 name="closure") if hol else None,
             compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
             compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
-    hol, phi_f, A_f, c_f = eqs._cache[key]
+    return eqs._cache[key]
+
+
+def projector(eqs, values):
+    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
+    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
+    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
+    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
+    (exact: c is linear in q'). None if `eqs` has no constraints."""
+    if eqs.constraints is None:
+        return None
+    q_s = eqs._stand_ins()[0]
+    hol, phi_f, A_f, c_f = closure_functions(eqs)
     consts, inputs, _ = eqs._values(values)
     n = len(q_s)
     solve, dot = np.linalg.solve, np.dot
@@ -263,7 +271,8 @@ def _takes(method, option):
 
 
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
-        first_step, max_step, dense_output, progress, values, notes, project=None):
+        first_step, max_step, dense_output, progress, values, notes, project=None,
+        given=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
     method = canonical_method(method)
     t0, t1 = float(t[0]), float(t[1])
@@ -327,7 +336,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                           f"{t_at!r}; method {method!r} keeps no partial result: only the "
                           "initial state is kept.", t=[t0],
                           y=np.asarray(y0, dtype=float)[:, None], t_events=[], method=method,
-                          t_stop=t0)
+                          t_stop=t0, given=given)
     finally:
         fun.trouble, trouble = None, fun.trouble
         if prog is not None:
@@ -349,13 +358,15 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]
     if options.get("project") is not None and len(t_out):  # samples inside steps too
         y_out = _project_samples(options["project"], t_out, y_out)
+        if t_out[0] == t0:  # the run started from y0 itself
+            y_out[:, 0] = y0
     if fixed and stride > 1:
         keep = np.arange(0, len(t_out), stride)
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
-                     t_stop=t_stop, status=status)
+                     t_stop=t_stop, status=status, given=given)
     if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
             and sim.energy_not_conserved() is None):
         drift = sim.energy_drift()
@@ -364,5 +375,6 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                 f"the energy changed by {drift:.3g} times its scale T(0) + |V(0)| with the "
                 f"fixed step {step!r}: the step is probably too large for {method!r} (an "
                 "unstable explicit method grows without bound); the motion is not to be "
-                "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status)
+                "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status,
+                given=given)
     return sim

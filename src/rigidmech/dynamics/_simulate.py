@@ -24,6 +24,7 @@ from .. import ode
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ._compiled import acceleration_only
 from ._compiled import coordinate_name as _name
+from ._initial import on_constraints
 from ._run import canonical_method, merge_values, run
 from ._singularities import warn_near_singularities
 
@@ -32,15 +33,20 @@ __all__ = ["check_simulation_inputs", "initial", "simulate"]
 
 def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
              first_step, max_step, dense_output, progress, project, raise_on_failure, params,
-             values):
+             values, independent=None):
     """Integrate ``eqs`` from (q0, u0) over ``t`` (see :meth:`EquationsOfMotion.simulate
     <rigidmech.dynamics.EquationsOfMotion.simulate>`, which documents the arguments)."""
     values = merge_values(params, values)
     inputs = {_name(w) for w in eqs._inputs}
     check_simulation_inputs(len(eqs._q), t, q0, u0, method, n_output,
                              {k: v for k, v in values.items() if k not in inputs})
+    named = ({k if isinstance(k, str) else _name(k) for k in q0} if isinstance(q0, dict)
+             else set())
     q0 = initial(eqs, q0, "q0", default_zero=False)
     u0 = initial(eqs, u0, "u0", default_zero=True)
+    given = (q0, u0)
+    q0, u0, moved = on_constraints(eqs, float(t[0]), q0, u0, independent=independent,
+                                   named=named, values=values)
     y0 = np.concatenate((q0, u0))
     if not isinstance(method, str):
         raise ArgumentTypeError(f"`method` must be a method name; got {method!r}.")
@@ -54,7 +60,8 @@ def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, even
     sim = run(eqs, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
               n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
               first_step=first_step, max_step=max_step, dense_output=dense_output,
-              progress=progress, values=values, notes=fun.notes, project=project)
+              progress=progress, values=values, notes=(*fun.notes, *moved), project=project,
+              given=given)
     if sim.result is not None and sim.t.size:
         warn_near_singularities(eqs.singular_sets, eqs._coordinates, sim.result, values)
     return sim.check() if raise_on_failure else sim

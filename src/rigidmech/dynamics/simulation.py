@@ -113,10 +113,11 @@ class Simulation:
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
-                 "message", "_names", "_t_events", "_method", "_t_stop")
+                 "message", "_names", "_t_events", "_method", "_t_stop", "_given")
 
     def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
-                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None):
+                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None,
+                 given=None):
         self._eqs = eqs
         self.result = result
         self._names = tuple(names) if names is not None else tuple(eqs.names)
@@ -135,6 +136,8 @@ class Simulation:
         self._method = method if method is not None else (result.method if result else None)
         self._t_stop = float(t_stop) if t_stop is not None else (
             float(self.t[-1]) if self.t.size else math.nan)
+        self._given = None if given is None else tuple(np.array(g, dtype=float)
+                                                       for g in given)
 
     # -- what the run was ---------------------------------------------------------------
     @property
@@ -179,6 +182,33 @@ class Simulation:
         ('failed', [0.0], True)
         """
         return self._t_stop
+
+    @property
+    def q0_given(self):
+        """The initial coordinates as given to ``simulate`` (an array in the order of
+        :attr:`names`; None for a simulation loaded from a file). The run starts from
+        ``q[:, 0]``, which differs when the values given were off the constraints and were
+        assembled on them (a note says what moved; see :meth:`EquationsOfMotion.simulate`'s
+        ``independent``).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> from rigidmech.dynamics import Constraints
+        >>> x, y = rm.coordinates("x y")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+        ...     forcing=sp.Matrix([0, -1]), constraints=Constraints((x, y),
+        ...     [("line", x.diff(rm.t) - y.diff(rm.t), x - y)]))
+        >>> sim = eqs.simulate(t=(0, 1), q0=[1.0, 0.0], n_output=2, independent=["x"])
+        >>> sim.q0_given.tolist(), sim.q[:, 0].tolist()
+        ([1.0, 0.0], [1.0, 1.0])
+        """
+        return None if self._given is None else self._given[0].copy()
+
+    @property
+    def u0_given(self):
+        """The initial rates as given to ``simulate`` (see :attr:`q0_given`)."""
+        return None if self._given is None else self._given[1].copy()
 
     @property
     def t_events(self) -> list:
