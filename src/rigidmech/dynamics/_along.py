@@ -152,16 +152,15 @@ def energy(sim):
 
 
 def energy_scale(sim) -> float:
-    """The scale of the energy drift, ``T(0) + |V(0)|`` (see :meth:`Simulation.energy_scale
-    <rigidmech.dynamics.Simulation.energy_scale>`)."""
+    """The scale of the energy drift, ``max(T(0) + |V(0)|, max_t T)`` (see
+    :meth:`Simulation.energy_scale <rigidmech.dynamics.Simulation.energy_scale>`)."""
     eqs = need_equations(sim, "energy_scale()")
     e = energy(sim)
     kinetic = getattr(eqs, "kinetic_energy", None)
     if kinetic is not None:
-        T = evaluate(sim, kinetic)
-        s = np.abs(T) + np.abs(e - T)
-    else:
-        s = np.abs(e)
+        T = np.abs(evaluate(sim, kinetic))
+        return float(max(T[0] + abs(e[0] - T[0]), np.max(T)))
+    s = np.abs(e)
     scale = float(s[0])
     if scale == 0.0:
         scale = float(np.max(s))

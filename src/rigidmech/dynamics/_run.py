@@ -372,7 +372,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         drift = sim.energy_drift()
         if not drift <= UNSTABLE_DRIFT:  # a conservative system: E should stay constant
             sim = Simulation(eqs, res, values, elapsed, (*notes, (
-                f"the energy changed by {drift:.3g} times its scale T(0) + |V(0)| with the "
+                f"the energy changed by {drift:.3g} times its scale (energy_scale()) with the "
                 f"fixed step {step!r}: the step is probably too large for {method!r} (an "
                 "unstable explicit method grows without bound); the motion is not to be "
                 "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status,

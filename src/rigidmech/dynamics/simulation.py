@@ -312,11 +312,13 @@ class Simulation:
         return _along.energy(self)
 
     def energy_scale(self) -> float:
-        """The scale of :meth:`energy_drift`: ``T(0) + |V(0)|``, the kinetic energy plus the
-        magnitude of the potential energy at the start (``V = E - T``). If that is 0 (a
-        motion starting at rest where V = 0) it is ``max_t (T + |V|)`` over the samples; when
-        the equations do not know their kinetic energy (written by hand), ``|E(0)|`` then
-        ``max_t |E|``.
+        """The scale of :meth:`energy_drift`, the natural magnitude of the energy along the
+        run: the larger of ``T(0) + |V(0)|`` (the kinetic energy plus the magnitude of the
+        potential energy at the start, ``V = E - T``) and ``max_t T`` over the samples (the
+        largest kinetic energy the motion reaches: a body released at rest where V = 0
+        turns its potential energy into T, which is then the energy at stake, m g L / 2 for
+        a rod of length L released horizontal). When the equations do not know their kinetic
+        energy (written by hand): ``|E(0)|``, or ``max_t |E|`` if that is 0.
 
         Examples
         --------
@@ -333,10 +335,10 @@ class Simulation:
         """Largest change of the total energy along the motion, relative to ``scale``:
         ``max_t |E(t) - E(0)| / scale``.
 
-        ``scale`` defaults to :meth:`energy_scale` (``T(0) + |V(0)|``): the drift then reads
-        as a relative error of the energy that does not depend on where V = 0 was put nor
-        saturate on a blow-up. If the scale is 0 (nothing moves, V = 0), the drift is 0 if E
-        stays 0, infinite otherwise. The energy is evaluated at the samples :attr:`t` (see
+        ``scale`` defaults to :meth:`energy_scale` (``max(T(0) + |V(0)|, max_t T)``): the
+        drift then reads as a relative error of the energy at stake in the run, also for a
+        motion released where T + V = 0. If the scale is 0 (nothing moves, V = 0), the drift
+        is 0 if E stays 0, infinite otherwise. The energy is evaluated at the samples :attr:`t` (see
         :meth:`EquationsOfMotion.simulate` for their accuracy).
 
         Examples
