@@ -10,12 +10,13 @@ move little), the **independent** ones kept, with their rates; the dependent rat
 the velocity conditions. The independent coordinates are the caller's ``independent``, else:
 the dependent ones are taken, among the coordinates whose columns of the constraint Jacobian A
 add to its rank (A at a generic configuration, so that an accidental alignment of the values
-given, such as a coupler parallel to the rocker, does not decide), first among those a dict ``q0`` does not name (their 0 is only a
-guess), then from the last coordinate backwards (the coordinates of a tree are listed from the
-ground outwards: the last ones are those of the bodies that close the loop, the first ones
-the driving crank). A loop that cannot be closed is refused (``ConnectionError_``), as
-``assemble`` refuses it. What was moved is said in a note of the simulation, which keeps the
-values given (:attr:`Simulation.q0_given <rigidmech.dynamics.Simulation.q0_given>`).
+given, such as a coupler parallel to the rocker, does not decide), first among those a dict
+``q0`` does not name (their 0 is only a guess), then from the last coordinate backwards
+(the coordinates of a tree are listed from the ground outwards: the last ones are those of the
+bodies that close the loop, the first ones the driving crank). A loop that cannot be closed
+is refused (``ConnectionError_``), as ``assemble`` refuses it. What was moved is said in a
+note of the simulation, which keeps the values given
+(:attr:`Simulation.q0_given <rigidmech.dynamics.Simulation.q0_given>`).
 
 Examples
 --------

@@ -94,8 +94,9 @@ class RunReport:
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
         ``max |E(t) - E(0)| / scale`` along the motion (the scale of
-        :meth:`Simulation.energy_scale`; None without a potential energy, or when T + V is not conserved by an exact motion: explicit time dependence,
-        dampers; see :meth:`Simulation.energy_not_conserved`).
+        :meth:`Simulation.energy_scale`; None without a potential energy, or when T + V is
+        not conserved by an exact motion: explicit time dependence, dampers; see
+        :meth:`Simulation.energy_not_conserved`).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
