@@ -197,3 +197,25 @@ def test_energy_drift_of_a_rod_released_horizontal():
     assert sim.energy_scale() == pytest.approx(T.max(), rel=1e-12)
     assert sim.energy_scale() == pytest.approx(2.0 * 9.81 * 1.5 / 2, rel=1e-4)
     assert sim.energy_drift() < 1e-10
+
+
+# -- item 10: the real cause of a missing energy --------------------------------------------
+def test_energy_drift_names_the_action_without_potential():
+    """A bar on a pivot driven by a constant motor couple, held by a spring: energy_drift()
+    said the actions "have no potential energy" while the spring has one. The couple does
+    work: it is named, with the way out (energy_balance)."""
+    q = rm.coordinates("q")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    G = R0.origin.moved("G", R1.i)
+    crank = rm.Body("crank", frame=R1, mass=1, centre=G,
+                    inertia=rm.inertia.rod(1, 2, axis=R1.i, centre=G))
+    s = rm.System(galilean=R0)
+    s.connect(R0, crank, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.act(rm.Spring(4, 0, a=R0.point("A", 1, 0, 0), b=G, on_b=crank))
+    s.act(rm.actions.Couple(on=crank, moment=0.5 * R0.k))
+    sim = s.equations_of_motion().simulate(t=(0, 1), q0=[0.0], n_output=401)
+    with pytest.raises(rm.errors.ArgumentError,
+                       match=r"Couple\(on=crank.*no potential energy.*energy_balance"):
+        sim.energy_drift()
+    assert np.abs(sim.energy_balance()).max() < 1e-6

@@ -142,12 +142,31 @@ def connection_action(sim, parent, child, basis, system):
     return {k: values[i, 0] for i, k in enumerate(keys)}
 
 
+def _without_potential(eqs):
+    """Why ``eqs`` has no mechanical energy, in words: the actions of its system that have no
+    potential energy, or that the equations were given none."""
+    system = getattr(eqs, "system", None)
+    if system is None:
+        return "these equations were given no energy (energy=None)"
+    solids = (system._ground, *system._bodies)
+    actions = [a for a in system.actions
+               if a.potential_energy(solids, system._galilean) is None]
+    if not actions:
+        return "the system has changed since these equations were derived"
+    names = ", ".join(repr(a) for a in actions)
+    return (f"the action{'s' if len(actions) > 1 else ''} {names} ha"
+            f"{'ve' if len(actions) > 1 else 's'} no potential energy (a couple or a force "
+            "that does work without deriving from a potential), so T + V is not defined")
+
+
 def energy(sim):
     """T + V along the motion."""
-    e = need_equations(sim, "energy()").energy
+    eqs = need_equations(sim, "energy()")
+    e = eqs.energy
     if e is None:
-        raise ArgumentError("the system's actions have no potential energy: no energy "
-                            "to follow.")
+        raise ArgumentError(
+            f"no mechanical energy to follow: {_without_potential(eqs)}. Use "
+            "energy_balance(), which counts the work of every action.")
     return evaluate(sim, e)
 
 
