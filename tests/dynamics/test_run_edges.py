@@ -219,3 +219,44 @@ def test_energy_drift_names_the_action_without_potential():
                        match=r"Couple\(on=crank.*no potential energy.*energy_balance"):
         sim.energy_drift()
     assert np.abs(sim.energy_balance()).max() < 1e-6
+
+
+# -- item 12: ReducedEquations.simulate -----------------------------------------------------
+def test_reduced_simulate_matches_the_augmented_run(bar4):
+    """ReducedEquations had no simulate: the user built the state for ode.solve by hand and
+    lost the projection. Its run (same options, same result type) matches the multiplier
+    form's to the tolerance of both (rtol 1e-10), keeps the loop closed (projection) and the
+    energy (conservative four-bar)."""
+    s, eqs, q0, u0 = bar4
+    red = eqs.reduced(independent=["q1"])
+    ref = eqs.simulate(t=(0, 2), q0=q0, u0=u0, rtol=1e-11, atol=1e-12, n_output=21, **VALUES)
+    sim = red.simulate(t=(0, 2), q0=q0, u0=u0, rtol=1e-11, atol=1e-12, n_output=21, **VALUES)
+    assert isinstance(sim, rm.dynamics.Simulation) and sim.status == "finished"
+    assert sim.q.shape == sim.u.shape == (3, 21) and sim.names == ("q1", "q2", "q3")
+    np.testing.assert_allclose(sim.q, ref.q, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(sim.u, ref.u, rtol=0, atol=1e-8)
+    assert closure_residual(s, sim) < 1e-12
+    assert sim.energy_drift() < 1e-9
+    phi = sp.Matrix([v for _, v, _ in s.closure_conditions()])
+    assert np.abs(sim.evaluate(phi)).max() < 1e-12       # the rates on A q' + a = 0
+
+
+def test_reduced_simulate_assembles_q0_keeping_its_independent(bar4):
+    s, eqs, _, _ = bar4
+    red = eqs.reduced(independent=["q1"])
+    sim = red.simulate(t=(0, 0.2), q0=[1.0, 0.5, 1.5], u0=[1.0, 0.0, 0.0], n_output=3,
+                       **VALUES)
+    assert sim.q[0, 0] == 1.0 and sim.u[0, 0] == 1.0 and sim.notes
+    assert closure_residual(s, sim) < 1e-12
+
+
+def test_reduced_simulate_fixed_step_and_refusals(bar4):
+    s, eqs, q0, u0 = bar4
+    red = eqs.reduced(independent=["q1"])
+    sim = red.simulate(t=(0, 0.5), q0=q0, u0=u0, method="rk4", step=1e-3, n_output=6,
+                       **VALUES)
+    ref = eqs.simulate(t=(0, 0.5), q0=q0, u0=u0, rtol=1e-11, atol=1e-12, n_output=6,
+                       **VALUES)
+    np.testing.assert_allclose(sim.q, ref.q, rtol=0, atol=1e-7)
+    with pytest.raises(rm.errors.ArgumentError, match="`method`.*reduced"):
+        red.simulate(t=(0, 0.5), q0=q0, method="verlet", step=1e-3, **VALUES)

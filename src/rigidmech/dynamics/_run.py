@@ -23,7 +23,7 @@ from ..ode._progress import Progress, interactive
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 
-__all__ = ["canonical_method", "run"]
+__all__ = ["Reduced", "canonical_method", "run"]
 
 #: seconds of wall time before a progress bar appears
 PROGRESS_DELAY = 2.0
@@ -31,12 +31,12 @@ PROGRESS_DELAY = 2.0
 PROGRESS_EVERY = 0.1
 
 
-def _labels(names, second_order):
-    accs = [f"{n}'' (acceleration of {n})" for n in names]
+def _labels(names, second_order, rate_names=None):
+    accs = [f"{n}'' (acceleration of {n})" for n in rate_names or names]
     return accs if second_order else [f"{n}' (rate of {n})" for n in names] + accs
 
 
-def _diagnosis(trouble, culprit, names, second):
+def _diagnosis(trouble, culprit, names, second, rate_names=None):
     """A sentence naming why the right-hand side failed: the error it raised (with its time),
     else the non-finite or complex value the solver found, by coordinate; or ''."""
     if trouble:
@@ -46,12 +46,12 @@ def _diagnosis(trouble, culprit, names, second):
         return ""
     k, value, t = culprit["component"], culprit["value"], culprit["t"]
     if culprit["what"] == "derivative":
-        labels = _labels(names, second)
+        labels = _labels(names, second, rate_names)
         label = labels[k] if k < len(labels) else f"component {k}"
         kind = "has a complex value" if culprit.get("complex") else "is not finite"
         return (f" The right-hand side {kind} ({value}) at t = {t!r}, in the component "
                 f"{label}.")
-    states = list(names) + [f"{n}'" for n in names]
+    states = list(names) + [f"{n}'" for n in rate_names or names]
     label = states[k] if k < len(states) else f"component {k}"
     return f" The state became non-finite ({value}) at t = {t!r}, in the component {label}."
 
@@ -70,9 +70,10 @@ def merge_values(params, values):
     return {**{str(k): v for k, v in params.items()}, **values}
 
 
-def compile_events(eqs, events, values):
+def compile_events(eqs, events, values, full=None):
     """Callables g(t, y) from `events`: callables kept, sympy expressions (or
-    :class:`Event`) compiled once (a non-finite value of one is reported by the solver)."""
+    :class:`Event`) compiled once (a non-finite value of one is reported by the solver);
+    ``full(t, Y)``: the state (q, q') from the run's state (reduced equations)."""
     if events is None:
         return None
     items = list(events) if isinstance(events, list | tuple) else [events]
@@ -103,6 +104,8 @@ def compile_events(eqs, events, values):
 
         def g(t, y, _f=f, _c=consts, _w=inputs):
             w = [v(t) if callable(v) else float(v) for v in _w]
+            if full is not None:
+                y = full(np.array([t]), np.asarray(y, dtype=float)[:, None])[:, 0]
             return float(_f(t, y[:n], y[n:], *_c, *w))
 
         g.terminal, g.direction = spec.terminal, spec.direction
@@ -140,12 +143,14 @@ def closure_functions(eqs):
     return eqs._cache[key]
 
 
-def projector(eqs, values):
+def projector(eqs, values, rates=True):
     """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
     positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
     smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
     decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
-    (exact: c is linear in q'). None if `eqs` has no constraints."""
+    (exact: c is linear in q'); with ``rates=False`` the positions only, the rest of the
+    state kept (the independent speeds of reduced equations, free by construction). None if
+    `eqs` has no constraints."""
     if eqs.constraints is None:
         return None
     q_s = eqs._stand_ins()[0]
@@ -167,6 +172,8 @@ def projector(eqs, values):
                 last = size
                 J = np.asarray(A_f(t, q, *consts, *w), dtype=float)[hol]
                 q -= dot(J.T, solve(dot(J, J.T), r))
+        if not rates:
+            return np.concatenate((q, u))
         A = np.asarray(A_f(t, q, *consts, *w), dtype=float)
         r = np.asarray(c_f(t, q, u, *consts, *w), dtype=float).reshape(-1)
         u = u - dot(A.T, solve(dot(A, A.T), r))
@@ -234,7 +241,19 @@ def _project_samples(project, t, y):
     return out
 
 
-def _loop_options(options, eqs, method, project, progress, span, values):
+class Reduced:
+    """The state of a run of reduced equations (:mod:`rigidmech.dynamics.reduced`): (q, u)
+    with u the rates of the coordinates ``rate_names`` only; ``full(t, Y)`` gives (q, q')
+    for samples Y (columns), ``project`` projects the positions (None without holonomic
+    rows)."""
+
+    __slots__ = ("rate_names", "full", "project")
+
+    def __init__(self, rate_names, full, project):
+        self.rate_names, self.full, self.project = tuple(rate_names), full, project
+
+
+def _loop_options(options, eqs, method, project, progress, span, values, reduced=None):
     """Add to `options` the projection (by default for constrained equations and a method
     of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
     returned, or None) of a run."""
@@ -244,7 +263,8 @@ def _loop_options(options, eqs, method, project, progress, span, values):
         raise ArgumentError(f"`project` needs a method of the solver's loop "
                             f"({', '.join(PROJECTING)}); got method {method!r}.")
     if project and eqs.constraints is not None:
-        options["project"] = projector(eqs, values)
+        options["project"] = (projector(eqs, values) if reduced is None
+                              else reduced.project)
     prog = None
     if callable(progress) or progress is True or (progress is None and interactive()):
         prog = Progress(span, callback=progress if callable(progress) else None,
@@ -272,7 +292,7 @@ def _takes(method, option):
 
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
         first_step, max_step, dense_output, progress, values, notes, project=None,
-        given=None):
+        given=None, reduced=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
     method = canonical_method(method)
     t0, t1 = float(t[0]), float(t[1])
@@ -315,10 +335,12 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
-    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values)
+    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values, reduced)
     chunks = options.pop("chunks", None)
     if chunks is None:
-        options["events"] = compile_events(eqs, events, values)
+        options["events"] = compile_events(eqs, events, values,
+                                           None if reduced is None else reduced.full)
+    full = (lambda _t, y: y) if reduced is None else reduced.full
     fun.trouble = []  # an error of the right-hand side: kept there, nan returned
     start = time.perf_counter()
     try:
@@ -335,7 +357,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                           message=f"The integration was interrupted (Ctrl-C) after t = "
                           f"{t_at!r}; method {method!r} keeps no partial result: only the "
                           "initial state is kept.", t=[t0],
-                          y=np.asarray(y0, dtype=float)[:, None], t_events=[], method=method,
+                          y=full(np.array([t0]), np.asarray(y0, dtype=float)[:, None]),
+                          t_events=[], method=method,
                           t_stop=t0, given=given)
     finally:
         fun.trouble, trouble = None, fun.trouble
@@ -351,7 +374,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         message = (f"The integration was stopped by {who} at t = {t_stop!r}; the samples "
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
-        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second)
+        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second,
+                                       None if reduced is None else reduced.rate_names)
     status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
@@ -365,6 +389,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
+    y_out = full(t_out, y_out)
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
                      t_stop=t_stop, status=status, given=given)
     if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
