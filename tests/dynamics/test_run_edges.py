@@ -260,3 +260,98 @@ def test_reduced_simulate_fixed_step_and_refusals(bar4):
     np.testing.assert_allclose(sim.q, ref.q, rtol=0, atol=1e-7)
     with pytest.raises(rm.errors.ArgumentError, match="`method`.*reduced"):
         red.simulate(t=(0, 0.5), q0=q0, method="verlet", step=1e-3, **VALUES)
+
+
+# -- item 17: a run that stops early keeps the last state it reached ------------------------
+def _oscillator(input_=False):
+    x = rm.coordinates("x")
+    F = sp.Function("F")(rm.t)
+    return rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                                forcing=sp.ImmutableMatrix([[-x + (F if input_ else 0)]]))
+
+
+def _keeps_the_stop(sim):
+    """The last sample is the state reached at t_stop (x = cos t, x' = -sin t)."""
+    assert sim.t[-1] == sim.t_stop and sim.t.size >= 2
+    assert sim.q[0, -1] == pytest.approx(np.cos(sim.t_stop), abs=1e-7)
+    assert sim.u[0, -1] == pytest.approx(-np.sin(sim.t_stop), abs=1e-7)
+
+
+@pytest.mark.parametrize("method", ["dop853", "gbs", "radau"])
+def test_max_steps_keeps_the_state_reached(method):
+    """max_steps stopped the run between two samples: the samples kept ended at t = 0 while
+    the solver had reached t_stop = 1.3 (dop853, 5 steps)."""
+    sim = _oscillator().simulate(t=(0, 10), q0=[1.0], n_output=3, max_steps=5, method=method,
+                                 rtol=1e-10, atol=1e-12)
+    assert sim.status == "failed" and 0 < sim.t_stop < 5
+    _keeps_the_stop(sim)
+
+
+@pytest.mark.parametrize("method", ["rk4", "ab4"])
+def test_fixed_step_interrupt_keeps_the_state_reached(method):
+    """(max_steps is refused before a fixed-step run starts: it knows its number of steps.)"""
+    def force(t):
+        if t > 2.0:
+            raise KeyboardInterrupt
+        return 0.0
+
+    sim = _oscillator(input_=True).simulate(t=(0, 10), q0=[1.0], n_output=3, F=force,
+                                            method=method, step=1e-3)
+    assert sim.status == "interrupted" and sim.t_stop > 1.0
+    _keeps_the_stop(sim)
+
+
+def test_progress_interrupt_keeps_the_state_reached(monkeypatch):
+    from rigidmech.dynamics import _run
+
+    monkeypatch.setattr(_run, "PROGRESS_EVERY", 0.0)   # the callback at every step
+
+    def progress(t):
+        if t > 1.0:
+            raise KeyboardInterrupt
+
+    sim = _oscillator().simulate(t=(0, 10), q0=[1.0], n_output=3, progress=progress,
+                                 rtol=1e-10, atol=1e-12)
+    assert sim.status == "interrupted" and sim.t_stop > 1.0
+    _keeps_the_stop(sim)
+    assert f"{sim.t_stop!r}" in sim.message
+
+
+def test_rhs_interrupt_keeps_the_state_reached(tmp_path):
+    """Ctrl-C raised while the right-hand side runs (here from an input F(t) = 0), then the
+    stopping state saved and loaded back."""
+    def force(t):
+        if t > 2.0:
+            raise KeyboardInterrupt
+        return 0.0
+
+    sim = _oscillator(input_=True).simulate(t=(0, 10), q0=[1.0], n_output=3, F=force,
+                                            rtol=1e-10, atol=1e-12)
+    assert sim.status == "interrupted" and 1.0 < sim.t_stop <= 2.0
+    _keeps_the_stop(sim)
+    back = rm.dynamics.Simulation.load(sim.save(tmp_path / "stopped.npz"))
+    assert back.t[-1] == sim.t_stop and back.q[0, -1] == sim.q[0, -1]
+
+
+def test_failure_keeps_the_last_finite_state():
+    """x'' = -x + F(t) with F = 0 until t = 2, then nan: the run fails (a non-finite
+    right-hand side, named); the last state it reached before, x = cos t, is kept as the last
+    sample (the samples ended at t = 0)."""
+    sim = _oscillator(input_=True).simulate(
+        t=(0, 10), q0=[1.0], n_output=3, F=lambda t: 0.0 if t <= 2.0 else np.nan,
+        rtol=1e-10, atol=1e-12)
+    assert sim.status == "failed" and 1.0 < sim.t_stop <= 2.0
+    _keeps_the_stop(sim)
+    assert "last state reached" in sim.message and "x'' (acceleration of x)" in sim.message
+
+
+def test_plain_step_underflow_keeps_the_samples_only():
+    """A step size underflow at a blow-up (x'' = 2 x^3, x = 1/(1 - t)): the last accepted
+    state jumped the singularity (t = 1 + 5e-10, x = 8e13 > 0): it is not kept as a sample
+    (the message gives it)."""
+    x = rm.coordinates("x")
+    eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+                               forcing=sp.ImmutableMatrix([[2 * x**3]]))
+    sim = eqs.simulate(t=(0, 2), q0=[1.0], u0=[1.0], n_output=5)
+    assert sim.status == "failed" and sim.t[-1] <= 1.0 < sim.t_stop
+    assert "state y = " in sim.message and "last state reached" not in sim.message

@@ -253,6 +253,35 @@ class Reduced:
         self.rate_names, self.full, self.project = tuple(rate_names), full, project
 
 
+def _trusted_stop(res, trouble, max_steps):
+    """Whether the state a stopped run reached is one to keep: after Ctrl-C or the
+    ``progress`` callback, ``max_steps``, or a failure of the right-hand side (an error, a
+    non-finite or complex value: the state it started from passed the error control). Not
+    after a plain step size underflow: the solver could not resolve the motion from there, a
+    singularity its last accepted step may have jumped (x'' = 2 x^3, x = 1/(1 - t), accepted
+    at t = 1 + 5e-10 with x = 8e13 > 0); the message gives that state."""
+    if res.status == 2:
+        return True
+    return res.status == -1 and (bool(trouble) or res.stats.get("culprit") is not None
+                                 or int(getattr(res, "nsteps", 0) or 0) >= max_steps)
+
+
+def _with_stop(res, t_out, y_out, t0, t1):
+    """(t, y, appended): the samples of a run stopped early (a failure, ``max_steps``,
+    Ctrl-C, the ``progress`` callback) followed by the state it reached, ``(t_stop,
+    y_stop)`` (the last accepted step, already projected), when that is beyond the last
+    sample and finite: a stopped run keeps everything it computed."""
+    if res.status not in (-1, 2) or res.t_stop is None or res.y_stop is None:
+        return t_out, y_out, False
+    y_stop = np.asarray(res.y_stop, dtype=float).reshape(-1)
+    t_stop = float(res.t_stop)
+    beyond = (not len(t_out)) or (t_stop - float(t_out[-1])) * (1.0 if t1 >= t0 else -1.0) > 0
+    if not (beyond and np.isfinite(y_stop).all() and y_stop.size == y_out.shape[0]):
+        return t_out, y_out, False
+    return (np.append(t_out, t_stop), np.concatenate((y_out, y_stop[:, None]), axis=1),
+            True)
+
+
 def _loop_options(options, eqs, method, project, progress, span, values, reduced=None):
     """Add to `options` the projection (by default for constrained equations and a method
     of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
@@ -389,6 +418,14 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
+    t_out, y_out, kept = (_with_stop(res, t_out, y_out, t0, t1)
+                          if _trusted_stop(res, trouble, max_steps) else (t_out, y_out, False))
+    if kept:  # said where the message named the samples kept
+        message = (message.replace(" are kept.", ", and the state reached at t = "
+                                   f"{t_stop!r} as the last sample.")
+                   if res.status == 2 else
+                   f"{message} The last state reached (t = {t_stop!r}) is kept as the last "
+                   "sample.")
     y_out = full(t_out, y_out)
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
                      t_stop=t_stop, status=status, given=given)

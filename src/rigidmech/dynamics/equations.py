@@ -411,12 +411,15 @@ class EquationsOfMotion:
         numbers), so memory follows the samples, the multistep ones (``ab4``, ...) keep every
         ``stride``-th point as they go.
 
-        On Ctrl-C (KeyboardInterrupt) the methods built on the solver's one loop (``dop853``,
-        ``dopri5``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``) keep the samples
-        computed so far, status ``"interrupted"``, and so do the one-step fixed-step methods
-        (up to the last chunk done); the others (``adams``, multistep methods, a fixed-step
-        run with events, ``t_eval`` or dense output) keep only the initial state (the
-        message says so).
+        On Ctrl-C (KeyboardInterrupt), a ``progress`` callback that stops the run,
+        ``max_steps`` or a failure of the right-hand side (an error, a non-finite or complex
+        value), the samples computed so far are kept and the state the run reached (its last
+        accepted step, :attr:`Simulation.t_stop`) is appended as the last sample, also with
+        ``t_eval``; the one-step fixed-step methods keep the chunks done and the steps of the
+        interrupted one. After a plain step size underflow (a singularity, which the last
+        accepted step may have jumped) only the samples are kept; the message gives the state.
+        (A method registered by a plug-in that lets Ctrl-C escape keeps only the initial
+        state; the message says so.)
 
         Examples
         --------

@@ -86,7 +86,7 @@ class Simulation:
         How the run ended: the end of the time span reached; a terminal event; a numerical
         failure (:attr:`message` says what and at which t); stopped on request (Ctrl-C, or a
         ``progress`` callback returning False). In every case the samples computed so far
-        are kept.
+        are kept, and the state reached when the run stopped early (see :attr:`t_stop`).
     message : str
         Why the run ended, in words.
     result : rigidmech.ode.OdeResult or None
@@ -168,8 +168,11 @@ class Simulation:
     @property
     def t_stop(self) -> float:
         """The time the integration reached: the end of the span, the terminal event, or the
-        last step accepted before a failure or an interruption (the last sample,
-        ``t[-1]``, may be earlier: samples are taken at the times asked for).
+        last step accepted before a failure or an interruption. A run stopped early (Ctrl-C,
+        the ``progress`` callback, ``max_steps``, a failure of the right-hand side) keeps the
+        state it reached there as its last sample, after the samples asked for: ``t[-1] ==
+        t_stop``; after a plain step size underflow (a singularity the last step may have
+        jumped) the last sample, ``t[-1]``, is earlier and the message gives that state.
 
         Examples
         --------
@@ -178,8 +181,8 @@ class Simulation:
         >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
         ...                            forcing=sp.ImmutableMatrix([[-x]]))
         >>> sim = eqs.simulate(t=(0, 10), q0=[1.0], n_output=3, max_steps=5)
-        >>> sim.status, sim.t.tolist(), 0 < sim.t_stop < 10
-        ('failed', [0.0], True)
+        >>> sim.status, len(sim.t), 0 < sim.t_stop < 10, bool(sim.t[-1] == sim.t_stop)
+        ('failed', 2, True, True)
         """
         return self._t_stop
 
