@@ -19,7 +19,7 @@ from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
-from ..ode._progress import Progress, interactive
+from ..ode._progress import for_run
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 
@@ -294,10 +294,8 @@ def _loop_options(options, eqs, method, project, progress, span, values, reduced
     if project and eqs.constraints is not None:
         options["project"] = (projector(eqs, values) if reduced is None
                               else reduced.project)
-    prog = None
-    if callable(progress) or progress is True or (progress is None and interactive()):
-        prog = Progress(span, callback=progress if callable(progress) else None,
-                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+    prog = for_run(progress, span, every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+    if prog is not None:
         options["progress"] = prog
     return prog
 
