@@ -282,6 +282,24 @@ def _with_stop(res, t_out, y_out, t0, t1):
             True)
 
 
+def _baumgarte_note(eqs, options, t0, t1):
+    """A note when Baumgarte's stabilisation is the run's only drift control (no projection)
+    and cannot act within it: its time scale 1/alpha (alpha = the larger coefficient) longer
+    than the run, alpha |t1 - t0| < 1 (the boundary acts)."""
+    c = eqs.constraints
+    if c is None or options.get("project") is not None:
+        return ()
+    alpha = max(c.stabilization)
+    span = abs(t1 - t0)
+    if not (alpha > 0 and span > 0 and alpha * span < 1.0):
+        return ()
+    return (f"Baumgarte's stabilisation (alpha, beta) = {c.stabilization} acts on the time "
+            f"scale 1/alpha = {1 / alpha:.3g}, longer than this run ({span:.3g}): it cannot "
+            "hold the constraints here. Use a method that projects (dop853, dopri5, bs32, "
+            "gbs, radau: project=True) or System(stabilization=(a, a)) with a about "
+            f"5/{span:.3g} (for a fixed step, keep a * step below 1).",)
+
+
 def _loop_options(options, eqs, method, project, progress, span, values, reduced=None):
     """Add to `options` the projection (by default for constrained equations and a method
     of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
@@ -363,6 +381,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
     prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values, reduced)
+    if reduced is None:  # reduced equations have no Baumgarte terms
+        notes = (*notes, *_baumgarte_note(eqs, options, t0, t1))
     chunks = options.pop("chunks", None)
     if chunks is None:
         options["events"] = compile_events(eqs, events, values,
