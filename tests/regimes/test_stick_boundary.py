@@ -44,3 +44,15 @@ def test_start_sticks_while_within_the_cone(factor, regime):
     # the motion is continuous across the boundary: beyond it by 1e-6, the block slides
     # by about (x0 - 0.15) (1 - cos t) ~ 1e-7 over 1 s
     assert abs(m(1.0)[0] - x0) < 1e-6
+
+
+@pytest.mark.parametrize("factor, regime", [(1.0, "stick"), (1 + 1e-12, "stick"),
+                                            (1 - 1e-6, "stick"), (1 + 1e-6, "slide-")])
+def test_hand_written_oscillator_uses_the_same_rule(factor, regime):
+    """coulomb_oscillator (the hand-written regimes contact_motion is checked against) decided
+    |k x| <= f_s N exactly: x0 = 0.15 (1 + 1e-12) slid there and stuck in contact_motion."""
+    from rigidmech.regimes import coulomb_oscillator
+
+    m = coulomb_oscillator(mass=1.0, stiffness=1.0, friction=Coulomb(LIMIT), normal_force=1.0,
+                           x0=LIMIT * factor, t_end=1.0)
+    assert m.regimes[0] == regime
