@@ -19,6 +19,7 @@ from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
+from ..ode._fixed import step_count
 from ..ode._progress import for_run
 from ..vectors import t as _t
 from .simulation import Event, Simulation
@@ -363,7 +364,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options["step"] = step
         stride = 1
         if t_eval is None:  # samples at the method's own grid points, about n_output of them
-            nsteps = max(1, math.ceil(abs(t1 - t0) / step * (1 - 1e-12)))
+            nsteps = step_count(abs(t1 - t0), step)
             stride = max(1, nsteps // (n_output - 1))
             if stride > 1 and _takes(method, "save_every") and events is None:
                 options["save_every"], stride = stride, 1
