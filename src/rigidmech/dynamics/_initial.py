@@ -125,9 +125,12 @@ def on_constraints(eqs, t0, q0, u0, *, independent, named, values):
                         rates={nm: float(u0[names.index(nm)]) for nm in keep
                                if nm in names}, params=params, **options)
     except ConnectionError_ as exc:
+        off = (f"`q0` = {q0.tolist()} is off the closure conditions (largest residual "
+               f"{off_q:.3g})" if off_q is not None else
+               f"`u0` = {u0.tolist()} is off the velocity conditions (largest residual "
+               f"{off_u:.3g})")
         raise ConnectionError_(
-            f"`q0` = {q0.tolist()} is off the closure conditions (largest residual "
-            f"{off_q if off_q is not None else 0.0:.3g}) and {exc} Kept: "
+            f"{off} and the state cannot be assembled on them: {exc} Kept: "
             f"{', '.join(keep)} (pass `independent=` to keep others).") from None
     q1 = np.array([q[nm] for nm in names])
     u1 = np.array([u[nm] for nm in names])

@@ -94,8 +94,10 @@ class Simulation:
     elapsed : float
         Wall time of the integration, seconds.
     notes : tuple of str
-        What the run noted without failing (values given for constants that dropped out of
-        the equations, which were ignored).
+        What the run noted without failing: values given for constants that dropped out of
+        the equations (ignored); an initial state off the constraints, assembled on them
+        (what moved; see :attr:`q0_given`); Baumgarte's stabilisation unable to act within
+        a run without projection; a fixed step too large for a conservative system.
 
     Examples
     --------
