@@ -131,7 +131,8 @@ def test_keyboard_interrupt_is_one_line(capsys, monkeypatch):
 def test_sigint_to_a_long_run_ends_with_one_line(tmp_path):
     """A real Ctrl-C (SIGINT) sent to ``python -m rigidmech run ... --t-end 1e6`` after it
     started: one line on stderr naming the time reached, exit status 130, no traceback, and
-    the partial output written (the samples computed so far, status "interrupted")."""
+    the partial output written (the samples computed so far and the state reached, status
+    "interrupted")."""
     env = dict(os.environ, PYTHONUNBUFFERED="1")
     proc = subprocess.Popen(
         [sys.executable, "-m", "rigidmech", "run", "double-pendulum", "--t-end", "1e6",
@@ -145,7 +146,8 @@ def test_sigint_to_a_long_run_ends_with_one_line(tmp_path):
     lines = err.strip().splitlines()
     assert len(lines) == 1, err
     found = re.fullmatch(r"rigidmech: interrupted at t = (\S+) \(the samples up to t = (\S+) "
-                         r"are kept, in out\.png and out\.csv\)", lines[0])
+                         r"and the state reached there are kept, in out\.png and out\.csv\)",
+                         lines[0])
     assert found, lines[0]
     t_reached, t_sample = float(found.group(1)), float(found.group(2))
     assert 10 < t_reached < 1e6 and t_reached - 10 <= t_sample <= t_reached
@@ -153,9 +155,10 @@ def test_sigint_to_a_long_run_ends_with_one_line(tmp_path):
     sim = load_simulation(tmp_path / "out.csv")
     assert sim.status == "interrupted"
     assert sim.names == ("theta1", "theta2")
-    assert sim.t[0] == 0.0 and sim.t[-1] == pytest.approx(t_sample, rel=1e-5)
-    assert np.allclose(np.diff(sim.t), 10.0)  # 1e6 / (100001 - 1)
+    assert sim.t[0] == 0.0 and sim.t[-2] == pytest.approx(t_sample, rel=1e-5)
+    assert np.allclose(np.diff(sim.t[:-1]), 10.0)  # 1e6 / (100001 - 1)
     assert sim.t_stop == pytest.approx(t_reached, rel=1e-5)
+    assert sim.t[-1] == sim.t_stop  # the state reached, after the samples (issue 19)
     assert sim.q[:, 0].tolist() == [2.0, -0.2]  # the scene's initial state
 
 

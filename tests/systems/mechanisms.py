@@ -6,11 +6,12 @@ from rigidmech import models
 L0, L1, L2, L3 = models.FOUR_BAR_LENGTHS
 
 
-def four_bar(lengths=(L0, L1, L2, L3), gravity=True):
+def four_bar(lengths=(L0, L1, L2, L3), gravity=True, stabilization=(5.0, 5.0)):
     """Crank O-B (q1), coupler B-C (q2, relative to the crank), rocker D-C (q3), ground
     O-D along i; the loop is closed by the pivot at C (the coupler's C meets the rocker's).
+    A length may be a sympy symbol; `stabilization` is Baumgarte's (alpha, beta).
     Returns ``(system, (q1, q2, q3), (R0, R1, R2, R3), (B, C, C3))``."""
-    m = models.four_bar(lengths, gravity=gravity)
+    m = models.four_bar(lengths, gravity=gravity, stabilization=stabilization)
     return m.system, m.coordinates, m.frames, m.points[:3]
 
 

@@ -164,26 +164,44 @@ def multipliers(sim):
     return -np.asarray(full)[len(eqs.coordinates):]
 
 
+def _without_potential(eqs):
+    """Why ``eqs`` has no mechanical energy, in words: the actions of its system that have no
+    potential energy, or that the equations were given none."""
+    system = getattr(eqs, "system", None)
+    if system is None:
+        return "these equations were given no energy (energy=None)"
+    solids = (system._ground, *system._bodies)
+    actions = [a for a in system.actions
+               if a.potential_energy(solids, system._galilean) is None]
+    if not actions:
+        return "the system has changed since these equations were derived"
+    names = ", ".join(repr(a) for a in actions)
+    return (f"the action{'s' if len(actions) > 1 else ''} {names} ha"
+            f"{'ve' if len(actions) > 1 else 's'} no potential energy (a couple or a force "
+            "that does work without deriving from a potential), so T + V is not defined")
+
+
 def energy(sim):
     """T + V along the motion."""
-    e = need_equations(sim, "energy()").energy
+    eqs = need_equations(sim, "energy()")
+    e = eqs.energy
     if e is None:
-        raise ArgumentError("the system's actions have no potential energy: no energy "
-                            "to follow.")
+        raise ArgumentError(
+            f"no mechanical energy to follow: {_without_potential(eqs)}. Use "
+            "energy_balance(), which counts the work of every action.")
     return evaluate(sim, e)
 
 
 def energy_scale(sim) -> float:
-    """The scale of the energy drift, ``T(0) + |V(0)|`` (see :meth:`Simulation.energy_scale
-    <rigidmech.dynamics.Simulation.energy_scale>`)."""
+    """The scale of the energy drift, ``max(T(0) + |V(0)|, max_t T)`` (see
+    :meth:`Simulation.energy_scale <rigidmech.dynamics.Simulation.energy_scale>`)."""
     eqs = need_equations(sim, "energy_scale()")
     e = energy(sim)
     kinetic = getattr(eqs, "kinetic_energy", None)
     if kinetic is not None:
-        T = evaluate(sim, kinetic)
-        s = np.abs(T) + np.abs(e - T)
-    else:
-        s = np.abs(e)
+        T = np.abs(evaluate(sim, kinetic))
+        return float(max(T[0] + abs(e[0] - T[0]), np.max(T)))
+    s = np.abs(e)
     scale = float(s[0])
     if scale == 0.0:
         scale = float(np.max(s))

@@ -74,8 +74,11 @@ def read(coordinates, mass_matrix, forcing, energy, parameters, q, u, constraint
         f = sp.ImmutableMatrix(n, 1, xreplace_shared(list(f), back, memo))
         if isinstance(energy, sp.Basic):
             energy = xreplace_shared([energy], back, memo)[0]
+    # the constants of the constraints too: the projection and the assembly of the initial
+    # state need them even where Baumgarte's terms (hence Φ) are not in the bias
     extra = [] if constraints is None else (
-        list(constraints.jacobian) + list(constraints.stabilized_bias()))
+        list(constraints.jacobian) + list(constraints.stabilized_bias())
+        + list(constraints.velocity) + [p for p in constraints.position if p is not None])
     symbols, functions, derivatives = atoms_shared(list(M) + list(f) + extra)
     own = {x for x in coordinates + tuple(rates) if isinstance(x, sp.Symbol)}
     if parameters is None:

@@ -19,11 +19,12 @@ from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
 from .._core.symbolic import atoms_shared, xreplace_shared
-from ..ode._progress import Progress, interactive
+from ..ode._fixed import step_count
+from ..ode._progress import for_run
 from ..vectors import t as _t
 from .simulation import Event, Simulation
 
-__all__ = ["run"]
+__all__ = ["Reduced", "canonical_method", "run"]
 
 #: seconds of wall time before a progress bar appears
 PROGRESS_DELAY = 2.0
@@ -31,12 +32,12 @@ PROGRESS_DELAY = 2.0
 PROGRESS_EVERY = 0.1
 
 
-def _labels(names, second_order):
-    accs = [f"{n}'' (acceleration of {n})" for n in names]
+def _labels(names, second_order, rate_names=None):
+    accs = [f"{n}'' (acceleration of {n})" for n in rate_names or names]
     return accs if second_order else [f"{n}' (rate of {n})" for n in names] + accs
 
 
-def _diagnosis(trouble, culprit, names, second):
+def _diagnosis(trouble, culprit, names, second, rate_names=None):
     """A sentence naming why the right-hand side failed: the error it raised (with its time),
     else the non-finite or complex value the solver found, by coordinate; or ''."""
     if trouble:
@@ -46,12 +47,12 @@ def _diagnosis(trouble, culprit, names, second):
         return ""
     k, value, t = culprit["component"], culprit["value"], culprit["t"]
     if culprit["what"] == "derivative":
-        labels = _labels(names, second)
+        labels = _labels(names, second, rate_names)
         label = labels[k] if k < len(labels) else f"component {k}"
         kind = "has a complex value" if culprit.get("complex") else "is not finite"
         return (f" The right-hand side {kind} ({value}) at t = {t!r}, in the component "
                 f"{label}.")
-    states = list(names) + [f"{n}'" for n in names]
+    states = list(names) + [f"{n}'" for n in rate_names or names]
     label = states[k] if k < len(states) else f"component {k}"
     return f" The state became non-finite ({value}) at t = {t!r}, in the component {label}."
 
@@ -70,9 +71,10 @@ def merge_values(params, values):
     return {**{str(k): v for k, v in params.items()}, **values}
 
 
-def compile_events(eqs, events, values):
+def compile_events(eqs, events, values, full=None):
     """Callables g(t, y) from `events`: callables kept, sympy expressions (or
-    :class:`Event`) compiled once (a non-finite value of one is reported by the solver)."""
+    :class:`Event`) compiled once (a non-finite value of one is reported by the solver);
+    ``full(t, Y)``: the state (q, q') from the run's state (reduced equations)."""
     if events is None:
         return None
     items = list(events) if isinstance(events, list | tuple) else [events]
@@ -103,6 +105,8 @@ def compile_events(eqs, events, values):
 
         def g(t, y, _f=f, _c=consts, _w=inputs):
             w = [v(t) if callable(v) else float(v) for v in _w]
+            if full is not None:
+                y = full(np.array([t]), np.asarray(y, dtype=float)[:, None])[:, 0]
             return float(_f(t, y[:n], y[n:], *_c, *w))
 
         g.terminal, g.direction = spec.terminal, spec.direction
@@ -116,15 +120,11 @@ PROJECTION_ITERATIONS = 3
 PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau")
 
 
-def projector(eqs, values):
-    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
-    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
-    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
-    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
-    (exact: c is linear in q'). None if `eqs` has no constraints."""
+def closure_functions(eqs):
+    """(rows of Φ, Φ(t, q, *params, *inputs), A(t, q, ...), c(t, q, u, ...)) of the
+    constraints of `eqs`, compiled once (cached): Φ the holonomic rows (None if there are
+    none), A the Jacobian of every row, c = A q' + a the velocity residual."""
     c = eqs.constraints
-    if c is None:
-        return None
     q_s, u_s, _, w_s, rule = eqs._stand_ins()
     key = "projector"
     if key not in eqs._cache:
@@ -141,7 +141,21 @@ def projector(eqs, values):
                                 name="closure") if hol else None,
             compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
             compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
-    hol, phi_f, A_f, c_f = eqs._cache[key]
+    return eqs._cache[key]
+
+
+def projector(eqs, values, rates=True):
+    """``project(t, y)`` onto the constraints of `eqs` (book, ch. 25.3), compiled once: the
+    positions onto Φ(q, t) = 0 by Gauss-Newton steps q <- q - J^T (J J^T)^-1 Φ (J = Φ_q, the
+    smallest correction; at most :data:`PROJECTION_ITERATIONS`, stopped when |Φ| no longer
+    decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
+    (exact: c is linear in q'); with ``rates=False`` the positions only, the rest of the
+    state kept (the independent speeds of reduced equations, free by construction). None if
+    `eqs` has no constraints."""
+    if eqs.constraints is None:
+        return None
+    q_s = eqs._stand_ins()[0]
+    hol, phi_f, A_f, c_f = closure_functions(eqs)
     consts, inputs, _ = eqs._values(values)
     n = len(q_s)
     solve, dot = np.linalg.solve, np.dot
@@ -159,6 +173,8 @@ def projector(eqs, values):
                 last = size
                 J = np.asarray(A_f(t, q, *consts, *w), dtype=float)[hol]
                 q -= dot(J.T, solve(dot(J, J.T), r))
+        if not rates:
+            return np.concatenate((q, u))
         A = np.asarray(A_f(t, q, *consts, *w), dtype=float)
         r = np.asarray(c_f(t, q, u, *consts, *w), dtype=float).reshape(-1)
         u = u - dot(A.T, solve(dot(A, A.T), r))
@@ -226,7 +242,66 @@ def _project_samples(project, t, y):
     return out
 
 
-def _loop_options(options, eqs, method, project, progress, span, values):
+class Reduced:
+    """The state of a run of reduced equations (:mod:`rigidmech.dynamics.reduced`): (q, u)
+    with u the rates of the coordinates ``rate_names`` only; ``full(t, Y)`` gives (q, q')
+    for samples Y (columns), ``project`` projects the positions (None without holonomic
+    rows)."""
+
+    __slots__ = ("rate_names", "full", "project")
+
+    def __init__(self, rate_names, full, project):
+        self.rate_names, self.full, self.project = tuple(rate_names), full, project
+
+
+def _trusted_stop(res, trouble, max_steps):
+    """Whether the state a stopped run reached is one to keep: after Ctrl-C or the
+    ``progress`` callback, ``max_steps``, or a failure of the right-hand side (an error, a
+    non-finite or complex value: the state it started from passed the error control). Not
+    after a plain step size underflow: the solver could not resolve the motion from there, a
+    singularity its last accepted step may have jumped (x'' = 2 x^3, x = 1/(1 - t), accepted
+    at t = 1 + 5e-10 with x = 8e13 > 0); the message gives that state."""
+    if res.status == 2:
+        return True
+    return res.status == -1 and (bool(trouble) or res.stats.get("culprit") is not None
+                                 or int(getattr(res, "nsteps", 0) or 0) >= max_steps)
+
+
+def _with_stop(res, t_out, y_out, t0, t1):
+    """(t, y, appended): the samples of a run stopped early (a failure, ``max_steps``,
+    Ctrl-C, the ``progress`` callback) followed by the state it reached, ``(t_stop,
+    y_stop)`` (the last accepted step, already projected), when that is beyond the last
+    sample and finite: a stopped run keeps everything it computed."""
+    if res.status not in (-1, 2) or res.t_stop is None or res.y_stop is None:
+        return t_out, y_out, False
+    y_stop = np.asarray(res.y_stop, dtype=float).reshape(-1)
+    t_stop = float(res.t_stop)
+    beyond = (not len(t_out)) or (t_stop - float(t_out[-1])) * (1.0 if t1 >= t0 else -1.0) > 0
+    if not (beyond and np.isfinite(y_stop).all() and y_stop.size == y_out.shape[0]):
+        return t_out, y_out, False
+    return (np.append(t_out, t_stop), np.concatenate((y_out, y_stop[:, None]), axis=1),
+            True)
+
+
+def _baumgarte_note(eqs, options, t0, t1):
+    """A note when Baumgarte's stabilisation is the run's only drift control (no projection)
+    and cannot act within it: its time scale 1/alpha (alpha = the larger coefficient) longer
+    than the run, alpha |t1 - t0| < 1 (the boundary acts)."""
+    c = eqs.constraints
+    if c is None or options.get("project") is not None:
+        return ()
+    alpha = max(c.stabilization)
+    span = abs(t1 - t0)
+    if not (alpha > 0 and span > 0 and alpha * span < 1.0):
+        return ()
+    return (f"Baumgarte's stabilisation (alpha, beta) = {c.stabilization} acts on the time "
+            f"scale 1/alpha = {1 / alpha:.3g}, longer than this run ({span:.3g}): it cannot "
+            "hold the constraints here. Use a method that projects (dop853, dopri5, bs32, "
+            "gbs, radau: project=True) or System(stabilization=(a, a)) with a about "
+            f"5/{span:.3g} (for a fixed step, keep a * step below 1).",)
+
+
+def _loop_options(options, eqs, method, project, progress, span, values, reduced=None):
     """Add to `options` the projection (by default for constrained equations and a method
     of the solver's loop) and the progress (a :class:`~rigidmech.ode._progress.Progress`,
     returned, or None) of a run."""
@@ -236,13 +311,22 @@ def _loop_options(options, eqs, method, project, progress, span, values):
         raise ArgumentError(f"`project` needs a method of the solver's loop "
                             f"({', '.join(PROJECTING)}); got method {method!r}.")
     if project and eqs.constraints is not None:
-        options["project"] = projector(eqs, values)
-    prog = None
-    if callable(progress) or progress is True or (progress is None and interactive()):
-        prog = Progress(span, callback=progress if callable(progress) else None,
-                        bar=not callable(progress), every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+        options["project"] = (projector(eqs, values) if reduced is None
+                              else reduced.project)
+    prog = for_run(progress, span, every=PROGRESS_EVERY, delay=PROGRESS_DELAY)
+    if prog is not None:
         options["progress"] = prog
     return prog
+
+
+def canonical_method(method):
+    """The registered name of `method` (lower case, an alias such as ``"rk45"`` resolved to
+    its method ``"dopri5"``): one name for every decision of a run made by method (projection,
+    fixed step, second order), so that an alias or another case behaves exactly as its
+    method."""
+    from ..ode import _registry
+
+    return _registry.get(method).name
 
 
 def _takes(method, option):
@@ -253,8 +337,10 @@ def _takes(method, option):
 
 
 def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
-        first_step, max_step, dense_output, progress, values, notes, project=None):
+        first_step, max_step, dense_output, progress, values, notes, project=None,
+        given=None, reduced=None):
     """Integrate and wrap the outcome in a :class:`Simulation` (see ``simulate``)."""
+    method = canonical_method(method)
     t0, t1 = float(t[0]), float(t[1])
     kinds = {k: ode.methods(k) for k in ("fixed", "second_order")}
     fixed = method in kinds["fixed"] + kinds["second_order"]
@@ -278,7 +364,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options["step"] = step
         stride = 1
         if t_eval is None:  # samples at the method's own grid points, about n_output of them
-            nsteps = max(1, math.ceil(abs(t1 - t0) / step * (1 - 1e-12)))
+            nsteps = step_count(abs(t1 - t0), step)
             stride = max(1, nsteps // (n_output - 1))
             if stride > 1 and _takes(method, "save_every") and events is None:
                 options["save_every"], stride = stride, 1
@@ -295,10 +381,14 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         options.update(rtol=rtol, atol=atol, first_step=first_step,
                        max_step=math.inf if max_step is None else max_step,
                        t_eval=np.linspace(t0, t1, n_output) if t_eval is None else t_eval)
-    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values)
+    prog = _loop_options(options, eqs, method, project, progress, (t0, t1), values, reduced)
+    if reduced is None:  # reduced equations have no Baumgarte terms
+        notes = (*notes, *_baumgarte_note(eqs, options, t0, t1))
     chunks = options.pop("chunks", None)
     if chunks is None:
-        options["events"] = compile_events(eqs, events, values)
+        options["events"] = compile_events(eqs, events, values,
+                                           None if reduced is None else reduced.full)
+    full = (lambda _t, y: y) if reduced is None else reduced.full
     fun.trouble = []  # an error of the right-hand side: kept there, nan returned
     start = time.perf_counter()
     try:
@@ -315,8 +405,9 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                           message=f"The integration was interrupted (Ctrl-C) after t = "
                           f"{t_at!r}; method {method!r} keeps no partial result: only the "
                           "initial state is kept.", t=[t0],
-                          y=np.asarray(y0, dtype=float)[:, None], t_events=[], method=method,
-                          t_stop=t0)
+                          y=full(np.array([t0]), np.asarray(y0, dtype=float)[:, None]),
+                          t_events=[], method=method,
+                          t_stop=t0, given=given)
     finally:
         fun.trouble, trouble = None, fun.trouble
         if prog is not None:
@@ -331,27 +422,40 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
         message = (f"The integration was stopped by {who} at t = {t_stop!r}; the samples "
                    f"up to t = {t_end!r} are kept.")
     elif res.status == -1:
-        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second)
+        message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second,
+                                       None if reduced is None else reduced.rate_names)
     status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least
         t_out, y_out = np.array([t0]), np.asarray(y0, dtype=float)[:, None]
     if options.get("project") is not None and len(t_out):  # samples inside steps too
         y_out = _project_samples(options["project"], t_out, y_out)
+        if t_out[0] == t0:  # the run started from y0 itself
+            y_out[:, 0] = y0
     if fixed and stride > 1:
         keep = np.arange(0, len(t_out), stride)
         if keep[-1] != len(t_out) - 1:
             keep = np.append(keep, len(t_out) - 1)
         t_out, y_out = t_out[keep], y_out[:, keep]
+    t_out, y_out, kept = (_with_stop(res, t_out, y_out, t0, t1)
+                          if _trusted_stop(res, trouble, max_steps) else (t_out, y_out, False))
+    if kept:  # said where the message named the samples kept
+        message = (message.replace(" are kept.", ", and the state reached at t = "
+                                   f"{t_stop!r} as the last sample.")
+                   if res.status == 2 else
+                   f"{message} The last state reached (t = {t_stop!r}) is kept as the last "
+                   "sample.")
+    y_out = full(t_out, y_out)
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
-                     t_stop=t_stop, status=status)
+                     t_stop=t_stop, status=status, given=given)
     if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
             and sim.energy_not_conserved() is None):
         drift = sim.energy_drift()
         if not drift <= UNSTABLE_DRIFT:  # a conservative system: E should stay constant
             sim = Simulation(eqs, res, values, elapsed, (*notes, (
-                f"the energy changed by {drift:.3g} times its scale T(0) + |V(0)| with the "
+                f"the energy changed by {drift:.3g} times its scale (energy_scale()) with the "
                 f"fixed step {step!r}: the step is probably too large for {method!r} (an "
                 "unstable explicit method grows without bound); the motion is not to be "
-                "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status)
+                "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status,
+                given=given)
     return sim

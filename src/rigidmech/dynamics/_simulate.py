@@ -22,29 +22,47 @@ import sympy as sp
 
 from .. import ode
 from .._core.errors import ArgumentError, ArgumentTypeError
-from ._compiled import acceleration_only
+from ._compiled import acceleration_only, trouble
 from ._compiled import coordinate_name as _name
-from ._run import merge_values, run
+from ._initial import on_constraints
+from ._run import Reduced, canonical_method, merge_values, projector, run
 from ._singularities import warn_near_singularities
 
-__all__ = ["check_simulation_inputs", "initial", "simulate"]
+__all__ = ["check_simulation_inputs", "initial", "simulate", "simulate_reduced"]
 
 
-def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
-             first_step, max_step, dense_output, progress, project, raise_on_failure, params,
-             values):
-    """Integrate ``eqs`` from (q0, u0) over ``t`` (see :meth:`EquationsOfMotion.simulate
-    <rigidmech.dynamics.EquationsOfMotion.simulate>`, which documents the arguments)."""
+def _prologue(eqs, t, q0, u0, method, n_output, params, values, independent):
+    """The values, the method's registered name and the initial state (on the constraints)
+    of a run of `eqs`, checked: (values, method, q0, u0, given, notes)."""
     values = merge_values(params, values)
     inputs = {_name(w) for w in eqs._inputs}
     check_simulation_inputs(len(eqs._q), t, q0, u0, method, n_output,
                              {k: v for k, v in values.items() if k not in inputs})
+    named = ({k if isinstance(k, str) else _name(k) for k in q0} if isinstance(q0, dict)
+             else set())
     q0 = initial(eqs, q0, "q0", default_zero=False)
     u0 = initial(eqs, u0, "u0", default_zero=True)
+    given = (q0, u0)
+    q0, u0, moved = on_constraints(eqs, float(t[0]), q0, u0, independent=independent,
+                                   named=named, values=values)
+    return values, canonical_method(method), q0, u0, given, moved
+
+
+def _finish(eqs, sim, values, raise_on_failure):
+    if sim.result is not None and sim.t.size:
+        warn_near_singularities(eqs.singular_sets, eqs._coordinates, sim.result, values)
+    return sim.check() if raise_on_failure else sim
+
+
+def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, events, max_steps,
+             first_step, max_step, dense_output, progress, project, raise_on_failure, params,
+             values, independent=None):
+    """Integrate ``eqs`` from (q0, u0) over ``t`` (see :meth:`EquationsOfMotion.simulate
+    <rigidmech.dynamics.EquationsOfMotion.simulate>`, which documents the arguments)."""
+    values, method, q0, u0, given, moved = _prologue(eqs, t, q0, u0, method, n_output, params,
+                                                     values, independent)
     y0 = np.concatenate((q0, u0))
-    if not isinstance(method, str):
-        raise ArgumentTypeError(f"`method` must be a method name; got {method!r}.")
-    if method.lower() in ode.methods("second_order") + ode.methods("adaptive_second_order"):
+    if method in ode.methods("second_order") + ode.methods("adaptive_second_order"):
         fun = acceleration_only(eqs, method, values)
     else:
         fun = eqs.rhs(**values)
@@ -53,10 +71,49 @@ def simulate(eqs, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, even
     sim = run(eqs, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
               n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
               first_step=first_step, max_step=max_step, dense_output=dense_output,
-              progress=progress, values=values, notes=fun.notes, project=project)
-    if sim.result is not None and sim.t.size:
-        warn_near_singularities(eqs.singular_sets, eqs._coordinates, sim.result, values)
-    return sim.check() if raise_on_failure else sim
+              progress=progress, values=values, notes=(*fun.notes, *moved), project=project,
+              given=given)
+    return _finish(eqs, sim, values, raise_on_failure)
+
+
+def simulate_reduced(red, t, q0, u0, *, method, rtol, atol, step, n_output, t_eval, events,
+                     max_steps, first_step, max_step, dense_output, progress, project,
+                     raise_on_failure, params, values):
+    """Integrate the reduced equations ``red`` (state (q, u_I)) from (q0, u0) over ``t``: the
+    same checks, initial state (the independent coordinates of ``red`` kept), run and result
+    as :func:`simulate`, the samples given as (q, q') (see
+    :meth:`ReducedEquations.simulate <rigidmech.dynamics.reduced.ReducedEquations.simulate>`)."""
+    eqs = red.equations
+    keep = [_name(c) for c in red.independent]
+    values, method, q0, u0, given, moved = _prologue(eqs, t, q0, u0, method, n_output, params,
+                                                     values, keep)
+    if method in ode.methods("second_order") + ode.methods("adaptive_second_order"):
+        raise ArgumentError(
+            f"`method` {method!r} integrates q'' = a(t, q), but reduced equations are first "
+            "order in (q, u) (q' = T u + s, u' = M_r^-1 f_r); use a first-order method such "
+            "as 'dop853' or 'rk4'.")
+    ind = [eqs.names.index(nm) for nm in keep]
+    y0 = np.concatenate((q0, u0[ind]))
+    inner = red.rhs(**values)
+
+    def fun(t, y):  # an error of the right-hand side: kept, nan returned (as eqs.rhs)
+        try:
+            return inner(t, y)
+        except (ArithmeticError, ValueError, TypeError) as exc:
+            if fun.trouble is None:
+                raise
+            return trouble(fun, exc, t, np.shape(y))
+
+    fun.notes, fun.trouble = inner.notes, None
+    if dense_output is None:
+        dense_output = bool(eqs.singular_sets)
+    layout = Reduced(keep, red._full_state(values), projector(eqs, values, rates=False))
+    sim = run(eqs, fun, t, y0, method=method, rtol=rtol, atol=atol, step=step,
+              n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
+              first_step=first_step, max_step=max_step, dense_output=dense_output,
+              progress=progress, values=values, notes=(*fun.notes, *moved), project=project,
+              given=given, reduced=layout)
+    return _finish(eqs, sim, values, raise_on_failure)
 
 
 def initial(eqs, values, what, default_zero):

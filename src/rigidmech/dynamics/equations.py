@@ -306,7 +306,7 @@ class EquationsOfMotion:
                  atol=1e-10, step=None, n_output=1001, t_eval=None, events=None,
                  max_steps=1_000_000, first_step=None, max_step=None, dense_output=None,
                  progress=None, project=None, raise_on_failure=False, params=None,
-                 **values) -> Simulation:
+                 independent=None, **values) -> Simulation:
         """Integrate the equations from (q0, u0) over ``t`` (ch. 27.2.2).
 
         The run never loses work: it returns a :class:`Simulation` however it ends (its
@@ -322,7 +322,12 @@ class EquationsOfMotion:
             Initial coordinates and rates: a sequence in the order of :attr:`coordinates`,
             or a dict ``{"x": 1.0, "psi": 0.2}`` keyed by :attr:`names` (or by the
             coordinates q(t)) in which a coordinate not named starts at 0. ``u0`` defaults
-            to zeros. An unknown name is refused.
+            to zeros. An unknown name is refused. With :attr:`constraints`, a state off them
+            (a closure condition or a velocity condition beyond 1e-9) is assembled on them
+            before the run, the ``independent`` coordinates and their rates kept, and a note
+            says what moved (the values given stay in :attr:`Simulation.q0_given`); a loop
+            that cannot be closed is refused (see "Constraints: the initial state, the
+            projection, Baumgarte" in the API docs).
         method : str
             A method of :func:`rigidmech.ode.solve` ("dop853", "dopri5", "rk4", ...).
         rtol, atol : float
@@ -366,6 +371,11 @@ class EquationsOfMotion:
             (default): on for constrained equations with a method of the solver's loop
             (``dop853``, ``dopri5``, ``bs32``, ``gbs``, ``radau``); ``False``: off (Baumgarte's
             stabilisation alone).
+        independent : sequence of coordinates or names, optional
+            With :attr:`constraints`: the coordinates kept when ``q0`` is off the
+            constraints (the others are moved onto them). Default: the coordinates a dict
+            ``q0`` names, else the first ones (the dependent ones are taken from the last
+            backwards). Refused for equations without constraints.
         raise_on_failure : bool
             Raise :class:`~rigidmech._core.errors.NumericalError` on failure (the partial simulation
             attached as its ``simulation`` attribute) instead of returning it.
@@ -401,12 +411,15 @@ class EquationsOfMotion:
         numbers), so memory follows the samples, the multistep ones (``ab4``, ...) keep every
         ``stride``-th point as they go.
 
-        On Ctrl-C (KeyboardInterrupt) the methods built on the solver's one loop (``dop853``,
-        ``dopri5``, ``bs32``, ``gbs``, ``radau``, ``rkn64``, ``rkn1210``) keep the samples
-        computed so far, status ``"interrupted"``, and so do the one-step fixed-step methods
-        (up to the last chunk done); the others (``adams``, multistep methods, a fixed-step
-        run with events, ``t_eval`` or dense output) keep only the initial state (the
-        message says so).
+        On Ctrl-C (KeyboardInterrupt), a ``progress`` callback that stops the run,
+        ``max_steps`` or a failure of the right-hand side (an error, a non-finite or complex
+        value), the samples computed so far are kept and the state the run reached (its last
+        accepted step, :attr:`Simulation.t_stop`) is appended as the last sample, also with
+        ``t_eval``; the one-step fixed-step methods keep the chunks done and the steps of the
+        interrupted one. After a plain step size underflow (a singularity, which the last
+        accepted step may have jumped) only the samples are kept; the message gives the state.
+        (A method registered by a plug-in that lets Ctrl-C escape keeps only the initial
+        state; the message says so.)
 
         Examples
         --------
@@ -425,7 +438,7 @@ class EquationsOfMotion:
             n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
             first_step=first_step, max_step=max_step, dense_output=dense_output,
             progress=progress, project=project, raise_on_failure=raise_on_failure,
-            params=params, values=values)
+            params=params, values=values, independent=independent)
 
     def display_rule(self) -> dict:
         """Symbols to print q(t), q'(t), q''(t) as q, q_dot, q_ddot (for reading only: they

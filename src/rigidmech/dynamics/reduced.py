@@ -203,6 +203,79 @@ class ReducedEquations:
         fun.notes = notes
         return fun
 
+    def _full_state(self, params):
+        """``full(t, Y)``: the states (q, q') of samples Y = (q, u) (columns, t their times),
+        the dependent rates solved from the constraints."""
+        values, inputs, _ = self.equations._values(params)
+        geometry, _ = self._compiled()
+        n = len(self.coordinates)
+        ind = [self.coordinates.index(c) for c in self.independent]
+        dep = [self.coordinates.index(c) for c in self.dependent]
+
+        def full(t, Y):
+            Y = np.asarray(Y, dtype=float)
+            out = np.full((2 * n, Y.shape[1]), np.nan)
+            out[:n] = Y[:n]
+            for j, tj in enumerate(np.asarray(t, dtype=float).tolist()):
+                w = [v(tj) if callable(v) else v for v in inputs]
+                A, a = geometry(tj, Y[:n, j], *values, *w)
+                A = np.asarray(A, dtype=float).reshape(len(dep), n)
+                u = Y[n:, j]
+                out[n + np.array(ind), j] = u
+                try:
+                    out[n + np.array(dep), j] = np.linalg.solve(
+                        A[:, dep], -(A[:, ind] @ u + np.asarray(a, dtype=float).ravel()))
+                except np.linalg.LinAlgError:  # A_D singular there: the rates left nan
+                    pass
+            return out
+
+        return full
+
+    def simulate(self, t=(0.0, 10.0), q0=None, u0=None, *, method="dop853", rtol=1e-8,
+                 atol=1e-10, step=None, n_output=1001, t_eval=None, events=None,
+                 max_steps=1_000_000, first_step=None, max_step=None, dense_output=None,
+                 progress=None, project=None, raise_on_failure=False, params=None, **values):
+        """Integrate the reduced equations from (q0, u0) over ``t`` (ch. 25.3, 27.2.2): the
+        state (q, u) of n + (n - m) values, q' = T u + s and u' = M_r^-1 f_r.
+
+        The arguments, the run and the result are those of
+        :meth:`EquationsOfMotion.simulate <rigidmech.dynamics.EquationsOfMotion.simulate>`
+        (one run helper): ``q0`` and ``u0`` give every coordinate and rate (a state off the
+        constraints is assembled on them, the :attr:`independent` coordinates and their
+        rates kept), the :class:`~rigidmech.dynamics.Simulation` holds (q, q') at the
+        samples (the dependent rates solved from the constraints), and by default the
+        positions are projected onto the closure conditions after every step (``project``;
+        the independent speeds are free: nothing to project at the velocity level). Event
+        callables ``g(t, y)`` receive the run's state (q, u); expressions are evaluated on
+        (q, q'). Second-order methods (``verlet``, ``rkn64``, ...) are refused: the reduced
+        equations are first order in (q, u).
+
+        Examples
+        --------
+        A particle on the unit circle under gravity -g j, x independent, released at rest
+        below the centre: the loop stays closed.
+
+        >>> import numpy as np, sympy as sp, rigidmech as rm
+        >>> from rigidmech.dynamics import Constraints
+        >>> x, y = rm.coordinates("x y")
+        >>> phi = (x**2 + y**2 - 1) / 2
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+        ...     forcing=sp.Matrix([0, -9.81]), constraints=Constraints((x, y),
+        ...     [("circle", phi.diff(rm.t), phi)]))
+        >>> red = eqs.reduced(independent=[x])
+        >>> sim = red.simulate(t=(0, 0.5), q0=[0.6, -0.8], n_output=6, rtol=1e-10)
+        >>> bool(np.abs(sim.q[0]**2 + sim.q[1]**2 - 1).max() < 1e-12), sim.u.shape
+        (True, (2, 6))
+        """
+        from ._simulate import simulate_reduced
+
+        return simulate_reduced(
+            self, t, q0, u0, method=method, rtol=rtol, atol=atol, step=step,
+            n_output=n_output, t_eval=t_eval, events=events, max_steps=max_steps,
+            first_step=first_step, max_step=max_step, dense_output=dense_output,
+            progress=progress, project=project, raise_on_failure=raise_on_failure,
+            params=params, values=values)
+
     def _compiled(self):
         if "compiled" not in self._cache:
             from .._core.compile import compile_expressions

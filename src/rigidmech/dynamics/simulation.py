@@ -86,7 +86,7 @@ class Simulation:
         How the run ended: the end of the time span reached; a terminal event; a numerical
         failure (:attr:`message` says what and at which t); stopped on request (Ctrl-C, or a
         ``progress`` callback returning False). In every case the samples computed so far
-        are kept.
+        are kept, and the state reached when the run stopped early (see :attr:`t_stop`).
     message : str
         Why the run ended, in words.
     result : rigidmech.ode.OdeResult or None
@@ -94,8 +94,10 @@ class Simulation:
     elapsed : float
         Wall time of the integration, seconds.
     notes : tuple of str
-        What the run noted without failing (values given for constants that dropped out of
-        the equations, which were ignored).
+        What the run noted without failing: values given for constants that dropped out of
+        the equations (ignored); an initial state off the constraints, assembled on them
+        (what moved; see :attr:`q0_given`); Baumgarte's stabilisation unable to act within
+        a run without projection; a fixed step too large for a conservative system.
 
     Examples
     --------
@@ -113,10 +115,11 @@ class Simulation:
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
-                 "message", "_names", "_t_events", "_method", "_t_stop")
+                 "message", "_names", "_t_events", "_method", "_t_stop", "_given")
 
     def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
-                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None):
+                 names=None, t=None, y=None, t_events=None, method=None, t_stop=None,
+                 given=None):
         self._eqs = eqs
         self.result = result
         self._names = tuple(names) if names is not None else tuple(eqs.names)
@@ -135,6 +138,8 @@ class Simulation:
         self._method = method if method is not None else (result.method if result else None)
         self._t_stop = float(t_stop) if t_stop is not None else (
             float(self.t[-1]) if self.t.size else math.nan)
+        self._given = None if given is None else tuple(np.array(g, dtype=float)
+                                                       for g in given)
 
     # -- what the run was ---------------------------------------------------------------
     @property
@@ -165,8 +170,11 @@ class Simulation:
     @property
     def t_stop(self) -> float:
         """The time the integration reached: the end of the span, the terminal event, or the
-        last step accepted before a failure or an interruption (the last sample,
-        ``t[-1]``, may be earlier: samples are taken at the times asked for).
+        last step accepted before a failure or an interruption. A run stopped early (Ctrl-C,
+        the ``progress`` callback, ``max_steps``, a failure of the right-hand side) keeps the
+        state it reached there as its last sample, after the samples asked for: ``t[-1] ==
+        t_stop``; after a plain step size underflow (a singularity the last step may have
+        jumped) the last sample, ``t[-1]``, is earlier and the message gives that state.
 
         Examples
         --------
@@ -175,10 +183,37 @@ class Simulation:
         >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
         ...                            forcing=sp.ImmutableMatrix([[-x]]))
         >>> sim = eqs.simulate(t=(0, 10), q0=[1.0], n_output=3, max_steps=5)
-        >>> sim.status, sim.t.tolist(), 0 < sim.t_stop < 10
-        ('failed', [0.0], True)
+        >>> sim.status, len(sim.t), 0 < sim.t_stop < 10, bool(sim.t[-1] == sim.t_stop)
+        ('failed', 2, True, True)
         """
         return self._t_stop
+
+    @property
+    def q0_given(self):
+        """The initial coordinates as given to ``simulate`` (an array in the order of
+        :attr:`names`; None for a simulation loaded from a file). The run starts from
+        ``q[:, 0]``, which differs when the values given were off the constraints and were
+        assembled on them (a note says what moved; see :meth:`EquationsOfMotion.simulate`'s
+        ``independent``).
+
+        Examples
+        --------
+        >>> import sympy as sp, rigidmech as rm
+        >>> from rigidmech.dynamics import Constraints
+        >>> x, y = rm.coordinates("x y")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+        ...     forcing=sp.Matrix([0, -1]), constraints=Constraints((x, y),
+        ...     [("line", x.diff(rm.t) - y.diff(rm.t), x - y)]))
+        >>> sim = eqs.simulate(t=(0, 1), q0=[1.0, 0.0], n_output=2, independent=["x"])
+        >>> sim.q0_given.tolist(), sim.q[:, 0].tolist()
+        ([1.0, 0.0], [1.0, 1.0])
+        """
+        return None if self._given is None else self._given[0].copy()
+
+    @property
+    def u0_given(self):
+        """The initial rates as given to ``simulate`` (see :attr:`q0_given`)."""
+        return None if self._given is None else self._given[1].copy()
 
     @property
     def t_events(self) -> list:
@@ -290,11 +325,13 @@ class Simulation:
         return _along.energy(self)
 
     def energy_scale(self) -> float:
-        """The scale of :meth:`energy_drift`: ``T(0) + |V(0)|``, the kinetic energy plus the
-        magnitude of the potential energy at the start (``V = E - T``). If that is 0 (a
-        motion starting at rest where V = 0) it is ``max_t (T + |V|)`` over the samples; when
-        the equations do not know their kinetic energy (written by hand), ``|E(0)|`` then
-        ``max_t |E|``.
+        """The scale of :meth:`energy_drift`, the natural magnitude of the energy along the
+        run: the larger of ``T(0) + |V(0)|`` (the kinetic energy plus the magnitude of the
+        potential energy at the start, ``V = E - T``) and ``max_t T`` over the samples (the
+        largest kinetic energy the motion reaches: a body released at rest where V = 0
+        turns its potential energy into T, which is then the energy at stake, m g L / 2 for
+        a rod of length L released horizontal). When the equations do not know their kinetic
+        energy (written by hand): ``|E(0)|``, or ``max_t |E|`` if that is 0.
 
         Examples
         --------
@@ -311,10 +348,10 @@ class Simulation:
         """Largest change of the total energy along the motion, relative to ``scale``:
         ``max_t |E(t) - E(0)| / scale``.
 
-        ``scale`` defaults to :meth:`energy_scale` (``T(0) + |V(0)|``): the drift then reads
-        as a relative error of the energy that does not depend on where V = 0 was put nor
-        saturate on a blow-up. If the scale is 0 (nothing moves, V = 0), the drift is 0 if E
-        stays 0, infinite otherwise. The energy is evaluated at the samples :attr:`t` (see
+        ``scale`` defaults to :meth:`energy_scale` (``max(T(0) + |V(0)|, max_t T)``): the
+        drift then reads as a relative error of the energy at stake in the run, also for a
+        motion released where T + V = 0. If the scale is 0 (nothing moves, V = 0), the drift
+        is 0 if E stays 0, infinite otherwise. The energy is evaluated at the samples :attr:`t` (see
         :meth:`EquationsOfMotion.simulate` for their accuracy).
 
         Examples

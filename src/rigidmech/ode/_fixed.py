@@ -21,7 +21,24 @@ from ._driver import fail_message
 from ._loop import _found_sentence, _probe
 from ._result import OdeResult
 
-__all__ = ["check_fixed", "FixedRecorder", "fixed_loop"]
+__all__ = ["check_fixed", "FixedRecorder", "fixed_loop", "step_count"]
+
+#: relative slack of :func:`step_count`: a step that divides the span to this is exact
+STEP_SLACK = 1e-12
+
+
+def step_count(length, h):
+    """The number of fixed steps of size about `h` over a span of `length`:
+    ``ceil(length / h (1 - STEP_SLACK))``, at least 1, so that a step dividing the span up
+    to rounding (0.1 over 1) gives the whole number (10), not one more. One rule for the
+    fixed-step methods and ``simulate``'s sampling of their grid.
+
+    Examples
+    --------
+    >>> step_count(1.0, 0.1), step_count(1.0, 0.1 * (1 - 1e-6)), step_count(1.0, 2.0)
+    (10, 11, 1)
+    """
+    return max(1, math.ceil(length / h * (1.0 - STEP_SLACK)))
 
 
 def check_fixed(t_span, y0, step, max_steps, save_every, *, even=False):
@@ -73,7 +90,7 @@ def check_fixed(t_span, y0, step, max_steps, save_every, *, even=False):
     if not (h_req > 0.0 and math.isfinite(h_req)):
         raise ArgumentError(f"`step` must be a finite nonzero number; got {step!r}.")
     length = abs(t1 - t0)
-    nsteps = max(1, math.ceil(length / h_req * (1.0 - 1e-12)))
+    nsteps = step_count(length, h_req)
     if max_steps is not None and nsteps > max_steps:
         raise ArgumentError(
             f"`step` = {h_req:g} needs {nsteps} steps over `t_span` {t_span!r}, more than "

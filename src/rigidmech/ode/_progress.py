@@ -106,3 +106,30 @@ def progress_option(progress, t_span):
     if progress is True:
         return Progress(t_span, bar=True)
     return progress
+
+
+def for_run(progress, t_span, *, every, delay):
+    """The progress of a run of the mechanics (``simulate``, ``contact_motion``): one rule for
+    its ``progress`` argument. A callable ``progress(t)``: called about every `every` seconds
+    (returning False stops the run); True: a bar on stderr once the run has lasted `delay`
+    seconds; None: the bar only when stderr is a terminal; False: nothing. Returns a
+    :class:`Progress` (give it to :func:`~rigidmech.ode.solve` as ``progress``; close it at
+    the end) or None.
+
+    Examples
+    --------
+    >>> for_run(False, (0, 1), every=0.1, delay=2.0) is None
+    True
+    >>> p = for_run(lambda t: t < 0.5, (0, 1), every=0.0, delay=2.0)
+    >>> p(0.25), p(0.75), p.stopped
+    (True, False, True)
+    """
+    from rigidmech._core.errors import ArgumentTypeError
+
+    if progress is not None and not isinstance(progress, bool) and not callable(progress):
+        raise ArgumentTypeError(f"`progress` must be None, True, False or a callable "
+                                f"progress(t); got {progress!r}.")
+    if callable(progress) or progress is True or (progress is None and interactive()):
+        return Progress(t_span, callback=progress if callable(progress) else None,
+                        bar=not callable(progress), every=every, delay=delay)
+    return None

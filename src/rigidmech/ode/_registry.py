@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
-__all__ = ["KINDS", "MethodEntry", "register", "unregister", "get", "names"]
+__all__ = ["KINDS", "MethodEntry", "alias", "register", "unregister", "get", "names"]
 
 #: The kinds of method the dispatcher knows how to call.
 KINDS = ("fixed", "adaptive", "second_order", "adaptive_second_order", "stiff")
@@ -116,6 +116,27 @@ def register(name: str, fn: Callable, *, kind: str, capabilities=()) -> Callable
         )
     _METHODS[key] = MethodEntry(key, fn, kind, frozenset(capabilities))
     return fn
+
+
+def alias(name: str, of: str) -> None:
+    """Register `name` as another name of the method `of`: :func:`get` returns the very
+    entry of `of` (its name included), so that the alias behaves exactly as its method
+    wherever a method is recognised by name.
+
+    Examples
+    --------
+    >>> get("rk45") is get("dopri5"), get("rk45").name
+    (True, 'dopri5')
+    """
+    if not isinstance(name, str) or not name:
+        raise ArgumentTypeError(f"`name` must be a non-empty string; got {name!r}.")
+    entry = get(of)
+    key = name.lower()
+    old = _METHODS.get(key)
+    if old is not None and old is not entry:
+        raise ArgumentError(f"`name` {name!r} is already registered to {old.name!r}; choose "
+                            "another name.")
+    _METHODS[key] = entry
 
 
 def unregister(name: str) -> None:

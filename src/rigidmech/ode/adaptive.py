@@ -424,5 +424,5 @@ def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
 
 _registry.register("bs32", bs32, kind="adaptive", capabilities=("t_eval",))
 _registry.register("dopri5", dopri5, kind="adaptive", capabilities=("t_eval",))
-_registry.register("rk45", dopri5, kind="adaptive", capabilities=("t_eval",))
+_registry.alias("rk45", "dopri5")
 _registry.register("dop853", dop853, kind="adaptive", capabilities=("t_eval",))

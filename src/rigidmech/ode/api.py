@@ -44,6 +44,7 @@ from rigidmech._core.errors import ArgumentError, ArgumentTypeError
 
 from . import _registry
 from ._dense import DenseSolution
+from ._fixed import step_count
 from ._loop import PROJECT
 from ._progress import progress_option
 from ._result import OdeResult
@@ -532,7 +533,7 @@ def _check_fixed_step(entry, step, t0, t1, max_steps):
     if t0 != t1 and h > abs(t1 - t0):
         raise ArgumentError(f"`step` = {h!r} exceeds the time span |t1 - t0| = "
                             f"{abs(t1 - t0)!r}: no step would be of the size asked for.")
-    nsteps = max(1, math.ceil(abs(t1 - t0) / h * (1 - 1e-12)))
+    nsteps = step_count(abs(t1 - t0), h)
     if nsteps > max_steps:
         raise ArgumentError(
             f"`step` = {h:g} needs {nsteps} steps over `t_span`, more than `max_steps` = "

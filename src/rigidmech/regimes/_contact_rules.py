@@ -13,6 +13,17 @@ from .._core.errors import ArgumentError
 from ._contact_model import PARTS, _compose, _part, _slide
 from .phased import Guard, Regime
 
+#: relative slack of the cone: |T| <= f_s N (1 + CONE_SLACK) holds (the rounding of the
+#: multipliers at a switch where the friction needed is exactly the limit)
+CONE_SLACK = 1e-12
+
+
+def within_cone(needed, limit):
+    """Whether a friction (or couple) ``needed`` (its magnitude) is held by ``limit`` (f_s N,
+    or the coefficient of a resistance times N): ``needed <= limit (1 + CONE_SLACK)``, the
+    boundary included (ch. 13.1.2). One rule for every such decision of the regimes."""
+    return needed <= limit * (1 + CONE_SLACK) + 1e-300
+
 
 class _Rules:
     """The guards and transitions of every regime of a model."""
@@ -59,7 +70,7 @@ class _Rules:
         plus, minus, held = PARTS[kind]
         locked = self._with_part(states, k, kind, held)
         N, M = self.couple(t, self.m.project(t, y, locked), locked, k, kind)
-        if abs(M) <= self.m.contacts[k].couples[kind][1] * N * (1 + 1e-12) + 1e-300:
+        if within_cone(abs(M), self.m.contacts[k].couples[kind][1] * N):
             return locked
         return self._with_part(states, k, kind, plus if M < 0 else minus)
 
@@ -121,7 +132,7 @@ class _Rules:
         Ns = [forces[j][0] for j in group]
         T = sum(forces[j][1] for j in group)
         limit = sum(self.m.contacts[j].fs * forces[j][0] for j in group)
-        if min(Ns) >= 0 and float(np.linalg.norm(T)) <= limit * (1 + 1e-12) + 1e-300:
+        if min(Ns) >= 0 and within_cone(float(np.linalg.norm(T)), limit):
             return stick
         return self._slip_all(states, group, T)
 
@@ -277,7 +288,7 @@ class _Rules:
                 states[-1] = _compose(states[-1], parts)
         states = tuple(states)
         forces = self.forces(t, y, states)
-        for k, (c, (N, T)) in enumerate(zip(self.m.contacts, forces, strict=True)):
+        for k, (c, (N, _)) in enumerate(zip(self.m.contacts, forces, strict=True)):
             if states[k] == "open":
                 continue
             if N < 0 and c.gap is not None:
@@ -286,9 +297,12 @@ class _Rules:
                 raise ArgumentError(
                     f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
                     "it opens at once; start the bodies where the contact presses.")
-            if _slide(states[k]) == "stick" and float(np.linalg.norm(T)) > c.fs * N:
+            if _slide(states[k]) == "stick":  # the rule of after_stop, for the group
                 group = self.m.group_of(self.m.values(t, y), states, k)
-                states = self._slip_all(states, group, sum(forces[j][1] for j in group))
+                total = sum(forces[j][1] for j in group)
+                if not within_cone(float(np.linalg.norm(total)),
+                                   sum(self.m.contacts[j].fs * forces[j][0] for j in group)):
+                    states = self._slip_all(states, group, total)
         for k, c in enumerate(self.m.contacts):
             if c.couples and states[k] != "open":
                 states = self.couple_states(t, y, states, k)

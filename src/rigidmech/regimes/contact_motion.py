@@ -71,7 +71,7 @@ import math
 
 import numpy as np
 
-from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
 from ..dynamics import System
 from ._contact_model import _Model
 from ._contact_rules import _Rules
@@ -91,8 +91,8 @@ class ContactMotion(PhasedMotion):
 
     __slots__ = ("_model",)
 
-    def __init__(self, phases, model):
-        super().__init__(phases)
+    def __init__(self, phases, model, *, status="finished", message=""):
+        super().__init__(phases, status=status, message=message)
         self._model = model
 
     @property
@@ -196,7 +196,8 @@ def _stabilization(value):
 
 def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
                    rtol: float = 1e-10, atol: float = 1e-12, max_step: float = math.inf,
-                   max_phases: int = 10_000, stabilization=None, **params) -> ContactMotion:
+                   max_phases: int = 10_000, stabilization=None, progress=None,
+                   **params) -> ContactMotion:
     """Integrate a system with one-sided contacts and dry friction phase by phase, each
     regime's equations derived from the system (ch. 13.1, 21.4, 23).
 
@@ -224,14 +225,21 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         plane) to round-off without it, where the correction would only add the
         integration error; it pays for nonlinear conditions (a body rocking on a corner or
         an eccentric disk) over long runs.
+    progress : None, bool or callable
+        As :meth:`EquationsOfMotion.simulate`'s, over the whole run: None (default) a bar on
+        stderr for runs longer than 2 s when stderr is a terminal, True the bar, False
+        nothing, a callable ``progress(t)`` called about every 0.1 s (returning False stops
+        the run).
     **params
         Values of the constants (by name).
 
     Returns
     -------
     ContactMotion
-        Regimes named ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one
-        contact; followed by ``, rolls+``, ``, rolls-`` or ``, locked`` with a rolling
+        Its ``status``: "finished", or "interrupted" (Ctrl-C or the progress callback), the
+        phases finished and the one under way up to the time reached kept. Regimes named
+        ``stick``, ``slip+``, ``slip-``, ``slip``, ``contact``, ``open`` (one contact;
+        followed by ``, rolls+``, ``, rolls-`` or ``, locked`` with a rolling
         resistance, ``, spins+``, ``, spins-`` or ``, no spin`` with a pivoting one), or
         ``"I: stick; J: slip+"`` (several, by the names of their points).
 
@@ -241,7 +249,9 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         A system without contact, or a contact whose coordinates forbid the motions the
         regimes need (or a rolling resistance on a rolling that is not planar).
     NumericalError
-        A regime whose contact conditions stay dependent (hyperstatic normal forces).
+        A regime whose contact conditions stay dependent (hyperstatic normal forces), or a
+        failed phase (the error's ``motion`` then holds the phases computed until the
+        failure, as a ContactMotion with status "failed").
     ArgumentError
         Missing or unknown parameters, bad initial values, a contact that pulls at t0 or a
         normal velocity at t0.
@@ -292,6 +302,14 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
             raise ArgumentError(f"`u0` separates the contact {c.name}: its normal velocity is "
                                 f"{vn:.6g} at t0 (it must be 0).")
     rules = _Rules(model)
-    motion = integrate_phases(rules.regimes(), rules.start, span, y0, method=method,
-                              rtol=rtol, atol=atol, max_step=max_step, max_phases=max_phases)
-    return ContactMotion(motion.phases, model)
+    try:
+        motion = integrate_phases(rules.regimes(), rules.start, span, y0, method=method,
+                                  rtol=rtol, atol=atol, max_step=max_step,
+                                  max_phases=max_phases, progress=progress)
+    except NumericalError as exc:  # the phases computed until the failure, with actions
+        done = getattr(exc, "motion", None)
+        if done is not None:
+            exc.motion = ContactMotion(done.phases, model, status=done.status,
+                                       message=done.message)
+        raise
+    return ContactMotion(motion.phases, model, status=motion.status, message=motion.message)

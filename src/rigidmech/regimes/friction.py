@@ -28,6 +28,7 @@ import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ..actions.contact_laws import Coulomb
+from ._contact_rules import within_cone
 from .phased import Guard, PhasedMotion, Regime, integrate_phases
 
 __all__ = ["coulomb_oscillator", "cylinder_on_incline", "block_on_wagon", "pushed_box"]
@@ -96,7 +97,7 @@ def coulomb_oscillator(*, mass, stiffness, friction: Coulomb, normal_force, x0, 
 
     def after_stop(t, y):
         spring = -k * y[0]
-        if abs(spring) <= fs * N:
+        if within_cone(abs(spring), fs * N):
             return "stick"
         return "slide+" if spring > 0 else "slide-"
 
@@ -141,7 +142,7 @@ def cylinder_on_incline(*, radius, angle, friction: Coulomb, g=9.81, inertia_fac
     fs, fk = _law(friction)
     sin, cos = math.sin(alpha), math.cos(alpha)
     a_roll = g * sin / (1 + beta)
-    rolls = abs(beta * a_roll) <= fs * g * cos        # friction needed / m <= f_s N / m
+    rolls = within_cone(abs(beta * a_roll), fs * g * cos)   # friction needed / m, f_s N / m
 
     def at_no_slip(t, y):
         if rolls:
@@ -203,7 +204,7 @@ def block_on_wagon(*, acceleration, friction: Coulomb, g=9.81, t_end, rtol=1e-12
         return "slide-" if a(t) > 0 else "slide+"
 
     def after_stop(t, y):
-        return "stick" if abs(a(t)) <= fs * g else direction_of_slip(t)
+        return "stick" if within_cone(abs(a(t)), fs * g) else direction_of_slip(t)
 
     stick = Regime("stick", None, [Guard("slips", lambda t, y: fs * g - abs(a(t)),
                                          target=lambda t, y: direction_of_slip(t),

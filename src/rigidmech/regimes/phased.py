@@ -33,6 +33,8 @@ import numpy as np
 
 from .. import ode
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+from ..dynamics import _run  # the progress delays of simulate (one rule)
+from ..ode._progress import Progress, for_run
 
 __all__ = ["Guard", "Regime", "Phase", "PhasedMotion", "integrate_phases"]
 
@@ -214,11 +216,19 @@ class PhasedMotion:
     2      rest    1      2    -
     """
 
-    __slots__ = ("_phases", "_names")
+    __slots__ = ("_phases", "_names", "status", "message")
 
-    def __init__(self, phases, names=None):
+    def __init__(self, phases, names=None, *, status="finished", message=""):
         self._phases = tuple(phases)
         self._names = tuple(names) if names is not None else None
+        #: how the run ended: "finished" (the end of the interval, or a regime without
+        #: successor), "interrupted" (Ctrl-C, the progress callback) or "failed" (a phase
+        #: failed, too many phases, chattering: see :func:`integrate_phases`); the last
+        #: phase of a run stopped early ends where it stopped (``ended_by`` "interrupted"
+        #: or "failed")
+        self.status = status
+        #: why the run ended early, in words ("" when it finished)
+        self.message = message
 
     phases = property(lambda self: self._phases, doc="The phases, in time order.")
 
@@ -300,7 +310,8 @@ def _terminal(fn, direction):
 
 def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
                      rtol: float = 1e-10, atol: float = 1e-12, max_step: float = math.inf,
-                     max_phases: int = 10_000, max_instant_switches: int = 4) -> PhasedMotion:
+                     max_phases: int = 10_000, max_instant_switches: int = 4,
+                     progress=None) -> PhasedMotion:
     """Integrate a motion phase by phase (ch. 21.4, 23, 24).
 
     Parameters
@@ -318,10 +329,18 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
         Largest number of phases.
     max_instant_switches : int
         Largest number of successive switches that do not advance the time.
+    progress : None, bool, callable or rigidmech.ode._progress.Progress
+        As ``simulate``'s, over the whole interval (all the phases): None (default) a bar on
+        stderr for runs longer than 2 s when stderr is a terminal, True the bar, False
+        nothing, a callable ``progress(t)`` called about every 0.1 s (returning False stops
+        the run).
 
     Returns
     -------
     PhasedMotion
+        With ``status`` "finished", or "interrupted" (Ctrl-C or the progress callback): the
+        phases finished and the one under way up to the time reached (``ended_by``
+        "interrupted").
 
     Raises
     ------
@@ -329,7 +348,9 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
         Unknown regime name, bad interval.
     NumericalError
         A failed phase, too many phases, or switches that do not advance the time
-        (chattering).
+        (chattering). The error's ``motion`` attribute holds the motion computed until then
+        (status "failed"): the phases finished and the failed one up to its last state
+        reached (``ended_by`` "failed").
 
     Examples
     --------
@@ -369,16 +390,54 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
                                 f"{', '.join(by_name)}.")
         return by_name[name]
 
-    phases, t, instant = [], t0, 0
+    prog = progress if isinstance(progress, Progress) else for_run(
+        progress, (t0, t1), every=_run.PROGRESS_EVERY, delay=_run.PROGRESS_DELAY)
+    try:
+        return _phases(check, current, t0, t1, y, prog, method=method, rtol=rtol, atol=atol,
+                       max_step=max_step, max_phases=max_phases,
+                       max_instant_switches=max_instant_switches)
+    finally:
+        if prog is not None and prog is not progress:
+            prog.close()
+
+
+def _stopped(phases, name, t, y, res, how):
+    """The phases followed by the one under way (``name`` from (t, y)) up to the last state
+    it reached, if it made a step (its dense output covers it), ``ended_by`` `how`."""
+    if res.t_stop is not None and res.y_stop is not None and res.t_stop != t \
+            and getattr(res, "sol", None) is not None:
+        phases = [*phases, Phase(name, t, float(res.t_stop), tuple(float(v) for v in y),
+                                 tuple(float(v) for v in np.ravel(res.y_stop)), how, res)]
+    return phases
+
+
+def _fail(phases, message):
+    exc = NumericalError(message)
+    exc.motion = PhasedMotion(phases, status="failed", message=message)
+    return exc
+
+
+def _phases(check, current, t, t1, y, prog, *, method, rtol, atol, max_step, max_phases,
+            max_instant_switches):
+    phases, instant = [], 0
     while True:
         regime = check(current)
         guards = regime.guards
         events = [_terminal(g.function, g.direction) for g in guards] or None
         res = ode.solve(regime.rhs, (t, t1), y, method=method, rtol=rtol, atol=atol,
-                        max_step=max_step, events=events, dense_output=True)
+                        max_step=max_step, events=events, dense_output=True,
+                        **({} if prog is None else {"progress": prog}))
+        if res.status == 2:  # Ctrl-C or the progress callback: what was computed is kept
+            phases = _stopped(phases, regime.name, t, y, res, "interrupted")
+            who = ("the `progress` callback" if prog is not None and prog.stopped
+                   else "Ctrl-C (KeyboardInterrupt)")
+            return PhasedMotion(phases, status="interrupted", message=(
+                f"The integration was stopped by {who} at t = {res.t_stop!r}, in phase "
+                f"{len(phases)} ({regime.name}); the phases up to there are kept."))
         if not res.success:
-            raise NumericalError(f"phase {len(phases) + 1} ({regime.name}) failed at "
-                                 f"t = {res.t[-1]}: {res.message}")
+            message = (f"phase {len(phases) + 1} ({regime.name}) failed at t = "
+                       f"{res.t[-1] if len(res.t) else t}: {res.message}")
+            raise _fail(_stopped(phases, regime.name, t, y, res, "failed"), message)
         t_end, y_end = float(res.t[-1]), res.y[:, -1].copy()
         fired = None
         if res.status == 1:
@@ -393,14 +452,14 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
         nxt = guard.next_regime(t_end, y_end)
         instant = instant + 1 if t_end == t else 0
         if instant > max_instant_switches:
-            raise NumericalError(
+            raise _fail(phases,
                 f"chattering: {instant} switches at t = {t_end} without the time advancing "
                 f"(last: {regime.name} -> {nxt} by '{guard.name}'); the transition rules "
                 "must leave the state where the new regime's guards do not fire at once.")
         if nxt is None or t_end >= t1:
             break
         if len(phases) >= max_phases:
-            raise NumericalError(f"more than `max_phases` = {max_phases} phases before "
-                                 f"t = {t1}; last regime {regime.name} at t = {t_end}.")
+            raise _fail(phases, f"more than `max_phases` = {max_phases} phases before "
+                                f"t = {t1}; last regime {regime.name} at t = {t_end}.")
         y, t, current = guard.reset(t_end, y_end), t_end, nxt
     return PhasedMotion(phases)

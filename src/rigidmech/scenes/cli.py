@@ -190,8 +190,11 @@ def _run(args, out):
     print(report.summary(pretty=args.pretty), file=out)
     sim = report.simulation
     if report.status == "interrupted":
+        stop = sim.t.size > 1 and sim.t[-1] == sim.t_stop   # the state reached, kept
         raise _Interrupted(f"interrupted at t = {sim.t_stop:g} (the samples up to t = "
-                           f"{sim.t[-1]:g} are kept{_outputs(report)})")
+                           f"{sim.t[-2 if stop else -1]:g}"
+                           f"{' and the state reached there' if stop else ''} are kept"
+                           f"{_outputs(report)})")
     if report.status == "failed":
         raise NumericalError(report.message.rstrip(".")
                              + _outputs(report, "; partial output in "))

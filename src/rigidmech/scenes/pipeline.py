@@ -93,9 +93,10 @@ class RunReport:
     nfev, nsteps : int
         Evaluations of the right-hand side and steps of the solver.
     energy_drift : float or None
-        ``max |E(t) - E(0)| / (T(0) + |V(0)|)`` along the motion (None without a potential
-        energy, or when T + V is not conserved by an exact motion: explicit time dependence,
-        dampers; see :meth:`Simulation.energy_not_conserved`).
+        ``max |E(t) - E(0)| / scale`` along the motion (the scale of
+        :meth:`Simulation.energy_scale`; None without a potential energy, or when T + V is
+        not conserved by an exact motion: explicit time dependence, dampers; see
+        :meth:`Simulation.energy_not_conserved`).
     final_q, final_u : tuple of float
         State at ``t_end``.
     plot_path : str or None
