@@ -1,9 +1,17 @@
 """Mechanisms shared by the tests of the systems layer and of the linked parameters: the
 tuple views the tests unpack, of the catalogue's builders (:mod:`rigidmech.models.loops`)."""
 
+import rigidmech as rm
 from rigidmech import models
 
 L0, L1, L2, L3 = models.FOUR_BAR_LENGTHS
+
+
+def bar(name, frame, length, origin, m):
+    """A uniform rod of mass m along ``frame.i`` from ``origin`` (the catalogue's bars)."""
+    G = origin.moved("G" + name, length / 2 * frame.i)
+    return rm.Body(name, frame=frame, mass=m, centre=G,
+                   inertia=rm.inertia.rod(m, length, axis=frame.i, centre=G))
 
 
 def four_bar(lengths=(L0, L1, L2, L3), gravity=True, stabilization=(5.0, 5.0)):
