@@ -181,7 +181,7 @@ def main(argv=None):
     print(header().replace("Planar n-link pendulum: deriving M(q) q'' = f with rigidmech vs "
                            "sympy KanesMethod", "Time to the first rhs: derive, compile, call"),
           flush=True)
-    k8 = run_case(8, "kane8", args.timeout).get("derive", float("nan"))
+    k8 = run_case(8, "kane8", args.timeout, script=__file__).get("derive", float("nan"))
     print(f"Kane-8 (KanesMethod, planar 8-link pendulum, derive): {k8:.2f} s\n", flush=True)
     cols = ("family", "n", "dof", "derive", "compile", "1st call", "call [us]", "first rhs",
             "/Kane-8", "compile/derive", "ops tree", "ops code", "rel diff")
@@ -191,7 +191,7 @@ def main(argv=None):
     results = {"planar": {}, "chain": {}}
     for kind, sizes in (("planar", args.planar), ("chain", args.chain)):
         for n in sizes:
-            r = run_case(n, kind, args.timeout)
+            r = run_case(n, kind, args.timeout, script=__file__)
             results[kind][n] = r
             total = (r["derive"] + r["compile"] + r["first_call"]
                      if all(k in r for k in ("derive", "compile", "first_call")) else None)

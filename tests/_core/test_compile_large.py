@@ -9,7 +9,7 @@ import pytest
 import sympy
 
 import rigidmech as rm
-from rigidmech._core import _codegen
+from rigidmech._core import _codegen, _cse
 from rigidmech._core.compile import compile_expressions, compile_linear_solve
 from rigidmech.dynamics.equations import _t
 
@@ -95,7 +95,7 @@ def test_lighter_cse_shares_about_as_much_as_sympy_cse(equations, monkeypatch):
     params = sorted(equations.parameters, key=lambda s: s.name)
     args = [list(q_s), list(u_s), *params]
     ours = compile_expressions((M, f), args)
-    monkeypatch.setattr(_codegen, "_CSE_OPTIMIZATIONS", [])   # through sympy.cse
+    monkeypatch.setattr(_cse, "_CSE_OPTIMIZATIONS", [])   # through sympy.cse
     theirs = compile_expressions((M, f), args)
     assert ours.n_ops <= 1.02 * theirs.n_ops
     rng = np.random.default_rng(3)

@@ -20,9 +20,9 @@ from sympy.core.function import AppliedUndef
 from sympy.printing.codeprinter import PrintMethodNotImplementedError
 from sympy.printing.numpy import SciPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
-from sympy.simplify.cse_main import match_common_args, tree_cse
 from sympy.tensor.array import NDimArray
 
+from ._cse import common_subexpressions
 from .errors import ArgumentError, ArgumentTypeError, CompilationError
 
 __all__: list[str] = []
@@ -30,12 +30,6 @@ __all__: list[str] = []
 #: Names the generated code needs for itself: module names and builtins used by the printers.
 _RESERVED = frozenset(dir(builtins)) | {"math", "numpy", "scipy", "functools", "self"}
 
-#: cse settings (:func:`common_subexpressions`).  ``optimizations="basic"`` was measured on the
-#: n-link pendulum's Kane equations (benchmarks/compile_rhs.py): at n = 5 it cut no operation and
-#: made cse slower, so it is off (None: rigidmech's lighter pass, not sympy.cse);
-#: ``order="none"`` keeps the (already canonical) order and saves sorting time.
-_CSE_OPTIMIZATIONS = None
-_CSE_ORDER = "none"
 
 #: Printer settings. ``order="none"`` prints the terms of a sum in the order sympy stores them
 #: instead of sorting them (sympy's default ``as_ordered_terms``): the sort was 60 % of the
@@ -93,11 +87,22 @@ class _MathPrinter(_Named, PythonCodePrinter):
 
 
 class _ArrayPrinter(_Named, SciPyPrinter):
-    """numpy / scipy.special printer for the vectorised path."""
+    """numpy / scipy.special printer for the vectorised path.
+
+    Small integer powers of a symbol print as products, as on the single-state path: both
+    paths then round the same products the same way (``x**3`` goes through ``pow``, which may
+    differ from ``x*x*x`` by an ulp, enough to tell the paths apart after a cancellation).
+    """
 
     def __init__(self, names=None):
         super().__init__(_PRINTER_SETTINGS)
         self._names = dict(names or {})
+
+    def _print_Pow(self, expr, rational=False):
+        if expr.base.is_Symbol and expr.exp in (2, 3, -2):
+            product = "*".join([self._print(expr.base)] * abs(int(expr.exp)))
+            return f"(1/({product}))" if expr.exp < 0 else f"({product})"
+        return super()._print_Pow(expr, rational=rational)
 
     def _print_not_supported(self, expr):
         raise CompilationError(
@@ -142,63 +147,6 @@ def variable_names(symbols):
         taken.add(name)
         names.append(name)
     return names
-
-
-def common_subexpressions(flat, use_cse):
-    """Return ``(replacements, reduced)`` for the flat expression list, named ``_x0, _x1, ...``.
-
-    ``sympy.cse`` is two passes, both over the distinct subexpressions (a DAG walk):
-    ``opt_cse`` looks for rewritings that expose more sharing, then ``tree_cse`` names every
-    subexpression met twice. Here ``opt_cse`` is replaced by :func:`_common_arguments`, which
-    keeps its one rewriting that pays on equations of motion (common sub-sums and
-    sub-products, sympy's ``match_common_args``) and drops the negation pass (for every sum
-    and product, can -e be shared with e?), which costs as much and saves nothing there.
-    Measured (benchmarks/first_rhs.py, mass matrix and forcing; seconds, operations of the
-    generated code):
-
-    ==========================  ==================  ==================  ==================
-    equations                    sympy.cse           this                tree_cse alone
-    ==========================  ==================  ==================  ==================
-    3D chain, 4 ball joints      1.99 s, 5775 ops    0.66 s, 5352 ops    0.53 s, 8190 ops
-    3D chain, 6 ball joints      9.58 s, 17044 ops   3.61 s, 15851 ops   0.91 s, 23457 ops
-    planar 20-link pendulum      3.29 s, 11421 ops   2.43 s, 11451 ops   1.45 s, 18141 ops
-    ==========================  ==================  ==================  ==================
-
-    ``tree_cse`` alone is faster still, but its code costs up to twice as much per call.
-    ``_CSE_OPTIMIZATIONS`` other than None go through ``sympy.cse`` (for comparisons).
-    """
-    if not use_cse:
-        return [], list(flat)
-    if _CSE_OPTIMIZATIONS is not None:
-        return sympy.cse(
-            list(flat),
-            symbols=sympy.numbered_symbols("_x"),
-            optimizations=_CSE_OPTIMIZATIONS,
-            order=_CSE_ORDER,
-        )
-    flat = list(flat)
-    return tree_cse(flat, sympy.numbered_symbols("_x"), _common_arguments(flat), _CSE_ORDER)
-
-
-def _common_arguments(flat):
-    """The rewritings of sympy's ``opt_cse`` that share common sub-sums and sub-products
-    (``x + y + z`` and ``sin(x + y)`` share ``x + y``), for ``tree_cse``; one walk over the
-    distinct subexpressions."""
-    opt_subs, adds, muls, seen = {}, {}, {}, set()
-    stack = list(flat)
-    while stack:
-        e = stack.pop()
-        if e.is_Atom or e in seen:
-            continue
-        seen.add(e)
-        stack.extend(e.args)
-        if e.is_Add:
-            adds[e] = None
-        elif e.is_Mul and e.is_commutative:
-            muls[e] = None
-    match_common_args(sympy.Add, list(adds), opt_subs)
-    match_common_args(sympy.Mul, list(muls), opt_subs)
-    return opt_subs
 
 
 _OPERATIONS = (ast.BinOp, ast.UnaryOp, ast.Call, ast.IfExp)
