@@ -12,15 +12,15 @@ Times, per size: derive (build the System, ``equations_of_motion``), compile (th
 ``EquationsOfMotion.rhs(**params)``: cse, code generation, Python's compile), the first call
 f(t, y) and the best later call; the ratios to "Kane-8" (KanesMethod deriving the planar
 8-link pendulum, ``derive.py``, measured in the same run); the operation counts of the
-generated code (``n_ops``: sympy.count_ops over the cse replacements and the reduced
-expressions) and of M, f as trees (``count_ops`` with ``visual=False``, i.e. what the tree
-walk sees); the growth exponents of each over n (log-log least squares). Correctness: the
-compiled q'' against M^-1 f evaluated from the symbolic M and f (one pass over the DAG,
-numpy) at 3 random states, relative to 1e-12.
+generated code (``n_ops``: operators and calls of the generated single-state code) and of M,
+f written out as trees (:func:`tree_operations`: what a tree walk such as sympy's ``cse`` or
+``count_ops`` has to visit); the growth exponents of each over n (log-log least squares).
+Correctness: the compiled q'' against M^-1 f evaluated from the symbolic M and f (one pass over
+the DAG, numpy) at 3 random states, relative to 1e-12.
 
 Run::
 
-    python benchmarks/first_rhs.py                       # planar 5..30, 3D 2..6
+    python benchmarks/first_rhs.py                       # planar 5..30, 3D 2..6 (~10 min)
     python benchmarks/first_rhs.py --planar 5 10 --chain 2 3 4
     python benchmarks/first_rhs.py --profile-chain 4     # cProfile of one compile, top 25
 """
@@ -91,9 +91,30 @@ def _params(system, rng):
     return out
 
 
+def tree_operations(exprs):
+    """Operations of ``exprs`` written out as trees (every shared subexpression counted once
+    per use, as ``sympy.count_ops`` counts them: a sum or product of k terms is k - 1
+    operations, a power or a function 1), computed over the DAG with a memo: count_ops
+    itself walks the trees and takes minutes from a 3D chain of 7 links on."""
+    memo = {}
+
+    def count(e):
+        hit = memo.get(e)
+        if hit is not None:
+            return hit
+        if not e.args:
+            out = 0
+        else:
+            own = len(e.args) - 1 if (e.is_Add or e.is_Mul) else 1
+            out = own + sum(count(a) for a in e.args)
+        memo[e] = out
+        return out
+
+    return sum(count(e) for e in exprs)
+
+
 def case(kind, n):
     import numpy as np
-    import sympy as sp
 
     from rigidmech._core.symbolic import xreplace_shared
 
@@ -120,7 +141,7 @@ def case(kind, n):
           call=_best(lambda: fun(0.0, y)))
     q_s, u_s, _, rule = system.symbols()
     exprs = xreplace_shared(list(eqs.mass_matrix) + list(eqs.forcing), rule)
-    _emit(tree_ops=int(sp.count_ops(exprs)))
+    _emit(tree_ops=tree_operations(exprs))
     by_name = {s.name: s for s in eqs.parameters}
     leaves = {by_name[k_]: v for k_, v in params.items() if k_ in by_name}
     leaves |= dict(zip(q_s, q, strict=True)) | dict(zip(u_s, u, strict=True))
