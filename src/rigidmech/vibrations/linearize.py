@@ -143,10 +143,11 @@ class LinearSystem:
     def numeric(self, **params):
         """(M, C, K, B) as float arrays, with values for :attr:`parameters` given by name.
 
-        The matrices are compiled on the first call (constant subexpressions evaluated to 64
-        digits, entries that vanish made exact zeros: :func:`rigidmech._core.symbolic.
-        fold_numbers`) and cached; a call then costs float arithmetic only. Values for names
-        that are not parameters are ignored; a missing one raises ArgumentError.
+        The matrices are compiled on the first call and cached (constant subexpressions
+        evaluated with 64 digits, entries that vanish made exact zeros: ``fold_numbers`` of
+        ``rigidmech._core.symbolic``); a call then costs float arithmetic only, and a
+        compiled system pickles with its generated code. Values for names that are not
+        parameters are ignored; a missing one raises ArgumentError.
 
         Examples
         --------
