@@ -23,7 +23,7 @@ import numpy as np
 import sympy
 from sympy.physics import mechanics as me
 
-from rigidmech._core import _codegen
+from rigidmech._core import _cse
 from rigidmech._core.compile import compile_linear_solve
 
 BATCH = 1000
@@ -227,10 +227,10 @@ def cse_optimizations(n=5):
     """n_ops and single-state cost with sympy.cse(optimizations=None) vs 'basic'."""
     M, f, q, u, params, *_ = pendulum_kane(n)
     print(f"\nsympy.cse optimizations at n = {n}:")
-    saved = _codegen._CSE_OPTIMIZATIONS
+    saved = _cse._CSE_OPTIMIZATIONS
     try:
         for setting in (None, "basic"):
-            _codegen._CSE_OPTIMIZATIONS = setting
+            _cse._CSE_OPTIMIZATIONS = setting
             result = time_rhs(M, f, q, u, params)
             print(
                 f"  optimizations={setting!r:8} n_ops={result['n_ops']:>6} "
@@ -238,7 +238,7 @@ def cse_optimizations(n=5):
                 f"per state={result['batch'] * 1e6:.2f} us"
             )
     finally:
-        _codegen._CSE_OPTIMIZATIONS = saved
+        _cse._CSE_OPTIMIZATIONS = saved
 
 
 if __name__ == "__main__":

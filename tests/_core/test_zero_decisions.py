@@ -3,6 +3,7 @@
 import ast
 import pathlib
 
+import pytest
 import sympy as sp
 
 import rigidmech
@@ -65,3 +66,28 @@ def test_nonzero_somewhere_decides_cheaply_and_soundly():
     n = sp.Symbol("n", integer=True)
     assert not nonzero_somewhere(sp.Abs(b) + b + sp.Max(b, 0))
     assert not nonzero_somewhere(sp.Function("f")(n) * sp.sin(sp.pi * n))
+
+
+def test_fold_numbers_zero_threshold_at_its_boundary():
+    """An expression vanishes for fold_numbers when its value is at most FOLD_ZERO_RELATIVE
+    times the largest magnitude met evaluating it, at both probe points."""
+    import mpmath
+
+    from rigidmech._core.symbolic import FOLD_DIGITS, FOLD_ZERO_RELATIVE, _vanishes
+
+    with mpmath.workdps(FOLD_DIGITS):
+        edge = FOLD_ZERO_RELATIVE * 7
+        assert _vanishes([edge, -edge], [7, 7])
+        assert not _vanishes([edge * (1 + mpmath.mpf(10) ** -20), 0], [7, 7])
+        assert _vanishes([edge * (1 - mpmath.mpf(10) ** -20), 0], [7, 7])
+        assert not _vanishes(None, None)
+
+
+def test_fold_numbers_keeps_small_values_that_are_not_zero():
+    from rigidmech._core.symbolic import fold_numbers
+
+    tiny = sp.sqrt(2) * sp.Rational(1, 10**30)          # 1e-30 of itself: not a cancellation
+    residue = (sp.sqrt(2) + a) ** 2 - a**2 - 2 * sp.sqrt(2) * a - 2 + sp.Rational(1, 10**30)
+    folded = fold_numbers([tiny * a, residue])
+    assert folded[0] != 0 and folded[1] != 0
+    assert float(folded[0].subs(a, 1)) == pytest.approx(1.4142135623730951e-30, rel=1e-15)

@@ -7,6 +7,7 @@ path (numpy / scipy.special ufuncs over arrays of states).  The generated source
 once with :func:`compile` and kept for inspection and pickling.
 """
 
+import ast
 import builtins
 import functools
 import keyword
@@ -21,6 +22,7 @@ from sympy.printing.numpy import SciPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 from sympy.tensor.array import NDimArray
 
+from ._cse import common_subexpressions
 from .errors import ArgumentError, ArgumentTypeError, CompilationError
 
 __all__: list[str] = []
@@ -28,14 +30,29 @@ __all__: list[str] = []
 #: Names the generated code needs for itself: module names and builtins used by the printers.
 _RESERVED = frozenset(dir(builtins)) | {"math", "numpy", "scipy", "functools", "self"}
 
-#: sympy.cse settings.  ``optimizations="basic"`` was measured on the n-link pendulum's Kane
-#: equations (benchmarks/compile_rhs.py): at n = 5 it cut no operation and made cse slower, so it
-#: is off; ``order="none"`` keeps the (already canonical) order and saves sorting time.
-_CSE_OPTIMIZATIONS = None
-_CSE_ORDER = "none"
+
+#: Printer settings. ``order="none"`` prints the terms of a sum in the order sympy stores them
+#: instead of sorting them (sympy's default ``as_ordered_terms``): the sort was 60 % of the
+#: printing time of the planar 20-link pendulum (benchmarks/first_rhs.py), and the generated
+#: code computes the same floating-point sum in another order only.
+_PRINTER_SETTINGS = {"fully_qualified_modules": True, "strict": True, "order": "none"}
 
 
-class _MathPrinter(PythonCodePrinter):
+class _Named:
+    """Printer mixin: symbols print under the names given at construction (``{symbol: name}``)
+    when they have one, so that a Dummy or a symbol whose name is no identifier needs no
+    rewriting of the expressions (a rewrite of a large DAG costs seconds)."""
+
+    def _print_Symbol(self, expr):
+        name = self._names.get(expr)
+        return name if name is not None else super()._print_Symbol(expr)
+
+    def _print_Dummy(self, expr):
+        name = self._names.get(expr)
+        return name if name is not None else super()._print_Dummy(expr)
+
+
+class _MathPrinter(_Named, PythonCodePrinter):
     """Python printer for the single-state path: floats and the ``math`` module.
 
     Departures from :class:`~sympy.printing.pycode.PythonCodePrinter`:
@@ -48,9 +65,10 @@ class _MathPrinter(PythonCodePrinter):
       scipy/numpy printer: it still works on floats, only slower.
     """
 
-    def __init__(self):
-        super().__init__({"fully_qualified_modules": True, "strict": True})
-        self._fallback = _ArrayPrinter()
+    def __init__(self, names=None):
+        super().__init__(_PRINTER_SETTINGS)
+        self._names = dict(names or {})
+        self._fallback = _ArrayPrinter(names)
 
     def _print_Pow(self, expr, rational=False):
         exponent = expr.exp
@@ -68,11 +86,23 @@ class _MathPrinter(PythonCodePrinter):
         return self._fallback._print(expr)
 
 
-class _ArrayPrinter(SciPyPrinter):
-    """numpy / scipy.special printer for the vectorised path."""
+class _ArrayPrinter(_Named, SciPyPrinter):
+    """numpy / scipy.special printer for the vectorised path.
 
-    def __init__(self):
-        super().__init__({"fully_qualified_modules": True, "strict": True})
+    Small integer powers of a symbol print as products, as on the single-state path: both
+    paths then round the same products the same way (``x**3`` goes through ``pow``, which may
+    differ from ``x*x*x`` by an ulp, enough to tell the paths apart after a cancellation).
+    """
+
+    def __init__(self, names=None):
+        super().__init__(_PRINTER_SETTINGS)
+        self._names = dict(names or {})
+
+    def _print_Pow(self, expr, rational=False):
+        if expr.base.is_Symbol and expr.exp in (2, 3, -2):
+            product = "*".join([self._print(expr.base)] * abs(int(expr.exp)))
+            return f"(1/({product}))" if expr.exp < 0 else f"({product})"
+        return super()._print_Pow(expr, rational=rational)
 
     def _print_not_supported(self, expr):
         raise CompilationError(
@@ -119,24 +149,25 @@ def variable_names(symbols):
     return names
 
 
-def common_subexpressions(flat, use_cse):
-    """Return ``(replacements, reduced)`` for the flat expression list, named ``_x0, _x1, ...``."""
-    if not use_cse:
-        return [], list(flat)
-    replacements, reduced = sympy.cse(
-        list(flat),
-        symbols=sympy.numbered_symbols("_x"),
-        optimizations=_CSE_OPTIMIZATIONS,
-        order=_CSE_ORDER,
-    )
-    return replacements, reduced
+_OPERATIONS = (ast.BinOp, ast.UnaryOp, ast.Call, ast.IfExp)
 
 
-def count_operations(replacements, reduced):
-    """sympy.count_ops over the cse replacements and the reduced expressions."""
-    return int(sum(sympy.count_ops(rhs) for _, rhs in replacements)) + int(
-        sum(sympy.count_ops(e) for e in reduced)
-    )
+def count_operations(printed):
+    """Operations in the printed expressions `printed` (strings of Python code): arithmetic
+    operators, negations, function calls and conditional expressions, counted on their syntax
+    tree.
+
+    Counted on the generated code rather than with ``sympy.count_ops`` over the expressions:
+    the count is the same kind of number (``x*y + 1`` is 2 either way) at a small fraction of
+    the cost (``count_ops`` took 2 s of the compilation of the planar 20-link pendulum).
+
+    Examples
+    --------
+    >>> count_operations(["x*y + 1", "math.sin(-x)"])
+    4
+    """
+    tree = ast.parse("(" + ",\n".join(printed) + ",)", mode="eval") if printed else None
+    return 0 if tree is None else sum(isinstance(node, _OPERATIONS) for node in ast.walk(tree))
 
 
 def body_lines(printer, replacements, indent="    "):
@@ -280,8 +311,7 @@ def _check_exprs(flat, symbols):
             raise CompilationError(
                 f"`exprs` must be numeric expressions; got {type(e).__name__} {e}."
             )
-    everything = sympy.Tuple(*flat)
-    functions = everything.atoms(AppliedUndef, sympy.Derivative)
+    free, functions, imaginary = _scan(flat)
     if functions:
         listed = ", ".join(sorted(map(str, functions)))
         raise CompilationError(
@@ -289,11 +319,11 @@ def _check_exprs(flat, symbols):
             "functions of time and their derivatives first (e.g. with "
             "sympy.physics.mechanics.msubs or xreplace)."
         )
-    if everything.has(sympy.I):
+    if imaginary:
         raise CompilationError(
             "`exprs` contain the imaginary unit I; only real expressions compile."
         )
-    missing = everything.free_symbols - set(symbols)
+    missing = free - set(symbols)
     if missing:
         names = sorted(s.name for s in missing)
         verb = "are" if len(names) > 1 else "is"
@@ -301,6 +331,36 @@ def _check_exprs(flat, symbols):
             f"`exprs` depend on {', '.join(names)} which {verb} not in `args`; pass them as "
             "arguments or substitute values first."
         )
+
+
+def _scan(flat):
+    """``(free symbols, functions of time and derivatives, whether I occurs)`` of `flat`, in
+    one walk over its distinct subexpressions.
+
+    Derived equations are DAGs: the same subexpression is shared by many entries, and sympy's
+    ``atoms``, ``has`` and ``free_symbols`` walk them as trees (every path again: 17 s of the
+    compilation of a 3D chain of 4 links on ball joints); this walk visits each distinct node
+    once.
+    """
+    seen, free, functions, imaginary = set(), set(), set(), False
+    stack = list(flat)
+    while stack:
+        e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
+        if e.is_Symbol:
+            free.add(e)
+        elif e is sympy.I:
+            imaginary = True
+        elif isinstance(e, (AppliedUndef, sympy.Derivative)):
+            functions.add(e)
+            stack.extend(e.args)
+        elif getattr(e, "bound_symbols", None):
+            free |= e.free_symbols
+        else:
+            stack.extend(e.args)
+    return free, functions, imaginary
 
 
 def _check_name(name):
@@ -313,22 +373,26 @@ def _check_name(name):
 class _Prepared:
     """The compile-time pieces shared by both generated paths."""
 
-    __slots__ = ("labels", "names", "n_ops", "reduced", "replacements", "sizes", "symbols")
+    __slots__ = ("labels", "math_reduced", "math_replacements", "names", "n_ops",
+                 "printed_names", "reduced", "replacements", "sizes", "symbols")
 
     def __init__(self, flat, args, use_cse):
         groups, sizes = _normalise_args(args)
         symbols = [s for group in groups for s in group]
         _check_exprs(flat, symbols)
         names = variable_names(symbols)
-        renaming = {
-            s: sympy.Symbol(n)
-            for s, n in zip(symbols, names, strict=True)
-            if n != s.name or isinstance(s, sympy.Dummy) or s.assumptions0
+        # a symbol prints under another name when its own is not usable (a Dummy, a name that
+        # is no identifier, a name taken twice): the printers rename it, not the expressions
+        self.printed_names = {
+            s: n for s, n in zip(symbols, names, strict=True)
+            if n != s.name or isinstance(s, sympy.Dummy)
         }
-        if renaming:
-            flat = [e.xreplace(renaming) for e in flat]
         self.replacements, self.reduced = common_subexpressions(flat, use_cse)
-        self.n_ops = count_operations(self.replacements, self.reduced)
+        # the single-state path's printing, once: its code and its operation count
+        printer = _MathPrinter(self.printed_names)
+        self.math_replacements = [print_expr(printer, rhs) for _, rhs in self.replacements]
+        self.math_reduced = [print_expr(printer, e) for e in self.reduced]
+        self.n_ops = count_operations(self.math_replacements + self.math_reduced)
         self.sizes = sizes
         self.symbols = tuple(groups)
         self.names = names
@@ -336,6 +400,15 @@ class _Prepared:
             g[0].name if size == 0 else "[" + ", ".join(s.name for s in g) + "]"
             for g, size in zip(groups, sizes, strict=True)
         )
+
+    def array_printer(self):
+        """The printer of the vectorised path, with the names of the arguments."""
+        return _ArrayPrinter(self.printed_names)
+
+    def math_body(self):
+        """Assignment lines of the cse replacements for the single-state path."""
+        return [f"    {lhs} = {rhs}" for (lhs, _), rhs in
+                zip(self.replacements, self.math_replacements, strict=True)]
 
     def signatures(self):
         """Parameter lists of the single-state and vectorised functions, and the unpack lines."""
@@ -367,21 +440,22 @@ def _describe(template):
     return f"[{inner}]"
 
 
-def _output_code(template, reduced, printer_math, printer_array):
-    """Return ``(single_return, batched_lines, batched_return)`` for the output `template`."""
+def _output_code(template, reduced, math_reduced, printer_array):
+    """Return ``(single_return, batched_lines, batched_return)`` for the output `template`;
+    `math_reduced` are the reduced expressions printed for the single-state path."""
     counter = [0]
     batched_lines = []
 
     def single(t):
         kind = t[0]
         if kind == "scalar":
-            return f"float({print_expr(printer_math, reduced[t[1]])})"
+            return f"float({math_reduced[t[1]]})"
         if kind == "array":
             shape, start = t[1], t[2]
             size = int(np.prod(shape, dtype=int))
             if size == 0:
                 return f"numpy.zeros({shape})"
-            items = [print_expr(printer_math, e) for e in reduced[start : start + size]]
+            items = math_reduced[start : start + size]
             return f"numpy.array({nested_literal(items, shape)}, dtype=float)"
         parts = [single(c) for c in t[1]]
         if kind == "tuple":

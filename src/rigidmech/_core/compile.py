@@ -260,8 +260,9 @@ class CompiledFunction(_Compiled):
     args : tuple of tuple of sympy.Symbol
         The argument symbols, one tuple per argument (of length 1 for a scalar argument).
     n_ops : int
-        Operation count of the generated code: ``sympy.count_ops`` over the cse replacements
-        and the reduced expressions.
+        Operation count of the generated code (single-state path): arithmetic operators,
+        negations and function calls of the cse replacements and the reduced expressions
+        (:func:`rigidmech._core._codegen.count_operations`).
     source : str
         The generated Python source, for inspection.
 
@@ -378,14 +379,14 @@ def compile_expressions(exprs, args, *, name="f", cse=True):
     flat = []
     template = _flatten_exprs(exprs, flat)
     prepared = _Prepared(flat, args, cse)
-    printer_math, printer_array = _codegen._MathPrinter(), _codegen._ArrayPrinter()
+    printer_array = prepared.array_printer()
     single_params, batched_params, unpack = prepared.signatures()
     single_return, batched_out_lines, batched_return = _output_code(
-        template, prepared.reduced, printer_math, printer_array
+        template, prepared.reduced, prepared.math_reduced, printer_array
     )
     single_source = "\n".join(
         [f"def {name}_single({', '.join(single_params)}):"]
-        + _codegen.body_lines(printer_math, prepared.replacements)
+        + prepared.math_body()
         + [f"    return {single_return}"]
     )
     batched_source = "\n".join(
@@ -711,7 +712,7 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
         a_index = [(i, j) for i in range(n) for j in range(n)]
     flat = [sympy.sympify(A[i, j]) for i, j in a_index] + [sympy.sympify(e) for e in b_items]
     prepared = _Prepared(flat, args, cse)
-    printer_math, printer_array = _codegen._MathPrinter(), _codegen._ArrayPrinter()
+    printer_array = prepared.array_printer()
     single_params, batched_params, unpack = prepared.signatures()
     reduced = prepared.reduced
     a_locals = [f"_a{i}_{j}" for i, j in a_index]
@@ -723,10 +724,10 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
     unrolled = symmetric and n <= UNROLLED_CHOLESKY_MAX_N
     single_lines = (
         [f"def {name}_single({', '.join(single_params)}):"]
-        + _codegen.body_lines(printer_math, prepared.replacements)
+        + prepared.math_body()
         + [
-            f"    {local} = {_codegen.print_expr(printer_math, e)}"
-            for local, e in zip(a_locals + b_locals, reduced, strict=True)
+            f"    {local} = {printed}"
+            for local, printed in zip(a_locals + b_locals, prepared.math_reduced, strict=True)
         ]
         + (_cholesky_lines(n) if unrolled else [])
         + [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]

@@ -30,6 +30,7 @@ from .._core.errors import ArgumentError, SingularMassMatrixError
 from .._core.symbolic import is_identically_zero
 from .._core.validation import as_declared
 from ._jet import values_and_jacobian
+from ._numeric import compiled_matrices, state_matrix
 from ._symbols import normalise
 from .modes import Modes, harmonic_response_direct, natural_modes
 
@@ -183,6 +184,12 @@ class LinearSystem:
     def numeric(self, **params):
         """(M, C, K, B) as float arrays, with values for :attr:`parameters` given by name.
 
+        The matrices are compiled on the first call and cached (constant subexpressions
+        evaluated with 64 digits, entries that vanish made exact zeros: ``fold_numbers`` of
+        ``rigidmech._core.symbolic``); a call then costs float arithmetic only, and a
+        compiled system pickles with its generated code. Values for names that are not
+        parameters are ignored; a missing one raises ArgumentError.
+
         Examples
         --------
         >>> import sympy as sp
@@ -193,18 +200,7 @@ class LinearSystem:
         >>> linearize(eqs).numeric(k=4.0)[2].tolist()
         [[4.0]]
         """
-        names = {p.name: p for p in self.parameters}
-        missing = sorted(set(names) - set(params))
-        if missing:
-            raise ArgumentError(
-                f"missing values for parameters {missing}; pass them as keywords, e.g. "
-                f"{', '.join(f'{m}=1.0' for m in missing)}.")
-        values = {names[k]: v for k, v in params.items() if k in names}
-        out = []
-        for X in (self.M, self.C, self.K, self.B):
-            out.append(np.array(X.xreplace(values).evalf().tolist(), dtype=float)
-                       .reshape(X.shape))
-        return tuple(out)
+        return compiled_matrices(self)(params)
 
     def modes(self, **params) -> Modes:
         """Natural modes of M δq'' + K δq = 0 (damping ignored): closed form for symbolic
@@ -242,10 +238,7 @@ class LinearSystem:
         [-1.0, -1.0]
         """
         M, C, K, _ = self.numeric(**params)
-        n = self.n
-        A = np.block([[np.zeros((n, n)), np.eye(n)],
-                      [-np.linalg.solve(M, K), -np.linalg.solve(M, C)]])
-        return np.linalg.eigvals(A)
+        return np.linalg.eigvals(state_matrix(M, C, K))
 
     def frequency_response(self, omega, force=None, *, input=None, **params):
         """Complex amplitudes of the steady response to a harmonic force
