@@ -1,0 +1,200 @@
+"""Build a :class:`~rigidmech.testing.fuzz.Model` in sympy.physics.mechanics, independently.
+
+Nothing of rigidmech is used: frames are ``ReferenceFrame.orientnew`` (``"Axis"`` for an
+elementary rotation, ``"Body"`` for three body-fixed angles), points ``Point.locatenew``,
+every velocity is the derivative in N of the position from the fixed origin
+(``pos_from(O).dt(N)``), bodies ``RigidBody`` and the equations come from ``KanesMethod``
+with the kinematic differential equations u = q', so that Kane's speeds are the coordinates'
+derivatives. The actions are written out by hand from their definitions (ch. 11-14): a
+spring's force -k (l - l0) AB / l on B, a damper's -c l' AB / l, a torsional damper's couple
+-c (omega(S/parent) . e) e.
+
+Inertia convention: ``sympy.physics.mechanics.inertia(frame, ixx, iyy, izz, ixy, iyz, izx)``
+takes the tensor's entries, whose off-diagonal ones are minus the book's products of inertia:
+``ixy = -F, iyz = -D, izx = -E`` (ch. 15.1.3).
+
+Examples
+--------
+>>> from rigidmech.testing.fuzz import BodySpec, Model, to_sympy
+>>> kane = to_sympy(Model(bodies=(BodySpec(name="b0", parent=-1, joint="prismatic"),),
+...                       gravity=(0.0, 0.0, -2.0)))
+>>> kane.mass_matrix, kane.forcing
+(Matrix([[1.0]]), Matrix([[-2.0]]))
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+from sympy.physics import mechanics as me
+
+from .description import Model, coordinate_names
+
+__all__ = ["to_sympy", "constant_dcm"]
+
+
+def _basis(frame):
+    return (frame.x, frame.y, frame.z)
+
+
+def _comps(frame, xyz):
+    x, y, z = _basis(frame)
+    return xyz[0] * x + xyz[1] * y + xyz[2] * z
+
+
+def constant_dcm(rotations):
+    """``F.dcm(parent)`` (numbers) of the frame F obtained from ``parent`` by the successive
+    body-fixed rotations ``(axis index, angle)``: the product of the elementary direction
+    cosine matrices, last rotation on the left.
+
+    Examples
+    --------
+    >>> from sympy.physics.mechanics import ReferenceFrame
+    >>> N = ReferenceFrame("N")
+    >>> A = N.orientnew("A", "Axis", [0.3, N.x]).orientnew("B", "Axis", [-1.2, N.y])
+    >>> import numpy as np
+    >>> bool(np.allclose(np.array(A.dcm(N), dtype=float), constant_dcm(((0, 0.3), (1, -1.2)))))
+    False
+    >>> A = N.orientnew("A", "Axis", [0.3, N.x])
+    >>> A = A.orientnew("B", "Axis", [-1.2, A.y])
+    >>> bool(np.allclose(np.array(A.dcm(N), dtype=float), constant_dcm(((0, 0.3), (1, -1.2)))))
+    True
+    """
+    D = np.eye(3)
+    for axis, angle in rotations:
+        c, s = np.cos(angle), np.sin(angle)
+        E = np.eye(3)
+        j, k = (axis + 1) % 3, (axis + 2) % 3
+        E[j, j] = E[k, k] = c
+        E[j, k], E[k, j] = s, -s
+        D = E @ D
+    return D
+
+
+def _turn(frame, rotations, name):
+    """``frame`` turned by constant rotations, as one frame oriented by its (numerical)
+    direction cosine matrix: a chain of constant frames would make Kane's method multiply
+    their matrices symbol by symbol (several times slower)."""
+    if not rotations:
+        return frame
+    F = me.ReferenceFrame(name)
+    F.orient_explicit(frame, sp.Matrix(constant_dcm(rotations).T))  # sets F.dcm(frame)=D
+    return F
+
+
+def _angles(F, seq, a, name):
+    return F.orientnew(name, "Body", list(a), "".join(str(s + 1) for s in seq))
+
+
+def _joint(b, F, P, q):
+    """(C, origin of C) for the joint of ``b`` from the mount frame F at P."""
+    n, e = b.name, _basis(F)[b.axis]
+    u, v = _basis(F)[(b.axis + 1) % 3], _basis(F)[(b.axis + 2) % 3]
+    kind = b.joint
+    if kind == "pivot":
+        return F.orientnew(f"{n}_C", "Axis", [q[0], e]), P
+    if kind == "prismatic":
+        return F, P.locatenew(f"{n}_S", q[0] * e)
+    if kind == "cylindrical":
+        return F.orientnew(f"{n}_C", "Axis", [q[0], e]), P.locatenew(f"{n}_S", q[1] * e)
+    if kind == "helical":
+        h = sp.Float(b.pitch) / (2 * sp.pi)
+        return F.orientnew(f"{n}_C", "Axis", [q[0], e]), P.locatenew(f"{n}_S", h * q[0] * e)
+    if kind == "spherical":
+        return _angles(F, b.angles, q, f"{n}_C"), P
+    if kind == "planar":
+        return (F.orientnew(f"{n}_C", "Axis", [q[2], e]),
+                P.locatenew(f"{n}_S", q[0] * u + q[1] * v))
+    if kind == "annular":
+        return _angles(F, b.angles, q[1:], f"{n}_C"), P.locatenew(f"{n}_S", q[0] * e)
+    if kind == "point":
+        return (_angles(F, b.angles, q[2:], f"{n}_C"),
+                P.locatenew(f"{n}_S", q[0] * u + q[1] * v))
+    if kind == "free":
+        return _angles(F, b.angles, q[3:], f"{n}_C"), P.locatenew(f"{n}_S", _comps(F, q[:3]))
+    if kind == "polar":
+        H = F.orientnew(f"{n}_H", "Axis", [q[1], e])
+        return F, P.locatenew(f"{n}_S", q[0] * _basis(H)[(b.axis + 1) % 3])
+    raise ValueError(f"unknown joint {kind!r}")
+
+
+def to_sympy(model: Model) -> me.KanesMethod:
+    """The ``KanesMethod`` of ``model``, its equations formed.
+
+    Its ``q`` are ``dynamicsymbols`` named as :func:`~rigidmech.testing.fuzz.coordinate_names`
+    and its ``u`` the speeds with u = q' (``mass_matrix`` and ``forcing`` give
+    M(q) u' = f(q, u)).
+    """
+    names = coordinate_names(model)
+    q = dict(zip(names, me.dynamicsymbols(names), strict=True)) if len(names) > 1 else {
+        names[0]: me.dynamicsymbols(names[0])}
+    N = me.ReferenceFrame("N")
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    W = _turn(N, model.ground, "W")
+    OW = O.locatenew("OW", _comps(N, model.ground_origin))
+
+    def moving(point):
+        point.set_vel(N, point.pos_from(O).dt(N))
+        return point
+
+    frames, origins, mounts, rigid = [], [], [], []
+    for b in model.bodies:
+        Pf, Po = (W, OW) if b.parent < 0 else (frames[b.parent], origins[b.parent])
+        P = Po.locatenew(f"{b.name}_P", _comps(Pf, b.at))
+        F = _turn(Pf, b.mount, f"{b.name}_F")
+        qb = [q[f"{model.prefix}_{b.name}_{k}"] for k in range(len(b.joint_kinds))]
+        C, Oc = _joint(b, F, P, qb)
+        B = _turn(C, b.twist, f"{b.name}_B")
+        G = moving(Oc.locatenew(f"{b.name}_G", _comps(B, b.centre)))
+        A, Bm, Cm, D, E, Fp = b.inertia
+        inertia = me.inertia(B, A, Bm, Cm, ixy=-Fp, iyz=-D, izx=-E)
+        rigid.append(me.RigidBody(b.name, G, B, b.mass, (inertia, G)))
+        frames.append(B)
+        origins.append(Oc)
+        mounts.append(F)
+
+    def point(k, xyz, label):
+        frame, origin = (W, OW) if k < 0 else (frames[k], origins[k])
+        return moving(origin.locatenew(label, _comps(frame, xyz)))
+
+    loads = []
+    if model.gravity is not None:
+        g = _comps(W, model.gravity)
+        loads += [(body.masscenter, body.mass * g) for body in rigid]
+    for j, s in enumerate(model.springs + model.dampers):
+        A_, B_ = point(s.body_a, s.a, f"A{j}"), point(s.body_b, s.b, f"B{j}")
+        AB = B_.pos_from(A_)
+        length = sp.sqrt(AB.dot(AB))
+        if hasattr(s, "k"):
+            tension = s.k * (length - s.l0)
+        else:
+            tension = s.c * AB.dot(B_.vel(N) - A_.vel(N)) / length
+        force = -tension * AB / length
+        if s.body_b >= 0:
+            loads.append((B_, force))
+        if s.body_a >= 0:
+            loads.append((A_, -force))
+    for c in model.torques:
+        M = _comps(frames[c.body], c.moment)
+        loads.append((frames[c.body], M))
+        parent = model.bodies[c.body].parent
+        if c.reaction and parent >= 0:
+            loads.append((frames[parent], -M))
+    for j, f in enumerate(model.forces):
+        loads.append((point(f.body, f.at, f"Fa{j}"), _comps(W, f.vector)))
+    for d in model.torsional_dampers:
+        parent = model.bodies[d.body].parent
+        e = _basis(mounts[d.body])[model.bodies[d.body].axis]
+        Bp = N if parent < 0 else frames[parent]
+        M = -d.c * (frames[d.body].ang_vel_in(N) - Bp.ang_vel_in(N)).dot(e) * e
+        loads.append((frames[d.body], M))
+        if parent >= 0:
+            loads.append((frames[parent], -M))
+    qs = [q[n] for n in names]
+    us = me.dynamicsymbols([f"u_{n}" for n in names]) if len(names) > 1 else [
+        me.dynamicsymbols(f"u_{names[0]}")]
+    kane = me.KanesMethod(N, q_ind=qs, u_ind=us,
+                          kd_eqs=[qi.diff() - ui for qi, ui in zip(qs, us, strict=True)])
+    kane.kanes_equations(rigid, loads)
+    return kane

@@ -1,0 +1,181 @@
+"""Compare the accelerations of one model built by rigidmech and by sympy.physics.mechanics.
+
+Both sides are reduced to numbers the same way: at a random state (q, q') the accelerations
+q'' solve M q'' = f. rigidmech's side is the compiled right-hand side
+:meth:`~rigidmech.EquationsOfMotion.rhs` (what a simulation runs); sympy's side is
+``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), lambdified and solved by
+``numpy.linalg.solve``. Coordinates are matched by name.
+
+Tolerance: :data:`RTOL` relative to the largest |q''| of the state (at least
+:data:`SCALE_FLOOR`). Both sides evaluate
+closed forms of the same mechanics in double precision at states away from the singular
+sets of the angles (see :func:`~rigidmech.testing.fuzz.description.coordinate_ranges`);
+states where sympy's mass matrix has a condition number above :data:`MAX_CONDITION` are
+drawn again, so that an agreement to about 1e-12 is expected and 1e-8 leaves a wide margin,
+while a modelling error (a whole term) is far above it.
+
+Examples
+--------
+>>> from rigidmech.testing.fuzz import BodySpec, Model, compare
+>>> report = compare(Model(bodies=(BodySpec(name="b0", parent=-1, joint="pivot",
+...                                         centre=(0.5, 0.0, 0.0)),),
+...                        gravity=(0.0, -9.81, 0.0)), seed=0)
+>>> report.status, report.worst < 1e-10
+('agree', True)
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from .build_rigidmech import to_rigidmech
+from .build_sympy import to_sympy
+from .description import Model, coordinate_names, coordinate_ranges
+
+__all__ = ["RTOL", "MAX_CONDITION", "Report", "compare", "rigidmech_accelerations",
+           "sympy_accelerations", "random_states"]
+
+#: relative tolerance on q'' (of the largest |q''| of the state)
+RTOL = 1e-8
+#: accelerations below this size are compared in absolute terms (a state where every q'' is
+#: zero, such as a body at rest with no action, is not a relative disagreement of round-off)
+SCALE_FLOOR = 1e-6
+#: states whose mass matrix is worse conditioned are drawn again
+MAX_CONDITION = 1e6
+
+
+@dataclass(frozen=True)
+class Report:
+    """Outcome of :func:`compare`.
+
+    ``status`` is ``'agree'``, ``'disagree'`` (q'' differ beyond the tolerance),
+    ``'coordinates'`` (the two sides do not have the same coordinates), ``'rigidmech-error'``
+    or ``'sympy-error'`` (one side raised: ``detail`` holds the message), or ``'degenerate'``
+    (no state with a well-conditioned mass matrix was found). ``worst`` is the largest
+    relative difference seen; ``seconds`` the time of each side (build, derive, evaluate).
+    """
+
+    model: Model
+    status: str
+    worst: float = 0.0
+    detail: str = ""
+    seconds: tuple = (0.0, 0.0)
+
+    @property
+    def ok(self) -> bool:
+        """True unless the two sides disagree (``degenerate`` counts as agreement)."""
+        return self.status in ("agree", "degenerate")
+
+
+def _name(q):
+    return q.func.__name__
+
+
+def rigidmech_accelerations(system):
+    """(names, function of (q, u) arrays in that order -> q'') from a rigidmech System."""
+    eqs = system.equations_of_motion()
+    names = [_name(q) for q in eqs.coordinates]
+    n = len(names)
+    cache = []
+
+    def qdd(q, u):
+        if not cache:  # compiled when first needed: not when the coordinates differ
+            cache.append(eqs.rhs())
+        return np.asarray(cache[0](0.0, np.concatenate([q, u])), dtype=float)[n:]
+
+    return names, qdd
+
+
+def sympy_accelerations(kane):
+    """(names, function of (q, u) -> (q'', condition number of M)) from a KanesMethod."""
+    names = [_name(q) for q in kane.q]
+    qs = [sp.Symbol(f"_q{k}") for k in range(len(names))]
+    us = [sp.Symbol(f"_u{k}") for k in range(len(names))]
+    rule = {**dict(zip(kane.u, us, strict=True)), **dict(zip(kane.q, qs, strict=True))}
+    # common subexpressions: Kane's forcing repeats the partial velocities (cse prints it
+    # about 3 times faster than the plain expression)
+    Mf = sp.lambdify([qs, us], [kane.mass_matrix.xreplace(rule), kane.forcing.xreplace(rule)],
+                     "numpy", cse=True)
+
+    def qdd(q, u):
+        M, f = (np.array(x, dtype=float) for x in Mf(q, u))
+        return np.linalg.solve(M, f.reshape(-1)), np.linalg.cond(M)
+
+    return names, qdd
+
+
+def random_states(model: Model, rng, count):
+    """``count`` pairs of arrays (q, u) in the order of ``coordinate_names(model)``."""
+    ranges = coordinate_ranges(model)
+    names = coordinate_names(model)
+    out = []
+    for _ in range(count):
+        q = np.array([rng.uniform(*ranges[n]) for n in names])
+        out.append((q, rng.uniform(-2.0, 2.0, len(names))))
+    return out
+
+
+def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None) -> Report:
+    """Build ``model`` on both sides and compare q'' at ``states`` random states.
+
+    Parameters
+    ----------
+    model : Model
+    seed : int
+        Seed of the random states.
+    states : int
+        Number of states compared.
+    rtol : float
+        Tolerance relative to the largest |q''| of each state.
+    coordinates : sequence of str, optional
+        Order of the coordinates given to rigidmech's System.
+    """
+    t0 = time.perf_counter()
+    try:
+        names_rm, ours = rigidmech_accelerations(to_rigidmech(model, coordinates=coordinates))
+    except Exception as exc:  # noqa: BLE001 -- any failure of one side is a finding
+        return Report(model, "rigidmech-error", detail=f"{type(exc).__name__}: {exc}",
+                      seconds=(time.perf_counter() - t0, 0.0))
+    t1 = time.perf_counter()
+    try:
+        names_sp, theirs = sympy_accelerations(to_sympy(model))
+    except Exception as exc:  # noqa: BLE001
+        return Report(model, "sympy-error", detail=f"{type(exc).__name__}: {exc}",
+                      seconds=(t1 - t0, time.perf_counter() - t1))
+    t2 = time.perf_counter()
+    if sorted(names_rm) != sorted(names_sp):
+        return Report(model, "coordinates", detail=f"rigidmech {names_rm}, sympy {names_sp}",
+                      seconds=(t1 - t0, t2 - t1))
+    order = [names_sp.index(n) for n in names_rm]
+    rng = np.random.default_rng(seed)
+    worst, compared, tried, detail = 0.0, 0, 0, ""
+    t_rm = t_sp = 0.0
+    while compared < states and tried < 20 * states:
+        tried += 1
+        q, u = random_states(model, rng, 1)[0]
+        s0 = time.perf_counter()
+        b, cond = theirs(q, u)
+        s1 = time.perf_counter()
+        if not cond < MAX_CONDITION:
+            continue
+        a = ours(q[order], u[order])
+        t_rm += time.perf_counter() - s1
+        t_sp += s1 - s0
+        b = b[order]
+        scale = max(float(np.max(np.abs(b))), float(np.max(np.abs(a))), SCALE_FLOOR)
+        err = float(np.max(np.abs(a - b))) / scale if np.all(np.isfinite(a)) else np.inf
+        compared += 1
+        if not err <= worst:
+            worst = err
+            detail = (f"at q={dict(zip(names_rm, q[order].round(6).tolist(), strict=True))}, "
+                      f"q'={dict(zip(names_rm, u[order].round(6).tolist(), strict=True))}: "
+                      f"rigidmech q''={a.tolist()}, sympy q''={b.tolist()}")
+    seconds = (t1 - t0 + t_rm, t2 - t1 + t_sp)
+    if compared == 0:
+        return Report(model, "degenerate", detail="no well-conditioned state", seconds=seconds)
+    status = "agree" if worst <= rtol else "disagree"
+    return Report(model, status, worst, detail if status != "agree" else "", seconds)
