@@ -26,11 +26,15 @@ from .description import Model, coordinate_names
 __all__ = ["to_rigidmech", "ground_frame"]
 
 
+_EXACT = [True]
+
+
 def _x(value):
     """A number of the description as an exact rational (the grid values are binary
     fractions, so nothing is rounded): rigidmech decides joint checks exactly with
-    ``simplify``, and float round-off (1e-16 q') is not zero to it."""
-    return sp.Rational(value)
+    ``simplify``, and float round-off (1e-16 q') is not zero to it. Floats with
+    ``to_rigidmech(..., exact=False)``."""
+    return sp.Rational(value) if _EXACT[-1] else float(value)
 
 
 def _basis(frame):
@@ -128,7 +132,7 @@ def _coordinates(model):
     return dict(zip(names, qs if isinstance(qs, tuple) else (qs,), strict=True))
 
 
-def to_rigidmech(model: Model, *, coordinates=None):
+def to_rigidmech(model: Model, *, coordinates=None, exact=True):
     """The :class:`rigidmech.System` of ``model`` (Galilean frame ``R0``).
 
     Parameters
@@ -137,12 +141,22 @@ def to_rigidmech(model: Model, *, coordinates=None):
     coordinates : sequence of str, optional
         Names of the coordinates in the order the system should use (given to
         :class:`~rigidmech.System`); default: rigidmech's own order.
+    exact : bool
+        Give rigidmech the numbers as exact rationals (default) or as floats.
 
     Returns
     -------
     System
         Its bodies in the order of ``model.bodies``.
     """
+    _EXACT.append(bool(exact))
+    try:
+        return _build(model, coordinates)
+    finally:
+        _EXACT.pop()
+
+
+def _build(model, coordinates):
     q = _coordinates(model)
     R0 = rm.Frame("R0")
     W = ground_frame(R0, model)

@@ -119,7 +119,8 @@ def random_states(model: Model, rng, count):
     return out
 
 
-def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None) -> Report:
+def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
+            builders=(to_rigidmech, to_sympy)) -> Report:
     """Build ``model`` on both sides and compare q'' at ``states`` random states.
 
     Parameters
@@ -133,16 +134,21 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None) -> R
         Tolerance relative to the largest |q''| of each state.
     coordinates : sequence of str, optional
         Order of the coordinates given to rigidmech's System.
+    builders : (callable, callable)
+        The two builders (model -> System, model -> KanesMethod); the tests plant errors
+        through them to check that a disagreement is seen.
     """
     t0 = time.perf_counter()
     try:
-        names_rm, ours = rigidmech_accelerations(to_rigidmech(model, coordinates=coordinates))
+        system = (builders[0](model, coordinates=coordinates) if coordinates is not None
+                  else builders[0](model))
+        names_rm, ours = rigidmech_accelerations(system)
     except Exception as exc:  # noqa: BLE001 -- any failure of one side is a finding
         return Report(model, "rigidmech-error", detail=f"{type(exc).__name__}: {exc}",
                       seconds=(time.perf_counter() - t0, 0.0))
     t1 = time.perf_counter()
     try:
-        names_sp, theirs = sympy_accelerations(to_sympy(model))
+        names_sp, theirs = sympy_accelerations(builders[1](model))
     except Exception as exc:  # noqa: BLE001
         return Report(model, "sympy-error", detail=f"{type(exc).__name__}: {exc}",
                       seconds=(t1 - t0, time.perf_counter() - t1))

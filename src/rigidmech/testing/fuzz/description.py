@@ -36,6 +36,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..._core.errors import ArgumentError
+
 __all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
            "TorsionalDamperSpec", "Model", "coordinate_names", "coordinate_kinds"]
 
@@ -178,14 +180,16 @@ class Model:
     def __post_init__(self):
         for k, b in enumerate(self.bodies):
             if not -1 <= b.parent < k:
-                raise ValueError(f"body {k} ({b.name}) must hang from an earlier body or the "
-                                 f"ground (-1); got parent {b.parent}.")
+                raise ArgumentError(
+                    f"`bodies[{k}].parent` must be an earlier body's index or -1 (the ground); "
+                    f"got {b.parent}. List every parent before its children.")
             if b.joint not in JOINTS:
-                raise ValueError(f"unknown joint {b.joint!r} of body {b.name}; expected one "
-                                 f"of {sorted(JOINTS)}.")
+                raise ArgumentError(
+                    f"`bodies[{k}].joint` must be one of {sorted(JOINTS)}; got {b.joint!r}.")
             if b.joint == "free" and b.parent != -1:
-                raise ValueError(f"a free body hangs from the ground; {b.name} has parent "
-                                 f"{b.parent}.")
+                raise ArgumentError(
+                    f"`bodies[{k}].parent` must be -1 for a free body (it hangs from the "
+                    f"ground); got {b.parent}. Use another joint to carry it on a body.")
 
     @property
     def degrees_of_freedom(self) -> int:
