@@ -7,9 +7,13 @@ by the hypothesis strategy :func:`rigidmech.testing.fuzz.strategies.models` (a s
 module: hypothesis is a test dependency, never imported by ``import rigidmech``). Two
 builders read the same description independently: :func:`to_rigidmech` (rigidmech's public
 API) and :func:`to_sympy` (``KanesMethod``); :func:`compare` evaluates both at random states
-and returns a :class:`Report`. :mod:`rigidmech.testing.fuzz.transforms` gives the metamorphic
-transformations (Galilean frame turned or moved, bodies connected in another order, units
-scaled).
+and returns a :class:`Report`; :func:`compare_action` compares the action in one joint
+(rigidmech's ``connection_components`` against Kane's auxiliary speeds, ``u_auxiliary``).
+:mod:`rigidmech.testing.fuzz.transforms` gives the metamorphic transformations (Galilean
+frame turned or moved, bodies connected in another order, units scaled).
+
+The models are trees of the joints of :data:`JOINTS` (book, ch. 13.2.2); closing joints,
+rolling contacts and knife edges are not drawn yet.
 
 Examples
 --------
@@ -23,7 +27,7 @@ True
 from . import transforms
 from .build_rigidmech import to_rigidmech
 from .build_sympy import to_sympy
-from .compare import RTOL, Report, compare
+from .compare import RTOL, Report, compare, compare_action
 from .description import (
     JOINTS,
     BodySpec,
@@ -41,4 +45,4 @@ from .generate import NumpySource, draw_model, random_model
 __all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
            "TorsionalDamperSpec", "Model", "coordinate_names", "coordinate_kinds",
            "NumpySource", "draw_model", "random_model", "to_rigidmech", "to_sympy", "compare",
-           "Report", "RTOL", "transforms"]
+           "compare_action", "Report", "RTOL", "transforms"]

@@ -28,9 +28,10 @@ import numpy as np
 import sympy as sp
 from sympy.physics import mechanics as me
 
+from ..._core.errors import ArgumentError
 from .description import Model, coordinate_names
 
-__all__ = ["to_sympy", "constant_dcm"]
+__all__ = ["to_sympy", "constant_dcm", "AXIAL"]
 
 
 def _basis(frame):
@@ -118,12 +119,35 @@ def _joint(b, F, P, q):
     raise ValueError(f"unknown joint {kind!r}")
 
 
-def to_sympy(model: Model) -> me.KanesMethod:
+#: joints whose action is compared (a local basis from their axis, as rigidmech's)
+AXIAL = ("pivot", "prismatic", "cylindrical", "helical", "planar", "annular", "point")
+#: the point the action of each joint is reduced at: the joint point P fixed in the parent,
+#: or the moving centre S of the sphere (annular) or the contact point (point)
+_AT_CENTRE = ("annular", "point")
+
+
+def _subtree(model, c):
+    out = {c}
+    for k, b in enumerate(model.bodies):
+        if b.parent in out:
+            out.add(k)
+    return out
+
+
+def to_sympy(model: Model, *, action_of=None) -> me.KanesMethod:
     """The ``KanesMethod`` of ``model``, its equations formed.
 
     Its ``q`` are ``dynamicsymbols`` named as :func:`~rigidmech.testing.fuzz.coordinate_names`
     and its ``u`` the speeds with u = q' (``mass_matrix`` and ``forcing`` give
     M(q) u' = f(q, u)).
+
+    With ``action_of`` (a body index whose joint is in :data:`AXIAL`), the action of its
+    parent on it is sought with six auxiliary speeds (``u_auxiliary``): a relative velocity
+    and a rotation of the body's subtree along the joint's local basis (u, v, w) at the
+    joint's point, and the unknown action X u + Y v + Z w, moment L u + M v + N w, on the
+    body there (symbols ``X, Y, Z, L, M, N`` in ``kane.action_symbols``). The
+    auxiliary equations ``kane.auxiliary_eqs`` then give them once u' is known; the
+    unknowns are zero in ``mass_matrix`` and ``forcing``.
     """
     names = coordinate_names(model)
     q = dict(zip(names, me.dynamicsymbols(names), strict=True)) if len(names) > 1 else {
@@ -134,29 +158,33 @@ def to_sympy(model: Model) -> me.KanesMethod:
     W = _turn(N, model.ground, "W")
     OW = O.locatenew("OW", _comps(N, model.ground_origin))
 
-    def moving(point):
+    owned = []  # (point, body index) of every point with a velocity
+
+    def moving(point, owner):
         point.set_vel(N, point.pos_from(O).dt(N))
+        owned.append((point, owner))
         return point
 
-    frames, origins, mounts, rigid = [], [], [], []
-    for b in model.bodies:
+    frames, origins, mounts, rigid, joint_points = [], [], [], [], []
+    for k, b in enumerate(model.bodies):
         Pf, Po = (W, OW) if b.parent < 0 else (frames[b.parent], origins[b.parent])
         P = Po.locatenew(f"{b.name}_P", _comps(Pf, b.at))
         F = _turn(Pf, b.mount, f"{b.name}_F")
         qb = [q[f"{model.prefix}_{b.name}_{k}"] for k in range(len(b.joint_kinds))]
         C, Oc = _joint(b, F, P, qb)
         B = _turn(C, b.twist, f"{b.name}_B")
-        G = moving(Oc.locatenew(f"{b.name}_G", _comps(B, b.centre)))
+        G = moving(Oc.locatenew(f"{b.name}_G", _comps(B, b.centre)), k)
         A, Bm, Cm, D, E, Fp = b.inertia
         inertia = me.inertia(B, A, Bm, Cm, ixy=-Fp, iyz=-D, izx=-E)
         rigid.append(me.RigidBody(b.name, G, B, b.mass, (inertia, G)))
         frames.append(B)
         origins.append(Oc)
         mounts.append(F)
+        joint_points.append(Oc if b.joint in _AT_CENTRE else P)
 
     def point(k, xyz, label):
         frame, origin = (W, OW) if k < 0 else (frames[k], origins[k])
-        return moving(origin.locatenew(label, _comps(frame, xyz)))
+        return moving(origin.locatenew(label, _comps(frame, xyz)), k)
 
     loads = []
     if model.gravity is not None:
@@ -194,7 +222,42 @@ def to_sympy(model: Model) -> me.KanesMethod:
     qs = [q[n] for n in names]
     us = me.dynamicsymbols([f"u_{n}" for n in names]) if len(names) > 1 else [
         me.dynamicsymbols(f"u_{names[0]}")]
-    kane = me.KanesMethod(N, q_ind=qs, u_ind=us,
+    aux, unknowns = [], []
+    if action_of is not None:
+        aux, unknowns, extra = _auxiliary(model, action_of, N, frames, mounts, rigid, owned,
+                                          joint_points[action_of])
+        loads = loads + extra
+    kane = me.KanesMethod(N, q_ind=qs, u_ind=us, u_auxiliary=aux,
                           kd_eqs=[qi.diff() - ui for qi, ui in zip(qs, us, strict=True)])
     kane.kanes_equations(rigid, loads)
+    kane.action_symbols = tuple(unknowns)
     return kane
+
+
+def _auxiliary(model, c, N, frames, mounts, rigid, owned, P):
+    """Auxiliary speeds of the subtree of body ``c`` at its joint point P, and the loads of
+    the unknown action on ``c``."""
+    b = model.bodies[c]
+    if b.joint not in AXIAL:
+        raise ArgumentError(
+            f"`action_of` must be a body on one of the joints {AXIAL}; body {c} is on a "
+            f"{b.joint!r} joint.")
+    F = mounts[c]
+    e = _basis(F)
+    u, v, w = e[(b.axis + 1) % 3], e[(b.axis + 2) % 3], e[b.axis]
+    ua = me.dynamicsymbols(f"ua_{b.name}_1:7")
+    dv = ua[0] * u + ua[1] * v + ua[2] * w
+    dw = ua[3] * u + ua[4] * v + ua[5] * w
+    carried = _subtree(model, c)
+    omega = {k: frames[k].ang_vel_in(N) for k in carried}
+    Bc, Gc = frames[c], rigid[c].masscenter
+    Pc = P.locatenew(f"{b.name}_Pc", 0)  # the point of the body at P
+    Pc.set_vel(N, Gc.vel(N) + omega[c].cross(P.pos_from(Gc)) + dv)
+    for point, owner in owned:
+        if owner in carried:
+            point.set_vel(N, point.vel(N) + dv + dw.cross(point.pos_from(P)))
+    for k in carried:
+        frames[k].set_ang_vel(N, omega[k] + dw)
+    X, Y, Z, L, M, Nn = sp.symbols("X Y Z L M N")
+    loads = [(Pc, X * u + Y * v + Z * w), (Bc, L * u + M * v + Nn * w)]
+    return list(ua), (X, Y, Z, L, M, Nn), loads
