@@ -8,6 +8,7 @@ build, derive, compile, evaluate) with the slowest models. Run from the reposito
     PYTHONPATH=src python benchmarks/fuzz_models.py 50                  # up to 3 bodies
     PYTHONPATH=src python benchmarks/fuzz_models.py 20 --bodies 6 --dof 10 --seed 1
     PYTHONPATH=src python benchmarks/fuzz_models.py 30 --ground --no-polar
+    PYTHONPATH=src python benchmarks/fuzz_models.py 10 --bodies 2 --dof 4 --closure
 
 ``polar`` bodies (a translated frame of a rotated helper frame) are drawn unless
 ``--no-polar``: they show the known dropped-coordinate bug (status ``coordinates``). Larger
@@ -36,6 +37,8 @@ def main(argv=None):
     parser.add_argument("--states", type=int, default=4, help="states compared per model")
     parser.add_argument("--ground", action="store_true", help="turn and move the ground frame")
     parser.add_argument("--no-polar", action="store_true", help="leave out the polar joint")
+    parser.add_argument("--closure", action="store_true",
+                        help="close a loop with a spherical joint where the tree allows it")
     parser.add_argument("--slowest", type=int, default=5)
     args = parser.parse_args(argv)
     joints = tuple(j for j in JOINT_ORDER if not (args.no_polar and j == "polar"))
@@ -45,7 +48,7 @@ def main(argv=None):
     start = time.perf_counter()
     for k in range(args.n):
         model = random_model(rng, max_bodies=args.bodies, max_dof=args.dof, joints=joints,
-                             ground=args.ground)
+                             ground=args.ground, closure=args.closure)
         t0 = time.perf_counter()
         report = compare(model, seed=k, states=args.states)
         elapsed = time.perf_counter() - t0

@@ -45,6 +45,8 @@ from rigidmech.testing.fuzz.strategies import models
 #: models compared with sympy in CI (each costs 0.2 s to 10 s, mostly Kane's method and the
 #: compilation of both sides; see the module docstring for the measured total)
 N_MODELS = 40
+#: models with a closing joint (Kane's tree plus J^T lambda on sympy's side)
+N_CLOSURES = 3
 #: models whose first connection action is compared (Kane with six auxiliary speeds: costly)
 N_ACTIONS = 4
 #: models of each metamorphic test (rigidmech only: cheaper)
@@ -73,6 +75,19 @@ def test_random_trees_agree_with_kanes_method(model):
     angles, linear annular, point contact, free body), random axes, offsets, constant
     rotations (helper frames, translated frames), full operators of inertia, gravity,
     springs, dampers, torques with their reactions, forces, torsional dampers."""
+    report = compare(model, seed=0, states=2)
+    assert report.ok, _explain(report)
+
+
+@_settings(N_CLOSURES)
+@given(models(joints=("pivot", "prismatic", "cylindrical", "spherical"), max_bodies=2,
+              max_dof=4, max_turns=1, closure=True))
+def test_random_closed_loops_agree_with_sympy(model):
+    """A spherical joint closing a loop from a point of a body to the ground point where it
+    is in a random assembled configuration (three conditions between the coordinates);
+    consistent states by Newton's method. rigidmech (Lagrange multipliers, compiled with
+    Baumgarte's terms, which vanish on consistent states) against the tree's Kane equations
+    with the constraint force J^T lambda."""
     report = compare(model, seed=0, states=2)
     assert report.ok, _explain(report)
 

@@ -12,8 +12,9 @@ and returns a :class:`Report`; :func:`compare_action` compares the action in one
 :mod:`rigidmech.testing.fuzz.transforms` gives the metamorphic transformations (Galilean
 frame turned or moved, bodies connected in another order, units scaled).
 
-The models are trees of the joints of :data:`JOINTS` (book, ch. 13.2.2); closing joints,
-rolling contacts and knife edges are not drawn yet.
+The models are trees of the joints of :data:`JOINTS` (book, ch. 13.2.2), optionally with a
+spherical joint closing a loop to the ground (:class:`ClosureSpec`); rolling contacts and
+knife edges are not drawn yet.
 
 Examples
 --------
@@ -31,6 +32,7 @@ from .compare import RTOL, Report, compare, compare_action
 from .description import (
     JOINTS,
     BodySpec,
+    ClosureSpec,
     DamperSpec,
     ForceSpec,
     Model,
@@ -43,6 +45,6 @@ from .description import (
 from .generate import NumpySource, draw_model, random_model
 
 __all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
-           "TorsionalDamperSpec", "Model", "coordinate_names", "coordinate_kinds",
+           "TorsionalDamperSpec", "ClosureSpec", "Model", "coordinate_names", "coordinate_kinds",
            "NumpySource", "draw_model", "random_model", "to_rigidmech", "to_sympy", "compare",
            "compare_action", "Report", "RTOL", "transforms"]

@@ -56,7 +56,15 @@ def _turn(frame, rotations, prefix, origin=None):
 
 def ground_frame(R0, model: Model):
     """The frame the ground parts of ``model`` are given in: ``R0`` itself, or ``R0`` moved
-    to ``model.ground_origin`` and turned by ``model.ground`` (fixed in R0)."""
+    to ``model.ground_origin`` and turned by ``model.ground`` (fixed in R0).
+
+    Examples
+    --------
+    >>> from rigidmech.testing.fuzz import BodySpec, Model
+    >>> R0 = rm.Frame("R0")
+    >>> ground_frame(R0, Model(bodies=(BodySpec(name="b", parent=-1, joint="pivot"),))) is R0
+    True
+    """
     if not model.ground and not any(model.ground_origin):
         return R0
     W = R0.translated("W_", R0.point("Og_", *map(_x, model.ground_origin)))
@@ -213,4 +221,18 @@ def _build(model, coordinates):
         e = _basis(mounts[d.body])[model.bodies[d.body].axis]
         system.act(rm.actions.TorsionalDamper(_x(d.c), axis=e, on=bodies[d.body],
                                               reaction_on=parent_of(d.body)))
+    if model.closure is not None:
+        _close(system, model, q, W, bodies, R0)
     return system
+
+
+def _close(system, model, q, W, bodies, R0):
+    """The spherical joint closing the loop, at the ground point where the body's point is
+    in the assembled configuration (computed here from rigidmech's own kinematics)."""
+    c = model.closure
+    body = bodies[c.body]
+    meets = body.frame.origin.moved("Mc", _comps(body.frame, c.meets))
+    values = {q[n]: _x(v) for n, v in model.assembly_values().items()}
+    where = (meets - W.origin).components(W).subs(values)
+    D = W.origin.moved("Dc", _comps(W, [float(sp.N(x, 30)) for x in where]))
+    system.connect(R0, body, rm.joints.Spherical(at=D), meets=meets)

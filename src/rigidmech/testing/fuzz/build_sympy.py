@@ -25,6 +25,7 @@ Examples
 from __future__ import annotations
 
 import numpy as np
+import scipy.linalg
 import sympy as sp
 from sympy.physics import mechanics as me
 
@@ -126,6 +127,17 @@ AXIAL = ("pivot", "prismatic", "cylindrical", "helical", "planar", "annular", "p
 _AT_CENTRE = ("annular", "point")
 
 
+class DegenerateModel(ArgumentError):
+    """The model has no well-defined equations to compare (e.g. redundant closure
+    conditions); :func:`~rigidmech.testing.fuzz.compare` reports it as ``'degenerate'``.
+
+    Examples
+    --------
+    >>> issubclass(DegenerateModel, ValueError)
+    True
+    """
+
+
 def _subtree(model, c):
     out = {c}
     for k, b in enumerate(model.bodies):
@@ -134,7 +146,7 @@ def _subtree(model, c):
     return out
 
 
-def to_sympy(model: Model, *, action_of=None) -> me.KanesMethod:
+def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.KanesMethod:
     """The ``KanesMethod`` of ``model``, its equations formed.
 
     Its ``q`` are ``dynamicsymbols`` named as :func:`~rigidmech.testing.fuzz.coordinate_names`
@@ -148,6 +160,14 @@ def to_sympy(model: Model, *, action_of=None) -> me.KanesMethod:
     body there (symbols ``X, Y, Z, L, M, N`` in ``kane.action_symbols``). The
     auxiliary equations ``kane.auxiliary_eqs`` then give them once u' is known; the
     unknowns are zero in ``mass_matrix`` and ``forcing``.
+
+    A model with a closing joint (``model.closure``) gets in ``kane.closure`` the numeric
+    functions of its conditions (``phi``, ``jacobian``, ``bias`` = J' q', the dependent
+    coordinates and the assembly). With ``closure="kane"`` the conditions go to Kane's method
+    (``q_dependent``, ``configuration_constraints``, ``u_dependent``,
+    ``velocity_constraints``); with ``closure="multipliers"`` (default) the tree's equations
+    are formed without them and :func:`~rigidmech.testing.fuzz.compare` adds the constraint
+    force J^T lambda (the reference used, see the note in ``compare``).
     """
     names = coordinate_names(model)
     q = dict(zip(names, me.dynamicsymbols(names), strict=True)) if len(names) > 1 else {
@@ -227,11 +247,68 @@ def to_sympy(model: Model, *, action_of=None) -> me.KanesMethod:
         aux, unknowns, extra = _auxiliary(model, action_of, N, frames, mounts, rigid, owned,
                                           joint_points[action_of])
         loads = loads + extra
-    kane = me.KanesMethod(N, q_ind=qs, u_ind=us, u_auxiliary=aux,
-                          kd_eqs=[qi.diff() - ui for qi, ui in zip(qs, us, strict=True)])
+    kd = [qi.diff() - ui for qi, ui in zip(qs, us, strict=True)]
+    closing = {}
+    if model.closure is not None:
+        closing = _closure(model, q, qs, us, W, OW, frames, origins)
+        if closure == "kane":
+            dep = closing["dependent"]
+            qs = [x for k, x in enumerate(qs) if k not in dep]
+            us = [x for k, x in enumerate(us) if k not in dep]
+        else:
+            closing.pop("kane")
+            closing["numeric"]["order"] = list(range(len(qs)))
+    kane = me.KanesMethod(N, q_ind=qs, u_ind=us, u_auxiliary=aux, kd_eqs=kd,
+                          **closing.get("kane", {}))
     kane.kanes_equations(rigid, loads)
     kane.action_symbols = tuple(unknowns)
+    kane.closure = closing.get("numeric")
+    kane.closure_method = closure
     return kane
+
+
+def _closure(model, q, qs, us, W, OW, frames, origins):
+    """The spherical closing joint: its three conditions (the body's point at the ground
+    point D where it is in the assembled configuration), the dependent coordinates (the
+    best-conditioned columns of the conditions' Jacobian at the assembly: QR with column
+    pivoting) and their numeric functions for the consistent states."""
+    c = model.closure
+    meets = origins[c.body].locatenew("Mc", _comps(frames[c.body], c.meets))
+    r = meets.pos_from(OW).to_matrix(W)
+    values = {q[n]: v for n, v in model.assembly_values().items()}
+    D = [float(x.xreplace(values)) for x in r]
+    phi = sp.Matrix([r[i] - D[i] for i in range(3)])
+    qsym = sp.symbols(f"_c0:{len(qs)}")
+    rule = dict(zip(qs, qsym, strict=True))
+    fphi = sp.lambdify([qsym], list(phi.xreplace(rule)), "numpy")
+    fjac = sp.lambdify([qsym], phi.jacobian(qs).xreplace(rule), "numpy")
+    q0 = np.array([values[x] for x in qs])
+    J0 = np.array(fjac(q0), dtype=float)
+    if np.linalg.matrix_rank(J0, tol=1e-8 * max(np.max(np.abs(J0)), 1.0)) < 3:
+        raise DegenerateModel(
+            "the closing joint's three conditions are not independent at the assembly (a "
+            "locked or redundant loop)")
+    pivots = scipy.linalg.qr(J0, pivoting=True)[2]
+    dep = sorted(int(k) for k in pivots[:3])
+    speeds = dict(zip([x.diff() for x in qs], us, strict=True))
+    t = me.dynamicsymbols._t
+    velocity = [e.diff(t).xreplace(speeds) for e in phi]
+    # J' q': the second derivative of the conditions without its q'' terms
+    no_acc = dict.fromkeys([x.diff(t, 2) for x in qs], 0)
+    bias = [e.diff(t, 2).xreplace(no_acc).xreplace(speeds) for e in phi]
+    usym = sp.symbols(f"_v0:{len(qs)}")
+    fbias = sp.lambdify([qsym, usym], [sp.sympify(b).xreplace(
+        {**rule, **dict(zip(us, usym, strict=True))}) for b in bias], "numpy")
+    order = [k for k in range(len(qs)) if k not in dep] + dep  # kane.q: independent first
+    return {
+        "dependent": dep,
+        "kane": {"q_dependent": [qs[k] for k in dep], "configuration_constraints": list(phi),
+                 "u_dependent": [us[k] for k in dep], "velocity_constraints": velocity},
+        "numeric": {"phi": lambda x: np.array(fphi(x), dtype=float),
+                    "jacobian": lambda x: np.array(fjac(x), dtype=float),
+                    "bias": lambda x, v: np.array(fbias(x, v), dtype=float),
+                    "dependent": dep, "assembly": q0, "order": order},
+    }
 
 
 def _auxiliary(model, c, N, frames, mounts, rigid, owned, P):

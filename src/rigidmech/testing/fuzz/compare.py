@@ -6,6 +6,15 @@ q'' solve M q'' = f. rigidmech's side is the compiled right-hand side
 ``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), lambdified and solved by
 ``numpy.linalg.solve``. Coordinates are matched by name.
 
+A model with a closing joint is compared at consistent states (:func:`closed_state`). The
+reference there is the tree's ``KanesMethod`` with the constraint force J^T lambda of the
+closing joint (an augmented linear system), not ``KanesMethod`` with ``q_dependent`` and
+``u_dependent`` (kept as ``to_sympy(..., closure="kane")``): on a loop found by the fuzzer (a
+prismatic body carrying a spherical one, closed to the ground, its slider locked by the loop)
+Kane's accelerations changed with the choice of the dependent speeds, and only one choice
+agreed with rigidmech, whose q'' satisfy both J q'' = -J' q' and M q'' - f in the range of
+J^T (the principle with a perfect joint) to round-off.
+
 Tolerance: :data:`RTOL` relative to the largest |q''| of the state (at least
 :data:`SCALE_FLOOR`). Both sides evaluate
 closed forms of the same mechanics in double precision at states away from the singular
@@ -33,7 +42,7 @@ import numpy as np
 import sympy as sp
 
 from .build_rigidmech import to_rigidmech
-from .build_sympy import to_sympy
+from .build_sympy import DegenerateModel, to_sympy
 from .description import Model, coordinate_names, coordinate_ranges
 
 __all__ = ["RTOL", "MAX_CONDITION", "Report", "compare", "compare_action",
@@ -93,7 +102,13 @@ def rigidmech_accelerations(system):
 
 
 def sympy_accelerations(kane):
-    """(names, function of (q, u) -> (q'', condition number of M)) from a KanesMethod."""
+    """(names, function of (q, u) -> (q'', condition number of M)) from a KanesMethod.
+
+    If the KanesMethod carries the numeric conditions of a closing joint formed without
+    them (``kane.closure`` with ``to_sympy(..., closure="multipliers")``), q'' solve the
+    equations of the tree with the constraint force, M q'' = f + J^T lambda and
+    J q'' = -J' q' (the fundamental principle with a perfect spherical joint, ch. 18, 25.3).
+    """
     names = [_name(q) for q in kane.q]
     qs = [sp.Symbol(f"_q{k}") for k in range(len(names))]
     us = [sp.Symbol(f"_u{k}") for k in range(len(names))]
@@ -103,9 +118,19 @@ def sympy_accelerations(kane):
     Mf = sp.lambdify([qs, us], [kane.mass_matrix.xreplace(rule), kane.forcing.xreplace(rule)],
                      "numpy", cse=True)
 
+    closure = getattr(kane, "closure", None)
+    tree = closure is not None and getattr(kane, "closure_method", None) == "multipliers"
+
     def qdd(q, u):
         M, f = (np.array(x, dtype=float) for x in Mf(q, u))
-        return np.linalg.solve(M, f.reshape(-1)), np.linalg.cond(M)
+        f = f.reshape(-1)
+        if tree:
+            J = closure["jacobian"](q)
+            m = J.shape[0]
+            K = np.block([[M, J.T], [J, np.zeros((m, m))]])
+            rhs = np.concatenate([f, -closure["bias"](q, u)])
+            return np.linalg.solve(K, rhs)[:len(f)], np.linalg.cond(K)
+        return np.linalg.solve(M, f), np.linalg.cond(M)
 
     return names, qdd
 
@@ -119,6 +144,42 @@ def random_states(model: Model, rng, count):
         q = np.array([rng.uniform(*ranges[n]) for n in names])
         out.append((q, rng.uniform(-2.0, 2.0, len(names))))
     return out
+
+
+def closed_state(closure, rng, spread=0.15):
+    """A state (q, u) in the order of Kane's coordinates (independent first) that satisfies
+    the closure's conditions and their derivative: the independent coordinates moved from the
+    assembly by at most ``spread``, the dependent ones by Newton's method (to 1e-13), random
+    independent speeds and the dependent ones from the velocity conditions. (None, None) if
+    Newton's method does not converge.
+
+    Examples
+    --------
+    >>> from rigidmech.testing.fuzz import BodySpec, ClosureSpec, Model, to_sympy
+    >>> model = Model(bodies=(BodySpec(name="b0", parent=-1, joint="annular"),),
+    ...               closure=ClosureSpec(0, (0.5, 0.0, 0.0), ((0.25, 0.5, 1.0, 0.5),)))
+    >>> closure = to_sympy(model).closure
+    >>> q, u = closed_state(closure, np.random.default_rng(0))
+    >>> bool(np.max(np.abs(closure["phi"](q))) < 1e-12)
+    True
+    """
+    dep = closure["dependent"]
+    ind = [k for k in range(len(closure["assembly"])) if k not in dep]
+    x = closure["assembly"].copy()
+    x[ind] += rng.uniform(-spread, spread, len(ind))
+    for _ in range(30):
+        r = closure["phi"](x)
+        if np.max(np.abs(r)) < 1e-13:
+            break
+        x[dep] -= np.linalg.solve(closure["jacobian"](x)[:, dep], r)
+    else:
+        return None, None
+    J = closure["jacobian"](x)
+    v = np.zeros(len(x))
+    v[ind] = rng.uniform(-1.0, 1.0, len(ind))
+    v[dep] = -np.linalg.solve(J[:, dep], J[:, ind] @ v[ind])
+    order = closure["order"]
+    return x[order], v[order]
 
 
 def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
@@ -150,7 +211,11 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
                       seconds=(time.perf_counter() - t0, 0.0))
     t1 = time.perf_counter()
     try:
-        names_sp, theirs = sympy_accelerations(builders[1](model))
+        kane = builders[1](model)
+        names_sp, theirs = sympy_accelerations(kane)
+    except DegenerateModel as exc:
+        return Report(model, "degenerate", detail=str(exc),
+                      seconds=(t1 - t0, time.perf_counter() - t1))
     except Exception as exc:  # noqa: BLE001
         return Report(model, "sympy-error", detail=f"{type(exc).__name__}: {exc}",
                       seconds=(t1 - t0, time.perf_counter() - t1))
@@ -162,9 +227,15 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
     rng = np.random.default_rng(seed)
     worst, compared, tried, detail = 0.0, 0, 0, ""
     t_rm = t_sp = 0.0
+    closure = getattr(kane, "closure", None)
     while compared < states and tried < 20 * states:
         tried += 1
-        q, u = random_states(model, rng, 1)[0]
+        if closure is None:
+            q, u = random_states(model, rng, 1)[0]
+        else:
+            q, u = closed_state(closure, rng)
+            if q is None:
+                continue
         s0 = time.perf_counter()
         b, cond = theirs(q, u)
         s1 = time.perf_counter()

@@ -39,7 +39,8 @@ from dataclasses import dataclass
 from ..._core.errors import ArgumentError
 
 __all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
-           "TorsionalDamperSpec", "Model", "coordinate_names", "coordinate_kinds"]
+           "TorsionalDamperSpec", "ClosureSpec", "Model", "coordinate_names", "coordinate_kinds",
+           "coordinate_ranges"]
 
 #: The joints of the catalogue the generator draws, with the kinds of their coordinates in
 #: order ('a' angle, 'l' length) -- the frame C relative to F (e the axis, u, v the two other
@@ -155,6 +156,24 @@ class TorsionalDamperSpec:
 
 
 @dataclass(frozen=True)
+class ClosureSpec:
+    """A spherical joint closing a loop (ch. 13.2): the point ``meets`` of body ``body``
+    (components in its frame from its origin) is held at the fixed point of the ground where
+    it is in the assembled configuration ``assembly`` (for each body, the values of its
+    coordinates), three conditions between the coordinates.
+
+    Examples
+    --------
+    >>> ClosureSpec(body=1, meets=(0.5, 0.0, 0.0), assembly=((0.25,), (1.0,))).body
+    1
+    """
+
+    body: int
+    meets: tuple
+    assembly: tuple
+
+
+@dataclass(frozen=True)
 class Model:
     """A random mechanism: bodies (parents first), actions, and the placement of the ground
     frame relative to the Galilean one.
@@ -176,6 +195,7 @@ class Model:
     ground: tuple = ()
     ground_origin: tuple = (0.0, 0.0, 0.0)
     prefix: str = "q"
+    closure: ClosureSpec | None = None
 
     def __post_init__(self):
         for k, b in enumerate(self.bodies):
@@ -193,8 +213,14 @@ class Model:
 
     @property
     def degrees_of_freedom(self) -> int:
-        """The number of coordinates (a tree: no closing joint)."""
+        """The number of coordinates."""
         return sum(len(JOINTS[b.joint]) for b in self.bodies)
+
+    def assembly_values(self) -> dict:
+        """Coordinate name -> value in the assembled configuration of the closure."""
+        return {f"{self.prefix}_{b.name}_{k}": x
+                for b, values in zip(self.bodies, self.closure.assembly, strict=True)
+                for k, x in enumerate(values)}
 
     def summary(self) -> str:
         """One line: ``b0:pivot<-G b1:spherical<-b0 | g springs=1 ...``."""
@@ -205,7 +231,8 @@ class Model:
                                              ("torques", self.torques),
                                              ("forces", self.forces),
                                              ("tdampers", self.torsional_dampers)) if v]
-        return " ".join(parts) + " |" + (" g" if self.gravity else "") + "".join(
+        loop = f" loop:{self.bodies[self.closure.body].name}" if self.closure else ""
+        return " ".join(parts) + loop + " |" + (" g" if self.gravity else "") + "".join(
             " " + a for a in acts)
 
 
@@ -234,7 +261,13 @@ def coordinate_ranges(model: Model) -> dict:
     """Name -> (low, high) of the random states: angles in (-pi, pi) except the middle
     angle of a sequence of three, kept away from its singular set (sin = 0 for a proper
     Euler sequence such as z-x-z, cos = 0 for a Tait-Bryan one); lengths in (-1, 1), the
-    radius of ``polar`` in (0.5, 1.5) (its mass matrix is singular at 0)."""
+    radius of ``polar`` in (0.5, 1.5) (its mass matrix is singular at 0).
+
+    Examples
+    --------
+    >>> coordinate_ranges(Model(bodies=(BodySpec(name="b", parent=-1, joint="spherical"),)))
+    {'q_b_0': (-3.14..., 3.14...), 'q_b_1': (0.3, 2.84...), 'q_b_2': (-3.14..., 3.14...)}
+    """
     out = {}
     for b in model.bodies:
         kinds = JOINTS[b.joint]

@@ -26,12 +26,15 @@ import math
 from .description import (
     JOINTS,
     BodySpec,
+    ClosureSpec,
     DamperSpec,
     ForceSpec,
     Model,
     SpringSpec,
     TorqueSpec,
     TorsionalDamperSpec,
+    coordinate_names,
+    coordinate_ranges,
 )
 
 __all__ = ["NumpySource", "draw_model", "random_model", "JOINT_ORDER"]
@@ -111,7 +114,7 @@ def _other(src, n, k):
 
 
 def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=True,
-               ground=False, max_turns=2) -> Model:
+               ground=False, max_turns=2, closure=False) -> Model:
     """A random :class:`Model` from the random choices of ``src``.
 
     Parameters
@@ -130,6 +133,10 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
         Turn and move the ground frame relative to the Galilean frame.
     max_turns : int
         At most this many constant rotations in each body's mount and twist.
+    closure : bool
+        Close a loop with a spherical joint from a random point of a body to the ground
+        (:class:`~rigidmech.testing.fuzz.description.ClosureSpec`): the last body whose
+        chain from the ground has at least 4 coordinates, if any.
     """
     n = src.integer(1, max_bodies)
     bodies = []
@@ -164,7 +171,21 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
     if ground:
         kw["ground"] = _rotations(src, 3)
         kw["ground_origin"] = _vec(src)
-    return Model(bodies=tuple(bodies), **kw)
+    model = Model(bodies=tuple(bodies), **kw)
+    # the closing body: the last one whose chain down from the ground has at least 4
+    # coordinates (3 conditions leave one degree of freedom)
+    chain = []
+    for b in bodies:
+        chain.append(len(b.joint_kinds) + (0 if b.parent < 0 else chain[b.parent]))
+    closing = [k for k, n in enumerate(chain) if n >= 4]
+    if closure and closing:
+        ranges = coordinate_ranges(model)
+        names = iter(coordinate_names(model))
+        assembly = tuple(tuple(src.real(*ranges[next(names)]) for _ in b.joint_kinds)
+                         for b in bodies)
+        model = Model(bodies=tuple(bodies), **kw, closure=ClosureSpec(
+            closing[-1], _vec(src, -0.5, 0.5), assembly))
+    return model
 
 
 def random_model(rng, **options) -> Model:

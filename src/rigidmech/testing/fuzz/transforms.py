@@ -78,8 +78,12 @@ def reordered(model: Model, order) -> Model:
         return tuple(replace(s, **{f: index(getattr(s, f)) for f in fields})
                      for s in reversed(specs))
 
+    closure = model.closure
+    if closure is not None:
+        closure = replace(closure, body=new[closure.body],
+                          assembly=tuple(closure.assembly[old] for old in order))
     return replace(
-        model, bodies=bodies, springs=moved(model.springs, "body_a", "body_b"),
+        model, bodies=bodies, closure=closure, springs=moved(model.springs, "body_a", "body_b"),
         dampers=moved(model.dampers, "body_a", "body_b"), torques=moved(model.torques, "body"),
         forces=moved(model.forces, "body"),
         torsional_dampers=moved(model.torsional_dampers, "body"))
@@ -113,6 +117,13 @@ def scaled(model: Model, *, length=1.0, mass=1.0, time=1.0):
         torsional_dampers=tuple(replace(d, c=d.c * M * L * L / T)
                                 for d in model.torsional_dampers),
         ground_origin=v(model.ground_origin, L))
+    if model.closure is not None:
+        assembly = tuple(tuple(x * L if kind == "l" else x for x, kind in
+                               zip(values, b.joint_kinds, strict=True))
+                         for values, b in zip(model.closure.assembly, model.bodies,
+                                              strict=True))
+        out = replace(out, closure=replace(model.closure, meets=v(model.closure.meets, L),
+                                           assembly=assembly))
     factors = {n: (L, L / T, L / T**2) if kind == "l" else (1.0, 1.0 / T, 1.0 / T**2)
                for n, kind in coordinate_kinds(model).items()}
     return out, factors
