@@ -110,7 +110,7 @@ def _joint_frame(b, F, q):
         S = O.moved(f"{n}_S", q[0] * u + q[1] * v)
         return _angles(F, b.angles, q[2:], f"{n}_C", S), S
     if kind == "free":
-        S = O.moved(f"{n}_S", _comps(F, q[:3]))
+        S = O.moved(f"{n}_S", q[0] * F.i + q[1] * F.j + q[2] * F.k)
         return _angles(F, b.angles, q[3:], f"{n}_C", S), S
     if kind == "polar":
         H = F.rotated(f"{n}_H", about=e, angle=q[1])
