@@ -1,0 +1,380 @@
+"""Differential fuzzing against sympy.physics.mechanics, and metamorphic tests (issue "Trust
+at the edges").
+
+Random trees of up to 3 bodies (:mod:`rigidmech.testing.fuzz`) are built by rigidmech's public
+API and, independently, by ``KanesMethod``; q'' are compared at random states to 1e-8 of the
+largest |q''| (see :mod:`rigidmech.testing.fuzz.compare` for why). The models are drawn by a
+hypothesis strategy, derandomized (the same models on every run), so that a disagreement
+shrinks to a minimal model. Cost of the whole file, measured: 1.5 min of CPU (user + system;
+3 min 50 s of wall time on a shared, loaded 2-core machine), of which the 40 models of the main
+fuzz test take about half; larger and 3D-heavy models run in ``benchmarks/fuzz_models.py``
+only (Kane's method alone takes minutes there). A few hundred models per CI run would cost
+10-20 min here: the counts below are the compromise.
+
+Metamorphic tests compare rigidmech with itself on the same mechanism described differently:
+ground frame turned and moved, bodies connected in another order, coordinates renamed and
+reordered, units scaled (q'' and the eigenvalues of the linearised flow transform as the
+dimensions say).
+"""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, Phase, given, settings
+from hypothesis import strategies as st
+
+import rigidmech as rm
+from rigidmech.errors import RigidmechError
+from rigidmech.testing.fuzz import (
+    BodySpec,
+    DamperSpec,
+    ForceSpec,
+    Model,
+    SpringSpec,
+    compare,
+    compare_action,
+    coordinate_names,
+    random_model,
+    to_rigidmech,
+    to_sympy,
+    transforms,
+)
+from rigidmech.testing.fuzz.build_sympy import AXIAL
+from rigidmech.testing.fuzz.compare import random_states, rigidmech_accelerations
+from rigidmech.testing.fuzz.generate import JOINT_ORDER
+from rigidmech.testing.fuzz.strategies import models
+
+#: models compared with sympy in CI (each costs 0.2 s to 10 s, mostly Kane's method and the
+#: compilation of both sides; see the module docstring for the measured total)
+N_MODELS = 40
+#: models with a closing joint (Kane's tree plus J^T lambda on sympy's side)
+N_CLOSURES = 3
+#: models whose first connection action is compared (Kane with six auxiliary speeds: costly)
+N_ACTIONS = 4
+#: models of each metamorphic test (rigidmech only: cheaper)
+N_METAMORPHIC = 10
+
+#: every joint but ``polar``, whose dropped coordinate is a known bug (tests below)
+TREE_JOINTS = tuple(j for j in JOINT_ORDER if j != "polar")
+SMALL = {"max_bodies": 3, "max_dof": 3, "max_turns": 1}
+
+
+def _settings(n):
+    return settings(derandomize=True, max_examples=n, deadline=None, database=None,
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+
+
+def _explain(report):
+    return f"{report.status}: {report.detail}\nmodel = {report.model!r}"
+
+
+# -- the differential fuzzer -------------------------------------------------------------------
+@_settings(N_MODELS)
+@given(models(joints=TREE_JOINTS, **SMALL))
+def test_random_trees_agree_with_kanes_method(model):
+    """Trees of 1-3 bodies on every joint of the catalogue the generator knows (pivot,
+    prismatic, cylindrical, helical, planar support, spherical by z-x-z or other body-fixed
+    angles, linear annular, point contact, free body), random axes, offsets, constant
+    rotations (helper frames, translated frames), full operators of inertia, gravity,
+    springs, dampers, torques with their reactions, forces, torsional dampers."""
+    report = compare(model, seed=0, states=2)
+    assert report.ok, _explain(report)
+
+
+@_settings(N_CLOSURES)
+@given(models(joints=("pivot", "prismatic", "cylindrical", "spherical"), max_bodies=2,
+              max_dof=4, max_turns=1, closure=True))
+def test_random_closed_loops_agree_with_sympy(model):
+    """A spherical joint closing a loop from a point of a body to the ground point where it
+    is in a random assembled configuration (three conditions between the coordinates);
+    consistent states by Newton's method. rigidmech (Lagrange multipliers, compiled with
+    Baumgarte's terms, which vanish on consistent states) against the tree's Kane equations
+    with the constraint force J^T lambda."""
+    report = compare(model, seed=0, states=2)
+    assert report.ok, _explain(report)
+
+
+@_settings(N_ACTIONS)
+@given(models(joints=AXIAL, max_bodies=2, max_dof=2, max_turns=1))
+def test_random_connection_actions_agree_with_kanes_auxiliary_speeds(model):
+    """The action of the ground (or the first body) on the first body's subtree through its
+    joint (pivot, prismatic, cylindrical, helical, planar support, linear annular, point
+    contact): rigidmech's connection_components against Kane's auxiliary speeds."""
+    report = compare_action(model, 0, seed=0, states=2)
+    assert report.ok, _explain(report)
+
+
+# -- the dropped coordinate of a translated frame of a rotated helper frame -------------------
+#: the minimal model the fuzzer shrinks to when ``polar`` is allowed: one body whose frame is
+#: the ground frame translated to S = r H.j, H the ground frame turned by phi about i
+POLAR = Model(bodies=(BodySpec(name="b0", parent=-1, joint="polar", axis=0, mass=0.5,
+                               inertia=(1.5, 1.5, 1.5, 0.0, 0.0, 0.0)),))
+DROPPED = pytest.mark.xfail(
+    strict=True, reason="known bug in rigidmech.dynamics.System: the angle phi of a rotated "
+    "helper frame that only places the origin S = r Rp.i of a translated body frame "
+    "R0.translated('Rs', S) is dropped from the coordinates (the 'dropped coordinate' bug, "
+    "being fixed in core); remove this marker when it passes")
+
+
+@DROPPED
+def test_helper_frame_minimal_model_agrees_with_kanes_method():
+    report = compare(POLAR, seed=0)
+    assert report.ok, _explain(report)
+
+
+@DROPPED
+def test_helper_frame_particle_in_polar_coordinates_by_hand():
+    """The issue's reproduction, against Lagrange's equations by hand: a body that does not
+    turn, its centre at S = r (cos phi i + sin phi j), gravity -g i. T = m (r'^2 + r^2
+    phi'^2) / 2, V = m g r cos(phi): m r'' = m r phi'^2 - m g cos(phi) and
+    m r^2 phi'' = -2 m r r' phi' + m g r sin(phi)."""
+    r, phi = rm.coordinates("r phi")
+    m, g = rm.constants("m g", positive=True)
+    R0 = rm.Frame("R0")
+    Rp = R0.rotated("Rp", about=R0.k, angle=phi)
+    S = R0.origin.moved("S", r * Rp.i)
+    system = rm.System(galilean=R0)
+    system.add(rm.Body("b", frame=R0.translated("Rs", S), mass=m, centre=S))
+    system.act(rm.gravity(-g * R0.i))
+    eqs = system.equations_of_motion()
+    assert set(eqs.coordinates) == {r, phi}
+    order = [eqs.coordinates.index(c) for c in (r, phi)]
+    rd, pd = r.diff(rm.t), phi.diff(rm.t)
+    M = sp.Matrix([[m, 0], [0, m * r**2]])
+    f = sp.Matrix([m * r * pd**2 - m * g * sp.cos(phi), -2 * m * r * rd * pd
+                   + m * g * r * sp.sin(phi)])
+    assert sp.simplify(eqs.mass_matrix.extract(order, order) - M) == sp.zeros(2, 2)
+    assert sp.simplify(eqs.forcing.extract(order, [0]) - f) == sp.zeros(2, 1)
+
+
+@DROPPED
+@settings(_settings(10), phases=[Phase.explicit, Phase.generate])
+@given(models(joints=("pivot", "polar"), max_bodies=2, max_turns=0, actions=False))
+def test_random_trees_with_helper_frames_agree_with_kanes_method(model):
+    """The fuzzer with ``polar`` bodies (a translated frame of a rotated helper frame) finds
+    the dropped coordinate (it shrinks it to :data:`POLAR`; not shrunk here, which would cost
+    minutes on every run while the bug stands)."""
+    report = compare(model, seed=0, states=2)
+    assert report.ok, _explain(report)
+
+
+# -- float constants: the joint check decides exactly ---------------------------------------
+@pytest.mark.xfail(
+    strict=True, raises=RigidmechError,
+    reason="known bug in rigidmech.actions.Joint.check: the relative motion is tested "
+    "exactly (simplify(c) != 0), so the round-off of float constants (6.9e-18 q') refuses a "
+    "valid prismatic joint; the fuzzer builds with exact rationals to avoid it")
+def test_float_constants_do_not_refuse_a_valid_prismatic_joint():
+    """Minimal model found by the fuzzer with ``to_rigidmech(..., exact=False)``, written out:
+    a body on a pivot about R0.i, its frame turned by the float 0.0625 about j, a slider
+    along the i axis of a frame translated from it, the slider's centre off its origin. The
+    same with 1/16 as a rational is accepted; the joint allows the motion (the residual
+    component is 7e-18 q', round-off)."""
+    q, x = rm.coordinates("q x")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.i, angle=q)
+    B = R1.rotated("B", about=R1.j, angle=0.0625)
+    F = B.translated("F", B.origin.moved("P", 0.0625 * B.k))
+    C = F.translated("C", F.origin.moved("S", x * F.i))
+    system = rm.System(galilean=R0)
+    body = rm.Body("body", frame=B, mass=1)
+    system.connect(R0, body, rm.joints.Pivot(at=R0.origin, axis=R0.i))
+    slider = rm.Body("slider", frame=C, mass=1, centre=C.origin.moved("G", 0.125 * C.k))
+    system.connect(body, slider, rm.joints.Prismatic(at=F.origin, axis=F.i))
+    assert len(system.equations_of_motion().coordinates) == 2
+
+
+# -- springs and dampers whose ends coincide -----------------------------------------------
+@pytest.mark.xfail(
+    strict=True, reason="known bug in rigidmech.actions (Spring, Damper): the direction AB / l "
+    "of a spring or damper whose ends coincide at all times is 0/0 = nan, refused with "
+    "'`scalar` must be a finite real number; got nan' although the force is zero (a spring of "
+    "free length 0 exerts -k AB = 0; a damper, -c l' AB / l with l' = 0); Kane's side gives 0")
+@pytest.mark.parametrize("action", ["spring of free length 0", "damper"])
+def test_coincident_ends_exert_no_force(action):
+    """Found by the fuzzer while shrinking: the end of the spring (damper) on a body on a
+    pivot is on the pivot's axis, the other end is the same fixed point."""
+    body = BodySpec(name="b0", parent=-1, joint="pivot")
+    ends = (0, (0.0, 0.0, 0.0), -1, (0.0, 0.0, 0.0))
+    model = (Model(bodies=(body,), springs=(SpringSpec(*ends, 1.0, 0.0),))
+             if action.startswith("spring") else Model(bodies=(body,),
+                                                        dampers=(DamperSpec(*ends, 1.0),)))
+    report = compare(model, seed=0)
+    assert report.ok, _explain(report)
+
+
+# -- the fuzzer itself -------------------------------------------------------------------------
+ONE = Model(bodies=(BodySpec(name="b0", parent=-1, joint="pivot", axis=0,
+                             centre=(0.0, 0.5, 0.0), mount=((1, 0.5),)),),
+            gravity=(0.0, -9.75, 0.0),
+            springs=(SpringSpec(0, (0.0, 0.5, 0.0), -1, (1.0, 0.0, 0.0), 2.0, 0.25),))
+
+
+def test_compare_agrees_on_a_pendulum_with_a_spring():
+    report = compare(ONE, seed=3)
+    assert report.status == "agree" and report.worst < 1e-10
+
+
+def test_compare_agrees_on_a_free_body():
+    """A free body (six coordinates: never drawn by the CI strategy, whose models have at
+    most 3): its position coordinates enter rigidmech as coordinates, not numbers (the
+    builder once passed them through its number conversion: a TypeError the benchmark
+    showed)."""
+    model = Model(bodies=(BodySpec(name="b0", parent=-1, joint="free", at=(0.25, 0.0, 0.5),
+                                   centre=(0.125, -0.25, 0.0), angles=(2, 1, 0),
+                                   inertia=(1.5, 1.75, 2.0, 0.125, 0.0, -0.0625)),),
+                  gravity=(0.0, 0.0, -9.75),
+                  forces=(ForceSpec(0, (1.0, 0.5, 0.0), (0.0, 0.25, 0.25)),))
+    report = compare(model, seed=5, states=2)
+    assert report.status == "agree", _explain(report)
+
+
+@pytest.mark.parametrize("planted", ["mass", "stiffness"])
+def test_compare_sees_a_planted_error(planted):
+    """A wrong mass or spring stiffness on sympy's side is reported as a disagreement (the
+    fuzzer is not blind)."""
+    if planted == "mass":
+        wrong = replace(ONE, bodies=(replace(ONE.bodies[0], mass=2.0),))
+    else:
+        wrong = replace(ONE, springs=(replace(ONE.springs[0], k=2.5),))
+    report = compare(ONE, seed=3, builders=(to_rigidmech, lambda m: to_sympy(wrong)))
+    assert report.status == "disagree" and report.worst > 1e-3, report
+    assert "rigidmech q''" in report.detail
+
+
+def test_compare_reports_an_error_of_one_side():
+    def broken(model):
+        raise RuntimeError("boom")
+
+    report = compare(ONE, builders=(broken, to_sympy))
+    assert report.status == "rigidmech-error" and "boom" in report.detail and not report.ok
+
+
+def test_models_are_reproducible_and_valid():
+    a = random_model(np.random.default_rng(11), max_bodies=3)
+    assert a == random_model(np.random.default_rng(11), max_bodies=3)
+    for k, b in enumerate(a.bodies):
+        assert -1 <= b.parent < k
+
+
+@pytest.mark.parametrize("bodies, match", [
+    ((BodySpec(name="a", parent=0, joint="pivot"),), r"`bodies\[0\].parent` must be an earlier"),
+    ((BodySpec(name="a", parent=-1, joint="hinge"),), r"`bodies\[0\].joint` must be one of"),
+    ((BodySpec(name="a", parent=-1, joint="pivot"), BodySpec(name="b", parent=0, joint="free")),
+     r"`bodies\[1\].parent` must be -1 for a free body"),
+])
+def test_model_refuses_an_invalid_tree(bodies, match):
+    with pytest.raises(RigidmechError, match=match):
+        Model(bodies=bodies)
+
+
+# -- metamorphic tests (rigidmech against itself) ----------------------------------------------
+def _qdd(model, states, reference=None, **kw):
+    """q'' of rigidmech at ``states`` (arrays in the order of the coordinate names
+    ``reference``, default coordinate_names(model))."""
+    names, qdd = rigidmech_accelerations(to_rigidmech(model, **kw))
+    reference = coordinate_names(model) if reference is None else reference
+    order = [reference.index(n) for n in names]
+    out = []
+    for q, u in states:
+        a = qdd(q[order], u[order])
+        back = np.empty_like(a)
+        back[order] = a
+        out.append(back)
+    return out
+
+
+def _same(a, b, rtol=1e-9):
+    for x, y in zip(a, b, strict=True):
+        scale = max(float(np.max(np.abs(y))), 1e-6)
+        assert float(np.max(np.abs(x - y))) <= rtol * scale, (x, y)
+
+
+METAMORPHIC = {"joints": TREE_JOINTS, "max_bodies": 3, "max_dof": 4, "max_turns": 1}
+
+
+@_settings(N_METAMORPHIC)
+@given(models(**METAMORPHIC), st.integers(0, 2), st.integers(-25, 25),
+       st.tuples(*[st.integers(-8, 8)] * 3))
+def test_turned_and_moved_ground_gives_the_same_accelerations(model, axis, angle, origin):
+    states = random_states(model, np.random.default_rng(0), 2)
+    moved = transforms.turned_ground(model, ((axis, angle / 8), (2, 0.75)),
+                                     tuple(x / 4 for x in origin))
+    _same(_qdd(moved, states), _qdd(model, states))
+
+
+def _depths(model):
+    depth = []
+    for b in model.bodies:
+        depth.append(0 if b.parent < 0 else depth[b.parent] + 1)
+    return depth
+
+
+@_settings(N_METAMORPHIC)
+@given(models(**METAMORPHIC))
+def test_connections_in_another_order_give_the_same_accelerations(model):
+    depth = _depths(model)
+    order = sorted(range(len(model.bodies)), key=lambda k: (depth[k], -k))  # parents first
+    states = random_states(model, np.random.default_rng(1), 2)
+    other = transforms.reordered(model, order)
+    _same(_qdd(other, states, coordinate_names(model)), _qdd(model, states))
+
+
+@_settings(N_METAMORPHIC)
+@given(models(**METAMORPHIC))
+def test_renamed_and_reordered_coordinates_give_the_same_accelerations(model):
+    states = random_states(model, np.random.default_rng(2), 2)
+    other = transforms.renamed(model, "p")
+    reversed_names = tuple(reversed(coordinate_names(other)))
+    _same(_qdd(other, states, coordinates=reversed_names), _qdd(model, states))
+
+
+UNITS = [(2.0, 1.0, 1.0), (1.0, 4.0, 1.0), (1.0, 1.0, 0.5), (0.5, 2.0, 4.0)]
+
+
+@_settings(N_METAMORPHIC)
+@given(models(**METAMORPHIC), st.sampled_from(UNITS))
+def test_scaled_units_scale_the_accelerations(model, units):
+    L, M, T = units
+    other, factors = transforms.scaled(model, length=L, mass=M, time=T)
+    names = coordinate_names(model)
+    f = np.array([factors[n] for n in names])
+    states = random_states(model, np.random.default_rng(3), 2)
+    mapped = [(q * f[:, 0], u * f[:, 1]) for q, u in states]
+    _same([a / f[:, 2] for a in _qdd(other, mapped)], _qdd(model, states))
+
+
+def _jacobian(model, y, **kw):
+    """The Jacobian of the flow y' = (q', q'') at ``y``, by central differences."""
+    n = len(y) // 2
+    names, qdd = rigidmech_accelerations(to_rigidmech(model, **kw))
+    order = [coordinate_names(model).index(k) for k in names]
+
+    def flow(z):
+        q, u = z[:n], z[n:]
+        a = np.empty(n)
+        a[order] = qdd(q[order], u[order])
+        return np.concatenate([u, a])
+
+    h = 1e-6
+    return np.column_stack([(flow(y + h * e) - flow(y - h * e)) / (2 * h)
+                            for e in np.eye(2 * n)])
+
+
+@_settings(5)
+@given(models(joints=TREE_JOINTS, max_bodies=2, max_dof=3, max_turns=1), st.sampled_from(UNITS))
+def test_scaled_units_scale_the_eigenvalues(model, units):
+    """z = D y in the new units and tau = T t: J_z = D J_y D^-1 / T, so the eigenvalues of
+    the linearised flow are divided by T (differences of step 1e-6: compared to 1e-5)."""
+    L, M, T = units
+    other, factors = transforms.scaled(model, length=L, mass=M, time=T)
+    f = np.array([factors[n] for n in coordinate_names(model)])
+    q, u = random_states(model, np.random.default_rng(4), 1)[0]
+    y = np.concatenate([q, u])
+    lam = np.sort_complex(np.linalg.eigvals(_jacobian(model, y)))
+    lam2 = np.sort_complex(np.linalg.eigvals(
+        _jacobian(other, np.concatenate([q * f[:, 0], u * f[:, 1]]))) * T)
+    scale = max(float(np.max(np.abs(lam))), 1.0)
+    assert np.max(np.abs(lam - lam2)) <= 1e-5 * scale, (lam, lam2)
