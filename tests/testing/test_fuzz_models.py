@@ -111,20 +111,16 @@ def test_random_connection_actions_agree_with_kanes_auxiliary_speeds(model):
 #: the ground frame translated to S = r H.j, H the ground frame turned by phi about i
 POLAR = Model(bodies=(BodySpec(name="b0", parent=-1, joint="polar", axis=0, mass=0.5,
                                inertia=(1.5, 1.5, 1.5, 0.0, 0.0, 0.0)),))
-DROPPED = pytest.mark.xfail(
-    strict=True, reason="known bug in rigidmech.dynamics.System: the angle phi of a rotated "
-    "helper frame that only places the origin S = r Rp.i of a translated body frame "
-    "R0.translated('Rs', S) is dropped from the coordinates (the 'dropped coordinate' bug, "
-    "being fixed in core); remove this marker when it passes")
+# The 'dropped coordinate' bug (issue 19, item 1): the angle phi of a rotated helper frame
+# that only places the origin S = r Rp.i of a translated body frame R0.translated('Rs', S) was
+# dropped from the coordinates; found again by the fuzzer, fixed in dynamics (one placing rule).
 
 
-@DROPPED
 def test_helper_frame_minimal_model_agrees_with_kanes_method():
     report = compare(POLAR, seed=0)
     assert report.ok, _explain(report)
 
 
-@DROPPED
 def test_helper_frame_particle_in_polar_coordinates_by_hand():
     """The issue's reproduction, against Lagrange's equations by hand: a body that does not
     turn, its centre at S = r (cos phi i + sin phi j), gravity -g i. T = m (r'^2 + r^2
@@ -149,7 +145,6 @@ def test_helper_frame_particle_in_polar_coordinates_by_hand():
     assert sp.simplify(eqs.forcing.extract(order, [0]) - f) == sp.zeros(2, 1)
 
 
-@DROPPED
 @settings(_settings(10), phases=[Phase.explicit, Phase.generate])
 @given(models(joints=("pivot", "polar"), max_bodies=2, max_turns=0, actions=False))
 def test_random_trees_with_helper_frames_agree_with_kanes_method(model):
