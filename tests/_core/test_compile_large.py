@@ -11,7 +11,7 @@ import sympy
 import rigidmech as rm
 from rigidmech._core import _codegen, _cse
 from rigidmech._core.compile import compile_expressions, compile_linear_solve
-from rigidmech.dynamics.equations import _t
+from rigidmech.vectors import t as _t
 
 
 def spherical_chain(n):

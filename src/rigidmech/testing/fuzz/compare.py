@@ -15,7 +15,7 @@ Kane's accelerations changed with the choice of the dependent speeds, and only o
 agreed with rigidmech, whose q'' satisfy both J q'' = -J' q' and M q'' - f in the range of
 J^T (the principle with a perfect joint) to round-off.
 
-Tolerance: :data:`RTOL` relative to the largest |q''| of the state (at least
+Tolerance: :data:`RTOL` relative to the largest ``|q''|`` of the state (at least
 :data:`SCALE_FLOOR`). Both sides evaluate
 closed forms of the same mechanics in double precision at states away from the singular
 sets of the angles (see :func:`~rigidmech.testing.fuzz.description.coordinate_ranges`);
@@ -50,7 +50,7 @@ __all__ = ["RTOL", "MAX_CONDITION", "Report", "compare", "compare_action",
 
 _T = sp.Symbol("t")
 
-#: relative tolerance on q'' (of the largest |q''| of the state)
+#: relative tolerance on q'' (of the largest ``|q''|`` of the state)
 RTOL = 1e-8
 #: accelerations below this size are compared in absolute terms (a state where every q'' is
 #: zero, such as a body at rest with no action, is not a relative disagreement of round-off)
@@ -194,7 +194,7 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
     states : int
         Number of states compared.
     rtol : float
-        Tolerance relative to the largest |q''| of each state.
+        Tolerance relative to the largest ``|q''|`` of each state.
     coordinates : sequence of str, optional
         Order of the coordinates given to rigidmech's System.
     builders : (callable, callable)
