@@ -52,30 +52,11 @@ N_CHECK = 3
 
 
 def spherical_chain(n):
-    """The 3D chain on ball joints, Euler angles z-x-z relative to the parent link."""
-    import sympy as sp
+    """The 3D chain on ball joints, Euler angles z-x-z relative to the parent link (the
+    catalogue's :func:`rigidmech.models.spherical_chain`)."""
+    from rigidmech import models
 
-    import rigidmech as rm
-
-    names = " ".join(f"psi{i} theta{i} phi{i}" for i in range(1, n + 1))
-    angles = rm.coordinates(names)
-    g = sp.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    system = rm.System(galilean=R0)
-    frame, P, parent = R0, R0.origin, R0
-    for i in range(n):
-        psi, theta, phi = angles[3 * i: 3 * i + 3]
-        m, l, A, C = sp.symbols(f"m{i + 1} l{i + 1} A{i + 1} C{i + 1}", positive=True)
-        frame = frame.euler(f"R{i + 1}", psi, theta, phi)
-        G = P.moved(f"G{i + 1}", -l / 2 * frame.k)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.InertiaOperator.from_products(A, A, C, frame=frame, at=G))
-        system.connect(parent, body, rm.joints.Spherical(at=P))
-        P = P.moved(f"P{i + 1}", -l * frame.k)
-        parent = body
-    system.act(rm.gravity(-g * R0.k))
-    return system
-
+    return models.spherical_chain(n).system
 
 def _params(system, rng):
     out = {}

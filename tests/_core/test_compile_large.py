@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import sympy
 
-import rigidmech as rm
+from rigidmech import models
 from rigidmech._core import _codegen, _cse
 from rigidmech._core.compile import compile_expressions, compile_linear_solve
 from rigidmech.vectors import t as _t
@@ -16,42 +16,11 @@ from rigidmech.vectors import t as _t
 
 def spherical_chain(n):
     """n axisymmetric links (A about transverse axes, C about their own) on ball joints."""
-    angles = rm.coordinates(" ".join(f"psi{i} theta{i} phi{i}" for i in range(1, n + 1)))
-    g = sympy.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    system = rm.System(galilean=R0)
-    frame, P, parent = R0, R0.origin, R0
-    for i in range(n):
-        psi, theta, phi = angles[3 * i: 3 * i + 3]
-        m, l, A, C = sympy.symbols(f"m{i + 1} l{i + 1} A{i + 1} C{i + 1}", positive=True)
-        frame = frame.euler(f"R{i + 1}", psi, theta, phi)
-        G = P.moved(f"G{i + 1}", -l / 2 * frame.k)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.InertiaOperator.from_products(A, A, C, frame=frame, at=G))
-        system.connect(parent, body, rm.joints.Spherical(at=P))
-        P = P.moved(f"P{i + 1}", -l * frame.k)
-        parent = body
-    system.act(rm.gravity(-g * R0.k))
-    return system.equations_of_motion()
+    return models.spherical_chain(n).system.equations_of_motion()
 
 
 def planar_chain(n):
-    qs = rm.coordinates(" ".join(f"q{i}" for i in range(1, n + 1)))
-    g = sympy.Symbol("g", positive=True)
-    R0 = rm.Frame("R0")
-    frame, P, parent = R0, R0.origin, R0
-    system = rm.System(galilean=R0)
-    for i, q in enumerate(qs):
-        m, l = sympy.symbols(f"m{i + 1} l{i + 1}", positive=True)
-        frame = frame.rotated(f"R{i + 1}", about=frame.k, angle=q)
-        G = P.moved(f"G{i + 1}", l / 2 * frame.i)
-        body = rm.Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
-                       inertia=rm.inertia.rod(m, l, axis=frame.i, centre=G))
-        system.connect(parent, body, rm.joints.Pivot(at=P, axis=R0.k))
-        P = P.moved(f"P{i + 1}", l * frame.i)
-        parent = body
-    system.act(rm.gravity(-g * R0.j))
-    return system.equations_of_motion()
+    return models.n_link_pendulum(n).system.equations_of_motion()
 
 
 def _exact_accelerations(M, f, values):

@@ -6,7 +6,8 @@ from rigidmech import models
 from rigidmech.dynamics import System
 from rigidmech.errors import ArgumentError
 
-_ARGS = {"n_link_pendulum": (3,), "four_bar_chain": (2,), "wheel_on_incline": (0.2,),
+_ARGS = {"n_link_pendulum": (3,), "spherical_chain": (2,), "four_bar_chain": (2,),
+         "wheel_on_incline": (0.2,),
          "sleigh_on_incline": (0.3,)}
 
 

@@ -36,6 +36,7 @@ from .chains import (
     double_pendulum,
     n_link_pendulum,
     point_mass_double_pendulum,
+    spherical_chain,
 )
 from .contacts import eccentric_disc, sliding_ball
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
@@ -45,7 +46,7 @@ from .tops import heavy_top
 
 __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
-           "cart_pendulum",
+           "spherical_chain", "cart_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
            "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
@@ -76,6 +77,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (double_pendulum, "ch. 25.4.3, 27.5"),
     (point_mass_double_pendulum, "ch. 25.4.3, 27.5.2"),
     (n_link_pendulum, "ch. 25.3"),
+    (spherical_chain, "ch. 9.4.4, 25.3"),
     (cart_pendulum, "ch. 21, 24.3"),
     (four_bar, "ch. 13.2, 25.3.3"),
     (four_bar_chain, "ch. 25.3.3"),
@@ -112,7 +114,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    17
+    18
     """
     return tuple(_BY_NAME)
 

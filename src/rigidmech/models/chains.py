@@ -11,8 +11,9 @@ import sympy as sp
 
 from .. import inertia
 from .._core.errors import ArgumentError
-from ..actions import Pivot, Prismatic, gravity
+from ..actions import Pivot, Prismatic, Spherical, gravity
 from ..dynamics import System
+from ..inertia import InertiaOperator
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates
 from ._model import Model
@@ -191,6 +192,68 @@ def n_link_pendulum(n: int) -> Model:
         points.append(P)
     system.act(gravity(-g * R0.j))
     return Model(system, qs, tuple(consts), tuple(frames), tuple(bodies), tuple(points))
+
+
+def spherical_chain(n: int) -> Model:
+    """The 3D chain of n axisymmetric links on ball joints, hanging under gravity ``-g R0.k``.
+
+    Link i (mass m_i, length l_i, transverse moment A_i and axial moment C_i about its centre
+    ``G<i>``, body ``b<i>``) is oriented relative to link i - 1 (the first relative to R0) by
+    the Euler angles z-x-z (psi_i, theta_i, phi_i) of the book's ch. 9.4.4, and joined at
+    the tip ``P<i-1>`` of the previous link (O for the first) by a spherical joint; its axis is
+    ``-R<i>.k``. Three parameters of situation per link: the 3D chain of the derivation and
+    compilation benchmarks (ch. 25.3).
+
+    Parameters
+    ----------
+    n : int
+        Number of links, at least 1.
+
+    Returns
+    -------
+    Model
+        coordinates (psi1, theta1, phi1, ..., phin), constants (g, m1, l1, A1, C1, ...),
+        frames (R0, ..., Rn), bodies (b1, ..., bn), points (O, P1, ..., Pn).
+
+    Raises
+    ------
+    ArgumentError
+        If ``n`` is not an integer >= 1.
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> top = models.spherical_chain(1)
+    >>> [str(q) for q in top.coordinates]
+    ['psi1(t)', 'theta1(t)', 'phi1(t)']
+    >>> top.system.equations_of_motion().mass_matrix[2, 2]
+    C1
+    """
+    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+        raise ArgumentError(f"`n` must be an integer >= 1 (the number of links); got {n!r}.")
+    angles = coordinates(" ".join(f"psi{i} theta{i} phi{i}" for i in range(1, n + 1)))
+    g = sp.Symbol("g", positive=True)
+    R0 = Frame("R0")
+    system = System(galilean=R0)
+    frame, P, parent = R0, R0.origin, R0
+    consts, frames, bodies, points = [g], [R0], [], [R0.origin]
+    for i in range(n):
+        psi, theta, phi = angles[3 * i: 3 * i + 3]
+        m, l, A, C = sp.symbols(f"m{i + 1} l{i + 1} A{i + 1} C{i + 1}", positive=True)
+        frame = frame.euler(f"R{i + 1}", psi, theta, phi)
+        G = P.moved(f"G{i + 1}", -l / 2 * frame.k)
+        body = Body(f"b{i + 1}", frame=frame, mass=m, centre=G,
+                    inertia=InertiaOperator.from_products(A, A, C, frame=frame, at=G))
+        system.connect(parent, body, Spherical(at=P))
+        P = P.moved(f"P{i + 1}", -l * frame.k)
+        parent = body
+        consts += [m, l, A, C]
+        frames.append(frame)
+        bodies.append(body)
+        points.append(P)
+    system.act(gravity(-g * R0.k))
+    return Model(system, tuple(angles), tuple(consts), tuple(frames), tuple(bodies),
+                 tuple(points))
 
 
 def cart_pendulum() -> Model:
