@@ -14,8 +14,10 @@ from .modes import Modes, harmonic_response_direct, natural_modes, plot_frequenc
 from .one_dof import (
     coulomb_free_response,
     coulomb_stop,
+    critical_damping,
     damped_frequency,
     damping_case,
+    damping_coefficient,
     damping_ratio,
     dry_friction_equivalent_damping,
     duhamel_response,
@@ -43,7 +45,8 @@ from .rotors import (
 )
 
 __all__ = [
-    "natural_frequency", "damping_ratio", "damped_frequency", "logarithmic_decrement",
+    "natural_frequency", "critical_damping", "damping_ratio", "damping_coefficient",
+    "damped_frequency", "logarithmic_decrement",
     "damping_case", "free_response", "harmonic_response", "resonance",
     "half_power_frequencies", "quality_factor", "transmissibility", "support_motion_response",
     "coulomb_stop", "coulomb_free_response", "equivalent_viscous_damping",
