@@ -33,6 +33,7 @@ from .one_dof import (
     support_motion_response,
     transmissibility,
 )
+from .pendulum import PERIOD_SERIES, pendulum_period, pendulum_period_series
 from .rotors import (
     balancing_masses,
     bearing_forces,
@@ -57,4 +58,5 @@ __all__ = [
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
     "torsion_pendulum_period",
+    "pendulum_period", "pendulum_period_series", "PERIOD_SERIES",
 ]
