@@ -114,6 +114,8 @@ def test_bad_lengths(args, error, match):
 def test_bad_crank_angle():
     with pytest.raises(ArgumentError, match=r"`crank_angle` must be finite"):
         transmission_angle(2.0, 1.0, 2.0, 1.5, [0.0, math.nan])
+    with pytest.raises(ArgumentTypeError, match=r"`crank_angle` must be a number"):
+        transmission_angle(2.0, 1.0, 2.0, 1.5, "quarter")
 
 
 def test_no_dead_points_when_the_crank_turns():

@@ -191,6 +191,13 @@ def test_observed_order_bad_steps(steps, error, match):
         observed_order("rk4", lambda t, y: -y, (0.0, 1.0), [1.0], [math.exp(-1)], steps)
 
 
+def test_observed_order_bad_t_span():
+    with pytest.raises(ArgumentTypeError, match=r"`t_span` must be a pair of numbers"):
+        observed_order("rk4", lambda t, y: -y, None, [1.0], [1.0], [0.1, 0.05])
+    with pytest.raises(ArgumentTypeError, match=r"`t_span` must be a pair of numbers"):
+        observed_order("rk4", lambda t, y: -y, (0.0, 1.0, 2.0), [1.0], [1.0], [0.1, 0.05])
+
+
 def test_observed_order_bad_exact_shape():
     with pytest.raises(ArgumentError, match=r"`exact` must give a state of the shape"):
         observed_order("rk4", lambda t, y: -y, (0.0, 1.0), [1.0], [1.0, 2.0], [0.1, 0.05])

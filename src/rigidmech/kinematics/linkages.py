@@ -165,7 +165,12 @@ def transmission_angle(ground, crank, coupler, rocker, crank_angle):
     77.975301
     """
     (g, a, b, c), _ = _lengths(ground, crank, coupler, rocker)
-    theta = np.asarray(crank_angle, dtype=float)
+    try:
+        theta = np.asarray(crank_angle, dtype=float)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"`crank_angle` must be a number or an array of numbers (radians); got "
+            f"{crank_angle!r}.") from None
     if not np.all(np.isfinite(theta)):
         raise ArgumentError(f"`crank_angle` must be finite; got {crank_angle!r}.")
     bd2 = g * g + a * a - 2 * g * a * np.cos(theta)

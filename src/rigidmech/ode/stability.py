@@ -356,7 +356,11 @@ def observed_order(method, fun: Callable, t_span, y0, exact, steps) -> Convergen
         raise ArgumentError(f"`steps` must be finite and > 0; got {hs}.")
     if len(set(hs)) != len(hs):
         raise ArgumentError(f"`steps` must be distinct; got {hs}.")
-    t1 = float(t_span[1])
+    try:
+        t0, t1 = (float(x) for x in t_span)
+    except (TypeError, ValueError):
+        raise ArgumentTypeError(
+            f"`t_span` must be a pair of numbers (t0, t1); got {t_span!r}.") from None
     y_exact = np.asarray(exact(t1) if callable(exact) else exact, dtype=float)
     y0 = np.asarray(y0, dtype=float)
     if y_exact.shape != y0.shape:
@@ -373,7 +377,7 @@ def observed_order(method, fun: Callable, t_span, y0, exact, steps) -> Convergen
             raise ArgumentError(
                 f"the error is exactly 0 at `step` = {h:g}: the method is exact on this "
                 "problem and shows no order; choose a problem it does not solve exactly.")
-        taken.append(abs(t1 - float(t_span[0])) / r.nsteps)
+        taken.append(abs(t1 - t0) / r.nsteps)
         errors.append(err)
     logh, loge = np.log(taken), np.log(errors)
     order = float(np.polyfit(logh, loge, 1)[0])
