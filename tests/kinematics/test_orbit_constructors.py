@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from numpy.testing import assert_allclose
 
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
@@ -138,3 +140,20 @@ def test_elements_are_python_floats():
     o = Orbit.from_apsides(1.0, 3.0, mu=1.0)
     for value in (o.specific_energy, o.semi_major_axis, o.apoapsis, o.period, o.periapsis):
         assert type(value) is float
+
+
+@settings(max_examples=60, deadline=None)
+@given(rp=st.floats(0.1, 10), ratio=st.floats(1.0, 50), raan=st.floats(0, 2 * math.pi),
+       inc=st.floats(0, math.pi), argp=st.floats(0, 2 * math.pi), epoch=st.floats(-5, 5))
+def test_from_apsides_round_trip_property(rp, ratio, raan, inc, argp, epoch):
+    ra = rp * ratio
+    o = Orbit.from_apsides(rp, ra, mu=1.0, raan=raan, inclination=inc,
+                           argument_of_periapsis=argp, epoch=epoch)
+    assert o.periapsis == pytest.approx(rp, rel=1e-10)
+    assert o.apoapsis == pytest.approx(ra, rel=1e-10)
+    r_peri = o.state_at(epoch)[0]
+    r_apo = o.state_at(epoch + o.period / 2)[0]
+    assert np.linalg.norm(r_peri) == pytest.approx(rp, rel=1e-10)
+    if o.kind == "ellipse":
+        assert np.linalg.norm(r_apo) == pytest.approx(ra, rel=1e-9)
+        assert_allclose(r_apo / ra, -r_peri / rp, atol=1e-8)   # opposite the periapsis
