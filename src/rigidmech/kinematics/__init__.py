@@ -42,6 +42,9 @@ __all__ += ["ContactKinematics", "Centrodes", "centrodes", "instantaneous_centre
 from .constraints import VelocityConstraint  # noqa: E402  (ch. 10.1.3, 25.3)
 
 __all__ += ["VelocityConstraint"]
+from .linkages import dead_points, grashof_type, is_grashof, transmission_angle  # noqa: E402
+
+__all__ += ["grashof_type", "is_grashof", "transmission_angle", "dead_points"]
 
 from .._core.deprecation import deprecated_aliases  # noqa: E402
 

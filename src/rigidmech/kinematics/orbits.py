@@ -33,6 +33,7 @@ import numbers
 import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+from ._orbit_elements import periapsis_speed, perifocal_basis
 from ._universal import propagate, time_from_periapsis
 
 __all__ = ["Orbit", "HohmannTransfer", "kepler_elliptic", "kepler_hyperbolic",
@@ -235,7 +236,7 @@ class Orbit:
                                 f"{parabolic_tol!r}.")
         r0 = _vector3(position, "position")
         v0 = _vector3(velocity, "velocity")
-        r = np.linalg.norm(r0)
+        r = float(np.linalg.norm(r0))
         if r == 0:
             raise ArgumentError("`position` must not be the attracting centre; got r0 = 0.")
         h = np.cross(r0, v0)
@@ -274,6 +275,95 @@ class Orbit:
         self._tp = self._epoch - self._time_since_periapsis()
         for a in (self._r0, self._v0, self._h, self._e_vec, self._P, self._Q):
             a.setflags(write=False)
+
+    @classmethod
+    def from_apsides(cls, periapsis, apoapsis, *, mu, raan=0.0, inclination=0.0,
+                     argument_of_periapsis=0.0, epoch=0.0):
+        """The ellipse of given periapsis and apoapsis radii, at its periapsis at `epoch`.
+
+        Book, ch. 8.2: a = (r_p + r_a)/2, e = (r_a - r_p)/(r_a + r_p), and the speed at the
+        periapsis from the vis-viva equation, v_p^2 = mu (2/r_p - 1/a).
+
+        Parameters
+        ----------
+        periapsis, apoapsis : float
+            The radii r_p <= r_a, positive and finite (r_p = r_a: a circle).
+        mu : float
+            Gravitational parameter G M > 0.
+        raan, inclination, argument_of_periapsis : float, optional
+            The plane and the periapsis, in radians: longitude of the ascending node Omega,
+            inclination i in [0, pi], argument of the periapsis omega (the periapsis direction
+            is R3(Omega) R1(i) R3(omega) applied to the x axis). Default 0: the plane z = 0,
+            periapsis on the x axis, motion counterclockwise about z.
+        epoch : float, optional
+            The time of the passage at the periapsis.
+
+        Returns
+        -------
+        Orbit
+            Built from the state at the periapsis; its kind follows the usual rule of
+            :class:`Orbit` (the energy, then e <= 1e-12 for a circle).
+
+        Raises
+        ------
+        ArgumentError
+            A radius not positive and finite, ``apoapsis < periapsis`` or an inclination
+            outside [0, pi].
+        ArgumentTypeError
+            An angle that is not a real number.
+
+        Examples
+        --------
+        >>> o = Orbit.from_apsides(1.0, 3.0, mu=1.0)
+        >>> o.kind, round(o.eccentricity, 12), round(o.semi_major_axis, 12)
+        ('ellipse', 0.5, 2.0)
+        >>> round(o.apoapsis, 12)
+        3.0
+        """
+        mu = _positive(mu, "mu")
+        rp, ra = _positive(periapsis, "periapsis"), _positive(apoapsis, "apoapsis")
+        if ra < rp:
+            raise ArgumentError(
+                f"`apoapsis` must be >= `periapsis`; got apoapsis {ra} < periapsis {rp}. "
+                "Swap them.")
+        P, Q = perifocal_basis(raan, inclination, argument_of_periapsis)
+        return cls(rp * P, periapsis_speed(mu, rp, ra) * Q, mu=mu, epoch=epoch)
+
+    @classmethod
+    def circular(cls, period, *, mu, raan=0.0, inclination=0.0, argument_of_periapsis=0.0,
+                 epoch=0.0):
+        """The circular orbit of a given period; its radius from Kepler's third law.
+
+        Book, ch. 8.2: T = 2 pi sqrt(a^3 / mu), so r = (mu (T / 2 pi)^2)^(1/3).
+
+        Parameters
+        ----------
+        period : float
+            T > 0.
+        mu : float
+            Gravitational parameter G M > 0.
+        raan, inclination, argument_of_periapsis, epoch : float, optional
+            As in :meth:`from_apsides`; the point is at the direction of angle
+            `argument_of_periapsis` from the node at `epoch`.
+
+        Returns
+        -------
+        Orbit
+            Of kind ``"circle"``.
+
+        Examples
+        --------
+        The geostationary orbit (one sidereal day, the Earth's mu in SI units):
+
+        >>> o = Orbit.circular(86164.0905, mu=3.986004418e14)
+        >>> o.kind, round(o.periapsis / 1e3, 1)
+        ('circle', 42164.2)
+        """
+        mu = _positive(mu, "mu")
+        T = _positive(period, "period")
+        r = (mu * (T / (2 * math.pi)) ** 2) ** (1 / 3)
+        return cls.from_apsides(r, r, mu=mu, raan=raan, inclination=inclination,
+                                argument_of_periapsis=argument_of_periapsis, epoch=epoch)
 
     @property
     def mu(self) -> float:

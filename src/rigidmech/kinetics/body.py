@@ -118,6 +118,69 @@ class Body(Solid):
         self._centre = centre
         self._inertia = inertia
 
+    @classmethod
+    def particle(cls, name: str, at: Point, *, mass, basis: Frame | None = None,
+                 frame_name: str | None = None) -> Body:
+        """A particle (point mass) at the point `at`: a body of mass `mass` concentrated at
+        `at`, with no inertia of its own (book, ch. 15.5.1, 18.1, 21).
+
+        The body needs a frame: it gets one translated to `at`, with the basis of `basis`
+        (``basis.translated(frame_name, at)``); its mass centre is `at` and its operator of
+        inertia is zero. The rotation of that frame plays no part in the particle's kinetic
+        energy or torsors.
+
+        Parameters
+        ----------
+        name : str
+            The body's name.
+        at : Point
+            The particle's position, a point whose motion is known (it may depend on
+            coordinates, e.g. ``R0.point("P", x, y, 0)`` or ``O.moved("P", L * R1.i)``).
+        mass : scalar
+            m, a finite real number >= 0 or a sympy expression (as for :class:`Body`);
+            required.
+        basis : Frame, optional
+            The frame whose basis the particle's frame keeps; default the root frame of `at`.
+        frame_name : str, optional
+            Name of the frame made; default ``"R_" + name``.
+
+        Returns
+        -------
+        Body
+
+        Raises
+        ------
+        ArgumentError
+            If `mass` is missing or not >= 0, or `name` is not a non-empty string.
+        ArgumentTypeError
+            If `at` is not a Point or `basis` not a Frame.
+
+        Examples
+        --------
+        >>> import sympy as sp
+        >>> import rigidmech as rm
+        >>> q = rm.coordinates("q"); m, L = rm.constants("m L", positive=True)
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=q)
+        >>> bob = Body.particle("bob", R0.origin.moved("P", L * R1.i), mass=m)
+        >>> sp.simplify(bob.kinetic_energy(R0))
+        L**2*m*Derivative(q(t), t)**2/2
+        >>> bob.inertia is None, bob.frame.name
+        (True, 'R_bob')
+        """
+        if not isinstance(name, str) or not name:
+            raise ArgumentError(f"`name` must be a non-empty string; got {name!r}.")
+        if mass is None:
+            raise ArgumentError(
+                "`mass` must be given for a particle (a number >= 0 or a symbol); got None. "
+                "For a massless link use Body(name, frame) instead.")
+        check_point(at, "at")
+        if basis is None:
+            basis = at.root
+        if not isinstance(basis, Frame):
+            raise ArgumentTypeError(f"`basis` must be a Frame; got {type(basis).__name__}.")
+        frame = basis.translated("R_" + name if frame_name is None else frame_name, at)
+        return cls(name, frame, mass=mass, centre=at)
+
     @property
     def mass(self):
         """The mass m (None for a massless solid)."""

@@ -15,6 +15,9 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * multistep (Adams) and geometric (symplectic, for ``q'' = a(t, q)``) methods of
   :mod:`rigidmech.ode.multistep` and :mod:`rigidmech.ode.geometric`.
 
+The stability function of a Runge-Kutta tableau, its real stability interval and the order a
+method shows on a problem with an exact solution are in :mod:`rigidmech.ode.stability`.
+
 ``methods()`` (or ``METHODS``) lists them all; :mod:`rigidmech.ode._registry` tells how a new
 method plugs in.
 
@@ -27,11 +30,12 @@ Examples
 0.36787944117...
 """
 
-from . import tableaux
+from . import stability, tableaux
 from ._result import OdeResult
 from ._warnings import StiffnessWarning
 from .api import methods, solve
 from .events import EventTracker, event
+from .stability import observed_order, real_stability_interval, stability_function
 
 __all__ = [
     "solve",
@@ -39,6 +43,10 @@ __all__ = [
     "OdeResult",
     "StiffnessWarning",
     "tableaux",
+    "stability",
+    "stability_function",
+    "real_stability_interval",
+    "observed_order",
     "event",
     "EventTracker",
     "METHODS",

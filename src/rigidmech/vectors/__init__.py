@@ -21,6 +21,7 @@ from .geometry import (
     is_orthogonal,
     is_parallel,
 )
+from .orientation import axis_angle, euler_angle_rates, rotation_between
 from .points import Point
 from .reference_change import (
     affine_map,
@@ -52,5 +53,6 @@ __all__ = [
     "Curve", "FrenetSamples", "FrenetTrihedron", "frenet_numeric",
     "declared_order",
     "OrientationSingularity", "orientation_singularity",
+    "euler_angle_rates", "rotation_between", "axis_angle",
     "euler_parameter_matrix", "euler_parameter_rates", "euler_parameters_of",
 ]

@@ -14,8 +14,10 @@ from .modes import Modes, harmonic_response_direct, natural_modes, plot_frequenc
 from .one_dof import (
     coulomb_free_response,
     coulomb_stop,
+    critical_damping,
     damped_frequency,
     damping_case,
+    damping_coefficient,
     damping_ratio,
     dry_friction_equivalent_damping,
     duhamel_response,
@@ -31,6 +33,7 @@ from .one_dof import (
     support_motion_response,
     transmissibility,
 )
+from .pendulum import PERIOD_SERIES, pendulum_period, pendulum_period_series
 from .rotors import (
     balancing_masses,
     bearing_forces,
@@ -43,7 +46,8 @@ from .rotors import (
 )
 
 __all__ = [
-    "natural_frequency", "damping_ratio", "damped_frequency", "logarithmic_decrement",
+    "natural_frequency", "critical_damping", "damping_ratio", "damping_coefficient",
+    "damped_frequency", "logarithmic_decrement",
     "damping_case", "free_response", "harmonic_response", "resonance",
     "half_power_frequencies", "quality_factor", "transmissibility", "support_motion_response",
     "coulomb_stop", "coulomb_free_response", "equivalent_viscous_damping",
@@ -54,4 +58,5 @@ __all__ = [
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
     "torsion_pendulum_period",
+    "pendulum_period", "pendulum_period_series", "PERIOD_SERIES",
 ]

@@ -25,7 +25,8 @@ import sympy as sp
 from .._core.errors import ArgumentError
 
 __all__ = [
-    "natural_frequency", "damping_ratio", "damped_frequency", "logarithmic_decrement",
+    "natural_frequency", "critical_damping", "damping_ratio", "damping_coefficient",
+    "damped_frequency", "logarithmic_decrement",
     "damping_case", "free_response", "harmonic_response", "resonance",
     "half_power_frequencies", "quality_factor", "transmissibility", "support_motion_response",
     "coulomb_stop", "coulomb_free_response", "equivalent_viscous_damping",
@@ -90,9 +91,42 @@ def natural_frequency(stiffness, mass):
     return lib.sqrt(_as(stiffness, lib) / _as(mass, lib))
 
 
+def critical_damping(stiffness, mass):
+    """Critical damping coefficient :math:`c_c = 2\\sqrt{k m}` (ch. 21.3.2), N s/m: the
+    damping at which the free motion stops oscillating (:math:`\\zeta = 1`).
+
+    Parameters
+    ----------
+    stiffness, mass : float, array_like or sympy expression
+        k > 0 and m > 0 (a symbol known to be nonpositive is refused).
+
+    Returns
+    -------
+    float, ndarray or sympy expression
+
+    Raises
+    ------
+    ArgumentError
+        If `stiffness` or `mass` is not positive and finite.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> k, m = sp.symbols("k m", positive=True)
+    >>> critical_damping(k, m)
+    2*sqrt(k)*sqrt(m)
+    >>> float(critical_damping(400.0, 4.0))
+    80.0
+    """
+    _positive(stiffness, "stiffness")
+    _positive(mass, "mass")
+    lib = _lib(stiffness, mass)
+    return 2 * lib.sqrt(_as(stiffness, lib) * _as(mass, lib))
+
+
 def damping_ratio(damping, stiffness, mass):
     """Damping ratio :math:`\\zeta = c / (2\\sqrt{k m})` (ch. 21.3.2): c over the critical
-    damping :math:`c_c = 2\\sqrt{k m}`.
+    damping :math:`c_c = 2\\sqrt{k m}` (:func:`critical_damping`).
 
     Examples
     --------
@@ -104,10 +138,44 @@ def damping_ratio(damping, stiffness, mass):
     0.05
     """
     _nonnegative(damping, "damping")
-    _positive(stiffness, "stiffness")
-    _positive(mass, "mass")
+    c_c = critical_damping(stiffness, mass)
     lib = _lib(damping, stiffness, mass)
-    return _as(damping, lib) / (2 * lib.sqrt(_as(stiffness, lib) * _as(mass, lib)))
+    return _as(damping, lib) / _as(c_c, lib)
+
+
+def damping_coefficient(zeta, stiffness, mass):
+    """Viscous damping coefficient :math:`c = \\zeta\\, c_c = 2\\zeta\\sqrt{k m}` of a given
+    damping ratio (ch. 21.3.2), the inverse of :func:`damping_ratio`.
+
+    Parameters
+    ----------
+    zeta : float, array_like or sympy expression
+        Damping ratio, >= 0 (0: undamped).
+    stiffness, mass : float, array_like or sympy expression
+        k > 0 and m > 0.
+
+    Returns
+    -------
+    float, ndarray or sympy expression
+
+    Raises
+    ------
+    ArgumentError
+        If `zeta` is negative or not finite, or `stiffness` or `mass` not positive.
+
+    Examples
+    --------
+    >>> float(damping_coefficient(0.05, 400.0, 4.0))
+    4.0
+    >>> import sympy as sp
+    >>> z, k, m = sp.symbols("zeta k m", positive=True)
+    >>> damping_coefficient(z, k, m)
+    2*sqrt(k)*sqrt(m)*zeta
+    """
+    _nonnegative(zeta, "zeta")
+    c_c = critical_damping(stiffness, mass)
+    lib = _lib(zeta, stiffness, mass)
+    return _as(zeta, lib) * _as(c_c, lib)
 
 
 def damped_frequency(omega0, zeta):
