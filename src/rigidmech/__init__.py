@@ -5,7 +5,9 @@ kinematics (Part II), actions and connections (Part III), inertia and kinetics (
 dynamics and Lagrange's equations (Part V), numerical solvers (Part VI).
 """
 
-from . import actions, errors, inertia, ode, regimes, scenes, statics, vibrations
+import importlib as _importlib
+
+from . import actions, errors, inertia, ode
 from . import actions as joints
 from ._core.version import __version__ as __version__
 from .actions import ContactLaws, Coulomb, Couple, Force, FrictionContact, Spring, gravity, power
@@ -19,8 +21,6 @@ from .kinematics import (
     velocity_composition,
 )
 from .kinetics import Body
-from .lagrange import lagrange_equations
-from .statics import Catenary, Statics
 from .torsors import (
     Domain,
     Resolution,
@@ -78,11 +78,31 @@ from .systems import Mechanism  # noqa: E402
 
 __all__ += ["systems", "Mechanism"]
 
-from . import models  # noqa: E402
-
 __all__ += ["models"]
 
 from ._core.deprecation import deprecated_aliases  # noqa: E402
 
 # ``rm.Contact`` was ContactLaws (rigidmech.kinematics.Contact another class): renamed
-__getattr__ = deprecated_aliases(__name__, {"Contact": ("rigidmech.ContactLaws", ContactLaws)})
+_deprecated = deprecated_aliases(__name__, {"Contact": ("rigidmech.ContactLaws", ContactLaws)})
+
+# lazy: import cost (see docs/performance). These subpackages (and the names taken from them)
+# are imported on first access, by this module ``__getattr__`` (PEP 562): ``rm.statics``,
+# ``rm.Statics``, ``from rigidmech import *`` and ``dir(rm)`` are as if imported eagerly.
+_LAZY_SUBPACKAGES = ("lagrange", "models", "regimes", "scenes", "statics", "testing",
+                     "vibrations")
+_LAZY_NAMES = {"Catenary": "statics", "Statics": "statics", "lagrange_equations": "lagrange"}
+
+
+def __getattr__(name):
+    if name in _LAZY_SUBPACKAGES:
+        value = _importlib.import_module(f"{__name__}.{name}")
+    elif name in _LAZY_NAMES:
+        value = getattr(_importlib.import_module(f"{__name__}.{_LAZY_NAMES[name]}"), name)
+    else:
+        return _deprecated(name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__) | set(_LAZY_SUBPACKAGES) | set(_LAZY_NAMES))

@@ -21,10 +21,6 @@ pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integratio
 
 import numpy as np
 import sympy
-from scipy.linalg.lapack import dgecon as _dgecon
-from scipy.linalg.lapack import dgetrf as _dgetrf
-from scipy.linalg.lapack import dgetrs as _dgetrs
-from scipy.linalg.lapack import dposv as _dposv
 
 from . import _codegen
 from ._codegen import (
@@ -41,6 +37,11 @@ from .errors import (
     ArgumentTypeError,
     SingularMassMatrixError,
 )
+from .lazy import lazy_functions
+
+# lazy: import cost (scipy.linalg takes ~0.4 s; see docs/performance); rebound on first call
+_dgecon, _dgetrf, _dgetrs, _dposv = lazy_functions(
+    globals(), "scipy.linalg.lapack", "dgecon", "dgetrf", "dgetrs", "dposv")
 
 __all__ = [
     "CompiledFunction",

@@ -16,12 +16,14 @@ arbitrary instant. Constraints that do not depend on it need no ``t``.
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg
 import sympy as sp
 
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ConnectionError_
+from .._core.lazy import lazy_package
 from ..vectors import t as _t
+
+scipy = lazy_package("scipy")  # lazy: import cost of scipy.linalg (see docs/performance)
 
 __all__ = ["assemble", "Closure", "ON_CONSTRAINTS"]
 

@@ -17,9 +17,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .._core.errors import NumericalError
+from .._core.lazy import lazy_functions
+
+# lazy: import cost (scipy.optimize takes ~0.3 s; see docs/performance)
+brentq, = lazy_functions(globals(), "scipy.optimize", "brentq")
 
 _MAX_ITER = 200
 

@@ -26,9 +26,12 @@ import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
-from scipy.optimize import brentq
 
 from rigidmech._core.errors import ArgumentError, ArgumentTypeError
+from rigidmech._core.lazy import lazy_functions
+
+# lazy: import cost (scipy.optimize takes ~0.3 s; see docs/performance)
+brentq, = lazy_functions(globals(), "scipy.optimize", "brentq")
 
 __all__ = ["EventTracker", "event"]
 

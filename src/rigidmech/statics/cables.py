@@ -24,10 +24,13 @@ import math
 
 import numpy as np
 import sympy as sp
-from scipy.optimize import brentq
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.lazy import lazy_functions
 from ..vectors import Curve, Frame
+
+# lazy: import cost (scipy.optimize takes ~0.3 s; see docs/performance)
+brentq, = lazy_functions(globals(), "scipy.optimize", "brentq")
 
 __all__ = ["Catenary", "ParabolicCable", "capstan_ratio", "holding_force", "hoisting_force",
            "belt_slip_torque"]

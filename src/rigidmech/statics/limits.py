@@ -26,11 +26,14 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
-from scipy.optimize import brentq, linprog
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.lazy import lazy_functions
 from .._core.validation import substitutions
 from .errors import EquilibriumError
+
+# lazy: import cost (scipy.optimize takes ~0.3 s; see docs/performance)
+brentq, linprog = lazy_functions(globals(), "scipy.optimize", "brentq", "linprog")
 
 __all__ = ["limiting_equilibrium", "Limit"]
 

@@ -13,12 +13,14 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
-import scipy.linalg
 import sympy as sp
 
 from .._core.errors import RigidmechWarning
+from .._core.lazy import lazy_package
 from ..torsors import Torsor
 from .errors import EquilibriumError
+
+scipy = lazy_package("scipy")  # lazy: import cost of scipy.linalg (see docs/performance)
 
 # condition number above which the numeric solution is flagged (accurate to ~1e-6 or worse)
 _ILL_CONDITIONED = 1e10
