@@ -29,7 +29,6 @@ import math
 
 import numpy as np
 import sympy as sp
-from scipy.spatial.transform import Rotation
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from ._rotations import FrameBase
@@ -221,6 +220,9 @@ def axis_angle(matrix, *, tol=1e-9):
         raise ArgumentError(
             f"`matrix` must be a proper rotation (R.T R = I, det R = 1, to {tol:g}); got "
             f"max |R.T R - I| = {defect:.3g} and det R = {det:.6g}.")
+    # lazy: import cost (scipy takes as long as sympy to import; see docs/performance)
+    from scipy.spatial.transform import Rotation
+
     rotvec = Rotation.from_matrix(R).as_rotvec()
     angle = float(np.linalg.norm(rotvec))
     axis = rotvec / angle if angle > 0 else np.zeros(3)

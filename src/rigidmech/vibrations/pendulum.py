@@ -30,10 +30,13 @@ import math
 
 import numpy as np
 import sympy as sp
-from scipy.special import ellipkm1
 
 from .._core.errors import ArgumentError
+from .._core.lazy import lazy_functions
 from .one_dof import _as, _lib, _positive
+
+# lazy: import cost (scipy takes as long as sympy to import; see docs/performance)
+(ellipkm1,) = lazy_functions(globals(), "scipy.special", "ellipkm1")
 
 __all__ = ["pendulum_period", "pendulum_period_series", "PERIOD_SERIES"]
 
