@@ -149,3 +149,18 @@ def test_a_damper_between_coincident_ends_exerts_no_force():
     damper = Damper(3, a=R0.origin, b=R1.point("B", 0, 0, 0), on_b=body)
     assert all(F.is_zero for _, F in _resultants(damper, body))
     assert damper.length_rate() == 0 and damper.dissipation_function() == 0
+
+
+def test_a_damper_whose_ends_meet_at_an_instant_stops_the_run_there():
+    """-c l' AB / l has no direction where the ends meet while moving apart: the run stops
+    saying where (t and state), not with a nan carried along."""
+    x, y = rm.coordinates("x y")
+    R0 = rm.Frame("R0")
+    R1 = R0.translated("R1", R0.point("P", x, y, 0))
+    body = rm.Body("b", frame=R1, mass=1)
+    s = rm.System(galilean=R0)
+    s.add(body)
+    s.act(Damper(1.0, a=R0.origin, b=R1.origin, on_b=body))
+    sim = s.equations_of_motion().simulate((0.0, 1.0), q0=[0.0, 0.0], u0=[1.0, 0.5])
+    assert sim.status == "failed"
+    assert "not finite at t = 0.0; state y = [0.  0.  1.  0.5]" in sim.message

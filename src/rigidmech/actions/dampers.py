@@ -73,7 +73,9 @@ class Damper(Action):
     Notes
     -----
     Ends that coincide at all times have v_B - v_A = 0 along every direction: l' = 0, no force
-    and no dissipation (the 0/0 of AB / l is not formed).
+    and no dissipation (the 0/0 of AB / l is not formed). Ends that coincide at an instant
+    only leave the direction of the force undefined there: a run reaching that instant stops
+    with "the right-hand side is not finite at t = ...; state y = ...".
 
     Examples
     --------
