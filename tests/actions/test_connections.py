@@ -129,6 +129,28 @@ def test_check_accepts_allowed_and_refuses_forbidden_motion(name, data):
         joint.check(bad)
 
 
+@pytest.mark.parametrize(("size", "allowed"), [
+    (1e-12, True), (0.5e-9, True), (2e-9, False), (1e-6, False)])
+def test_check_tolerates_float_rounding_only(size, allowed):
+    """With float constants, a forbidden component at most SAMPLE_ZERO = 1e-9 of the largest
+    magnitude met in it (here x', the sliding rate) is their rounding and is accepted; 2e-9
+    and 1e-6 of it are a motion the joint forbids and are refused. An exact constant has no
+    rounding: 1e-12 as a rational is refused."""
+    x = rm.coordinates("x")
+    R0 = rm.Frame("R0")
+    joint = rm.joints.Prismatic(at=R0.origin, axis=R0.i)
+    xd = x.diff(rm.t)
+    motion = rm.Torsor(rm.Vector.zero(), R0.vector(xd, size * xd, 0), R0.origin)
+    if allowed:
+        joint.check(motion)
+    else:
+        with pytest.raises(ConnectionError_, match="is not allowed by the joint"):
+            joint.check(motion)
+    exact = rm.Torsor(rm.Vector.zero(), R0.vector(xd, sp.Rational(1, 10**12) * xd, 0), R0.origin)
+    with pytest.raises(ConnectionError_, match="is not allowed by the joint"):
+        joint.check(exact)
+
+
 def test_helical_links_translation_to_rotation():
     """A screw of pitch p advances p per turn: a frame turning by q and moving p q / (2 pi)
     along the axis passes check(); moving p q / pi does not."""

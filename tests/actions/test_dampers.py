@@ -112,3 +112,55 @@ def test_torsion_spring_refuses_an_angle_that_is_not_the_rotation():
     S = rm.Body("S", frame=R0.rotated("R1", about=R0.k, angle=q), mass=1)
     with pytest.raises(ArgumentError, match="`angle` must be the angle of S relative to R0"):
         TorsionSpring(1, q, axis=R0.i, on=S)
+
+
+# -- ends that coincide at all times (found by the differential fuzzer) ----------------------
+def _turning_body():
+    q = rm.coordinates("q")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    return R0, R1, rm.Body("S", frame=R1, mass=1)
+
+
+def _resultants(action, body):
+    return [(s.name, T.resultant) for s, T in action.contributions([body])]
+
+
+def test_a_spring_of_free_length_zero_between_coincident_ends_exerts_no_force():
+    """-k AB with AB = 0: no direction is needed (k (l - 0) / l is k, not 0/0)."""
+    R0, R1, body = _turning_body()
+    spring = rm.Spring(2, 0, a=R0.origin, b=R1.point("B", 0, 0, 0), on_b=body)
+    assert all(F.is_zero for _, F in _resultants(spring, body))
+    assert spring.potential_energy([body], R0) == 0
+
+
+def test_a_spring_of_nonzero_free_length_between_coincident_ends_is_refused():
+    """k (l - l0) AB / l with l = 0 at all times has no direction: refused, naming the ends."""
+    R0, R1, body = _turning_body()
+    spring = rm.Spring(2, 1, a=R0.origin, b=R1.point("B", 0, 0, 0), on_b=body)
+    with pytest.raises(ArgumentError, match=r"`a` \(O_R0\) and `b` \(B\) coincide at all times"):
+        spring.contributions([body])
+
+
+def test_a_damper_between_coincident_ends_exerts_no_force():
+    """-c l' AB / l: the ends coincide at all times, v_B - v_A = 0, l' = 0: zero force and
+    zero dissipation."""
+    R0, R1, body = _turning_body()
+    damper = Damper(3, a=R0.origin, b=R1.point("B", 0, 0, 0), on_b=body)
+    assert all(F.is_zero for _, F in _resultants(damper, body))
+    assert damper.length_rate() == 0 and damper.dissipation_function() == 0
+
+
+def test_a_damper_whose_ends_meet_at_an_instant_stops_the_run_there():
+    """-c l' AB / l has no direction where the ends meet while moving apart: the run stops
+    saying where (t and state), not with a nan carried along."""
+    x, y = rm.coordinates("x y")
+    R0 = rm.Frame("R0")
+    R1 = R0.translated("R1", R0.point("P", x, y, 0))
+    body = rm.Body("b", frame=R1, mass=1)
+    s = rm.System(galilean=R0)
+    s.add(body)
+    s.act(Damper(1.0, a=R0.origin, b=R1.origin, on_b=body))
+    sim = s.equations_of_motion().simulate((0.0, 1.0), q0=[0.0, 0.0], u0=[1.0, 0.5])
+    assert sim.status == "failed"
+    assert "not finite at t = 0.0; state y = [0.  0.  1.  0.5]" in sim.message

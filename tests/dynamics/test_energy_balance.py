@@ -10,6 +10,7 @@ import sympy as sp
 
 import rigidmech as rm
 from rigidmech._core.errors import ArgumentError
+from rigidmech.dynamics.energy import time_dependence
 
 t = rm.t
 TIGHT = {"rtol": 1e-11, "atol": 1e-12, "n_output": 4001}
@@ -252,3 +253,19 @@ def test_damped_system_energy_drift_refused_not_reported_as_drift():
         t=(0, 6), q0=[1.0], m=1.0, k=4.0, **TIGHT)
     assert free.energy_not_conserved() is None
     assert free.energy_drift() < 1e-9
+
+
+# -- "vanishes identically": the rule of the joints and closures ----------------------------
+@pytest.mark.parametrize(("residue", "prescribed"), [(6.9e-18, False), (1e-6, True)])
+def test_time_dependence_tolerates_only_float_rounding(residue, prescribed):
+    """T0 (the part of T of degree 0 in the rates) at float rounding of the other terms
+    (6.9e-18, what 0.0625 sin(0.0625) - 0.0625 sin(0.0625) leaves once sympy has combined the
+    floats) is not a prescribed motion; 1e-6 of them is. The decision is
+    :func:`rigidmech._core.symbolic.vanishes`, as for Joint.check and the closures (it was a
+    bare ``simplify``, which saw the rounding as a term)."""
+    r = rm.coordinates("r")
+    u, q = sp.symbols("u q")
+    rule = {r.diff(rm.t): u, r: q}
+    kinetic = 0.5 * r.diff(rm.t) ** 2 + residue * r ** 2
+    why = time_dependence(kinetic, None, [u], rule)
+    assert (why is not None) == prescribed

@@ -379,3 +379,23 @@ def test_baumgarte_that_cannot_act_is_noted(span, note):
 def test_baumgarte_note_not_when_projected():
     sim = _line().simulate(t=(0, 0.01), q0=[0.0, 2.0], n_output=3)
     assert not [n for n in sim.notes if "Baumgarte" in n]
+
+
+# -- a right-hand side that fails at the first step: its error comes through ----------------
+def test_a_failure_at_the_first_step_is_reported_not_hidden_by_project():
+    """A four-bar of lengths (2, 1, 2, 1) at q0 = (0, 0, 0) is flat: the loop is closed
+    (dead centre) but the closure's Jacobian is singular, so the accelerations are not finite
+    at t0. The run reported "`project` is for the methods of the integration loop; method
+    'dop853' has its own loop" (the loop had stopped before taking the projection)."""
+    model = rm.models.four_bar(lengths=(2.0, 1.0, 2.0, 1.0))
+    eqs = model.system.equations_of_motion()
+    sim = eqs.simulate((0.0, 1.0), q0=[0.0, 0.0, 0.0], method="dop853", **VALUES)
+    assert sim.status == "failed" and "constraint Jacobian A has rank 1 < 2" in sim.message
+    assert "`project`" not in sim.message
+
+
+def test_ode_solve_reports_a_non_finite_start_with_project():
+    """The same at the solver's level: ``project`` given, f(t0) not finite."""
+    res = ode.solve(lambda t, y: np.full(2, np.nan), (0.0, 1.0), [1.0, 0.0],
+                    method="dop853", project=lambda t, y: y)
+    assert res.status < 0 and "not finite" in res.message

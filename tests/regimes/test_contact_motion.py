@@ -536,3 +536,46 @@ def test_gap_must_be_an_expression():
     kin = ContactKinematics(R0, R0, at=R0.origin, normal=R0.j)
     with pytest.raises(ArgumentError, match="`gap` must be an expression of the coordinates"):
         FrictionContact(kin, gap=1.0)
+
+
+# -- lift-off decided against the size of the terms of N -----------------------------------
+def lifted_block():
+    """A block (mass m) on the floor, gravity -g j and a lift F j at its centre: N = m g - F,
+    whose terms have the magnitude m g + |F| (the force scale of the lift-off decision)."""
+    x, y = rm.coordinates("x y")
+    m, g, F = sp.symbols("m g F", positive=True)
+    R0 = rm.Frame("R0")
+    G = R0.point("G", x, y, 0)
+    block = rm.Body("block", frame=R0.translated("R1", G), mass=m, centre=G)
+    s = rm.System(galilean=R0)
+    s.connect(R0, block, FrictionContact(ContactKinematics(
+        block.frame, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(0.2)))
+    s.act(rm.gravity(-g * R0.j))
+    s.act(Force(on=block, vector=F * R0.j, at=G))
+    return s
+
+
+def test_a_lift_equal_to_the_weight_up_to_rounding_does_not_pull():
+    """9.81 (0.1 3 (1 / 0.3)) is the weight 9.81 of a unit mass up to rounding
+    (N = -1.8e-15): the block rests, it is not refused as pulling."""
+    m = contact_motion(lifted_block(), 1.0, {"x": 0.0, "y": 0.0},
+                       m=1.0, g=9.81, F=9.81 * (0.1 * 3 * (1 / 0.3)))
+    assert m.regimes == ("stick",)
+    assert abs(m.contact_actions(0.5)["I"][0]) < 1e-12
+
+
+@pytest.mark.parametrize("excess", [0.0, 1e-12, -1e-12, 1.9e-12, -1e-6])
+def test_a_lift_within_the_slack_of_the_weight_rests(excess):
+    """The contact pulls when N < -CONE_SLACK (1e-12) times the magnitude of the terms of N,
+    m g + F = 2 m g (1 + excess / 2): a lift F = m g (1 + excess) with excess <= 2e-12 is
+    rounding; a smaller lift presses."""
+    m = contact_motion(lifted_block(), 1.0, {"x": 0.0, "y": 0.0},
+                       m=1.0, g=9.81, F=9.81 * (1 + excess))
+    assert m.regimes == ("stick",)
+
+
+@pytest.mark.parametrize("excess", [2.1e-12, 1e-6])
+def test_a_lift_beyond_the_slack_of_the_weight_pulls(excess):
+    with pytest.raises(ArgumentError, match="the contact I pulls"):
+        contact_motion(lifted_block(), 1.0, {"x": 0.0, "y": 0.0},
+                       m=1.0, g=9.81, F=9.81 * (1 + excess))

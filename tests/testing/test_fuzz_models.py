@@ -156,11 +156,6 @@ def test_random_trees_with_helper_frames_agree_with_kanes_method(model):
 
 
 # -- float constants: the joint check decides exactly ---------------------------------------
-@pytest.mark.xfail(
-    strict=True, raises=RigidmechError,
-    reason="known bug in rigidmech.actions.Joint.check: the relative motion is tested "
-    "exactly (simplify(c) != 0), so the round-off of float constants (6.9e-18 q') refuses a "
-    "valid prismatic joint; the fuzzer builds with exact rationals to avoid it")
 def test_float_constants_do_not_refuse_a_valid_prismatic_joint():
     """Minimal model found by the fuzzer with ``to_rigidmech(..., exact=False)``, written out:
     a body on a pivot about R0.i, its frame turned by the float 0.0625 about j, a slider
@@ -182,11 +177,6 @@ def test_float_constants_do_not_refuse_a_valid_prismatic_joint():
 
 
 # -- springs and dampers whose ends coincide -----------------------------------------------
-@pytest.mark.xfail(
-    strict=True, reason="known bug in rigidmech.actions (Spring, Damper): the direction AB / l "
-    "of a spring or damper whose ends coincide at all times is 0/0 = nan, refused with "
-    "'`scalar` must be a finite real number; got nan' although the force is zero (a spring of "
-    "free length 0 exerts -k AB = 0; a damper, -c l' AB / l with l' = 0); Kane's side gives 0")
 @pytest.mark.parametrize("action", ["spring of free length 0", "damper"])
 def test_coincident_ends_exert_no_force(action):
     """Found by the fuzzer while shrinking: the end of the spring (damper) on a body on a

@@ -18,6 +18,11 @@ function here (and only here):
   (operators of inertia after rotations): a cheap canonical form first, ``simplify`` last;
 * :func:`zero_decision` -- three-valued: True, False, or None when sympy cannot decide (the
   torsors layer reports an undecided case instead of guessing);
+* :func:`vanishes` -- zero for every value of the symbols *to the rounding of the floats the
+  expression carries*: an exact expression is decided by algebra (a sample point first, then
+  ``simplify``), one with float constants by its value at two sample points, at most
+  ``SAMPLE_ZERO`` (1e-9) of the largest magnitude met while evaluating it (the relative motion
+  a joint allows, closure conditions, energies that vanish identically);
 * :func:`fold_numbers` -- zero when the value at two random points, in 64-digit arithmetic, is
   below 1e-40 of the largest intermediate value (large matrices compiled for numbers, where
   ``simplify`` costs minutes and ``evalf`` of a zero costs seconds).
@@ -33,7 +38,7 @@ import mpmath
 import sympy as sp
 
 __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
-           "nonzero_somewhere", "fold_numbers",
+           "nonzero_somewhere", "vanishes", "SAMPLE_ZERO", "fold_numbers",
            "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
 
@@ -284,6 +289,24 @@ def _sample(atom, value, i):
     return value
 
 
+#: Magnitude under which a value at a sample point (symbols in (0.37, 1.4)) is not taken as a
+#: proof of "non-zero" (:func:`nonzero_somewhere`), and, relative to the largest magnitude met
+#: while evaluating an expression with float constants, under which it is their rounding
+#: (:func:`vanishes`): float arithmetic leaves about (number of operations) x 1.1e-16 of the
+#: terms, far below; a genuine term 1e-9 times smaller than the others is not resolved.
+SAMPLE_ZERO = 1e-9
+
+
+def _sample_values(atoms, seed):
+    return {a: complex(_sample(a, seed + 0.1 * (i % 8), i)) for i, a in enumerate(atoms)}
+
+
+def _sample_atoms(expr, skip):
+    return [*sorted(expr.atoms(sp.Derivative), key=str),
+            *sorted(expr.atoms(sp.core.function.AppliedUndef), key=str),
+            *sorted((x for x in expr.free_symbols if x not in skip), key=str)]
+
+
 def nonzero_somewhere(expr, skip=()) -> bool:
     """Whether the scalar ``expr`` is shown not to vanish identically by its value at two
     sample points (every symbol, function q(t) and derivative q'(t) but those in ``skip``
@@ -301,11 +324,9 @@ def nonzero_somewhere(expr, skip=()) -> bool:
     expr = sp.sympify(expr)
     if expr == 0:
         return False
-    atoms = [*sorted(expr.atoms(sp.Derivative), key=str),
-             *sorted(expr.atoms(sp.core.function.AppliedUndef), key=str),
-             *sorted((x for x in expr.free_symbols if x not in skip), key=str)]
-    for seed in (0.3711, 0.6173):
-        values = {a: complex(_sample(a, seed + 0.1 * (i % 8), i)) for i, a in enumerate(atoms)}
+    atoms = _sample_atoms(expr, skip)
+    for seed in _SEEDS:
+        values = _sample_values(atoms, seed)
         try:
             value = _complex_value(expr, values, {})
         except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
@@ -314,9 +335,52 @@ def nonzero_somewhere(expr, skip=()) -> bool:
                 value = complex(expr.xreplace(rule).evalf())
             except (TypeError, ValueError):
                 return False
-        if math.isfinite(abs(value)) and abs(value) > 1e-9:
+        if math.isfinite(abs(value)) and abs(value) > SAMPLE_ZERO:
             return True
     return False
+
+
+_SEEDS = (0.3711, 0.6173)
+
+
+def vanishes(expr, skip=()) -> bool:
+    """Whether the scalar ``expr`` vanishes for every value of its symbols (but those in
+    ``skip``), to the rounding of the float constants it carries.
+
+    * An expression without floats has no rounding: a non-zero value at a sample point
+      (:func:`nonzero_somewhere`) says no cheaply, otherwise ``sympy.simplify`` decides.
+    * An expression with floats (``0.0625``, ``sin(0.0625)``: sympy combines their terms as it
+      builds, so ``0.0625 sin(0.0625) q' - 0.0625 sin(0.0625) q'`` may arrive as
+      ``6.9e-18 q'``) vanishes when, at two sample points (:func:`nonzero_somewhere`'s), its
+      value is at most ``SAMPLE_ZERO`` times the largest magnitude met while evaluating it
+      (its constants, its symbols' values, its intermediate results).
+
+    Examples
+    --------
+    >>> q = sp.Symbol("q")
+    >>> vanishes(sp.sin(q)**2 + sp.cos(q)**2 - 1), vanishes(sp.Rational(1, 10**12) * q)
+    (True, False)
+    >>> vanishes(6.9e-18 * q), vanishes(1e-6 * q)
+    (True, False)
+    """
+    expr = sp.sympify(expr)
+    if is_exactly_zero(expr):
+        return True
+    if not expr.atoms(sp.Float):
+        return not nonzero_somewhere(expr, skip) and sp.simplify(expr) == 0
+    atoms = _sample_atoms(expr, skip)
+    for seed in _SEEDS:
+        values, memo = _sample_values(atoms, seed), {}
+        try:
+            value = _complex_value(expr, values, memo)
+        except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
+            # a function this evaluation does not know: algebra decides, with the floats
+            # made exact (their rounding then cancels only if it is an exact identity)
+            return sp.simplify(sp.nsimplify(expr, rational=True)) == 0
+        scale = max(abs(v) for v in memo.values())
+        if not (math.isfinite(scale) and abs(value) <= SAMPLE_ZERO * scale):
+            return False
+    return True
 
 
 #: Working precision (decimal digits) and relative threshold of :func:`fold_numbers`: an

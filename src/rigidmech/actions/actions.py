@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import is_exactly_zero, vanishes
 from .._core.validation import nonnegative
 from ..kinematics import Solid
 from ..torsors import Torsor, couple, slider
@@ -216,12 +217,21 @@ def gravity(g: Vector) -> Gravity:
     return Gravity(g)
 
 
+def _coincide(a: Point, b: Point) -> bool:
+    """Whether the ends ``a`` and ``b`` of a spring or damper coincide at all times (AB
+    vanishes identically, :func:`~rigidmech._core.symbolic.vanishes`): then AB / l is 0/0."""
+    ab = b - a
+    return ab.is_zero or all(vanishes(c) for c in ab.components(a.root))
+
+
 class Spring(Action):
     """A linear spring of stiffness ``stiffness`` and free length ``free_length`` between
     point ``a`` of solid ``on_a`` and point ``b`` of solid ``on_b`` (ch. 11.2).
 
     ``on_a`` or ``on_b`` may be None for a point fixed in the reference. Potential energy
-    k (l - l0)^2 / 2.
+    k (l - l0)^2 / 2. A spring of free length 0 exerts -k AB on ``b``, also when its ends
+    coincide; a spring of free length l0 > 0 whose ends coincide at all times has no direction
+    and is refused.
 
     Examples
     --------
@@ -256,7 +266,15 @@ class Spring(Action):
     def contributions(self, solids):
         ab = self._b - self._a
         length = ab.magnitude()
-        tension = self._k * (length - self._l0) / length  # force on b is -tension * AB
+        if is_exactly_zero(self._l0):
+            tension = self._k  # k (l - 0) / l: no direction needed (the ends may coincide)
+        elif _coincide(self._a, self._b):
+            raise ArgumentError(
+                f"`a` ({self._a.name}) and `b` ({self._b.name}) coincide at all times: the force "
+                f"of a spring of free length {self._l0} has no direction (AB / l = 0/0). Attach "
+                "the ends at distinct points, or use free_length=0.")
+        else:
+            tension = self._k * (length - self._l0) / length  # force on b is -tension * AB
         out = []
         if self._on_b is not None:
             out.append((self._on_b, slider(-tension * ab, self._b)))

@@ -29,7 +29,7 @@ from .._core.errors import ArgumentError
 from ..torsors import couple, slider
 from ..vectors import Point, Vector, t
 from ..vectors.points import check_point
-from .actions import Action, _check_solid, _unit_vector
+from .actions import Action, _check_solid, _coincide, _unit_vector
 
 __all__ = ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
 
@@ -69,6 +69,13 @@ class Damper(Action):
         The attachment points (fixed in their solids).
     on_a, on_b : Body, optional
         The solids; None for a point fixed in the reference (not both).
+
+    Notes
+    -----
+    Ends that coincide at all times have v_B - v_A = 0 along every direction: l' = 0, no force
+    and no dissipation (the 0/0 of AB / l is not formed). Ends that coincide at an instant
+    only leave the direction of the force undefined there: a run reaching that instant stops
+    with "the right-hand side is not finite at t = ...; state y = ...".
 
     Examples
     --------
@@ -127,12 +134,16 @@ class Damper(Action):
         >>> Damper(2, a=R0.point("A", -1, 0, 0), b=R1.origin, on_b=b).length_rate()
         (x(t) + 1)*Derivative(x(t), t)/Abs(x(t) + 1)
         """
+        if _coincide(self._a, self._b):
+            return sp.S.Zero
         ab, rate = self._ab_and_rate()
         return rate / sp.sqrt(ab.dot(ab))
 
     def contributions(self, solids):
         ab, rate = self._ab_and_rate()
-        factor = self._c * rate / ab.dot(ab)  # force on b is -factor * AB
+        # ends coincident at all times: l' = 0, no force (and no 0/0)
+        factor = 0 if _coincide(self._a, self._b) else self._c * rate / ab.dot(ab)
+        # force on b is -factor * AB
         out = []
         if self._on_b is not None:
             out.append((self._on_b, slider(-factor * ab, self._b)))
@@ -157,6 +168,8 @@ class Damper(Action):
         >>> Damper(3, a=R0.point("A", 0, -2, 0), b=R1.origin, on_b=b).dissipation_function()
         3*Derivative(x(t), t)**2/2
         """
+        if _coincide(self._a, self._b):
+            return sp.S.Zero
         ab, rate = self._ab_and_rate()
         return sp.cancel(self._c * rate**2 / (2 * ab.dot(ab)))
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.symbolic import vanishes
 from ..torsors import Torsor
 from ..vectors import Point, Vector
 from ..vectors.points import check_point
@@ -213,7 +214,9 @@ class Joint:
 
     def check(self, motion: Torsor) -> None:
         """Raise ``ConnectionError_`` if ``motion``, the kinematic torsor of the child relative
-        to the parent, is not one this joint allows (decided exactly with ``simplify``).
+        to the parent, is not one this joint allows: a component the joint blocks must vanish
+        (:func:`~rigidmech._core.symbolic.vanishes`: exactly for exact expressions, to the
+        rounding of their float constants otherwise, 1e-9 of the largest magnitude in it).
 
         Examples
         --------
@@ -233,7 +236,7 @@ class Joint:
         V = motion.at(self._at)
         comps = self._motion_components(V)
         bad = [(n, c) for n, c in self._motion_residuals(comps)
-               if c != 0 and sp.simplify(c) != 0]
+               if not vanishes(c)]
         if bad:
             raise ConnectionError_(
                 f"{type(self).__name__} at {self._at.name}: the relative motion is not "

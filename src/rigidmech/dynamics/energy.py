@@ -24,6 +24,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError
+from .._core.symbolic import vanishes
 from ..vectors import t
 
 __all__ = ["energy_terms", "time_dependence"]
@@ -59,7 +60,7 @@ def _check_constraints(system):
         return
     rest = dict.fromkeys((q.diff(t) for q in system.coordinates), 0)
     for label, row in zip(c.labels, c.velocity, strict=True):
-        if sp.simplify(row.xreplace(rest)) != 0:
+        if not vanishes(row.xreplace(rest)):
             raise ArgumentError(
                 f"the linking connection {label} has a condition that depends on time "
                 "explicitly: its multiplier works, and the energy balance does not "
@@ -67,7 +68,10 @@ def _check_constraints(system):
 
 
 def _nonzero(expr):
-    return expr != 0 and sp.simplify(expr) != 0
+    """Not identically zero, by the rule of the joints and the closures
+    (:func:`~rigidmech._core.symbolic.vanishes`: a sample point, then ``simplify``; float
+    constants to their rounding)."""
+    return not vanishes(expr)
 
 
 def time_dependence(kinetic, energy, rates, rule):

@@ -352,6 +352,12 @@ def integrate(stepper, run, f0=None):
     else:
         prob.nfev += 1
         f0 = np.array(f0, dtype=float).reshape(-1)
+    # `project` is taken by this loop even when it stops before its first step (a right-hand
+    # side not finite at t0): the caller reports that failure, not a misuse of `project`
+    box = PROJECT.get()
+    project = None
+    if box is not None:
+        project, box[1] = box[0], True
     if not np.isfinite(f0).all():
         rec.fail("The right-hand side is not finite", t0, y0)
         return rec.result(caps.name, prob.nfev, 0)
@@ -361,10 +367,6 @@ def integrate(stepper, run, f0=None):
                              run.atol, t_end, run.max_step)
     else:
         h_abs = run.first_step
-    box = PROJECT.get()
-    project = None
-    if box is not None:
-        project, box[1] = box[0], True
     state = _Loop(stepper, run, rec, direction, prob, project)
     try:
         with warnings.catch_warnings():  # a complex value cast to float raises, not warns

@@ -92,6 +92,10 @@ class _Model:
         q_sym, u_sym, a_sym, rule = system.symbols()
         self.n = n
         exprs = [sp.Matrix(eqs.mass_matrix).xreplace(rule), sp.Matrix(eqs.forcing).xreplace(rule)]
+        # the magnitudes of the terms of each generalised force (weight, lift, ...): the
+        # force scale against which a normal force is told from rounding (see force_scales)
+        self._forcing_terms = sp.Matrix([sum((sp.Abs(a) for a in sp.Add.make_args(e)), sp.S.Zero)
+                                         for e in exprs[1]])
         self.closures = []
         self.contacts = []
         rows, gaps = [], []
@@ -172,7 +176,7 @@ class _Model:
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
         flat = [*exprs, *[e for J, h, c, p in rows for e in (sp.Matrix([J]), h, c, p)],
-                *gaps]
+                *gaps, self._forcing_terms]
         free = set()
         for e in flat:
             free |= sp.sympify(e).free_symbols
@@ -198,6 +202,7 @@ class _Model:
         self._fn = fn
         # indices into the evaluated list [M, f, J_0, h_0, c_0, p_0, J_1, ...]
         self._rows = [_Row(*(2 + 4 * i + j for j in range(4))) for i in range(len(rows))]
+        self._terms = 2 + 4 * len(rows) + len(gaps)
         self._n = n
         self._memo = (None, None)
 
@@ -304,13 +309,21 @@ class _Model:
         """
         n = self.n
         vals = self.values(t, y) if vals is None else vals
+        K, rhs, layout = self._saddle(t, vals, states)
+        x = np.linalg.solve(K, rhs)
+        return x[:n], x[n:], layout
+
+    def _saddle(self, t, vals, states):
+        """The matrix K = [[M, -G^T], [A, 0]] and right-hand side [f, bias] of the regime
+        (K = M alone without rows), and the row layout."""
+        n = self.n
         M = np.atleast_2d(np.asarray(vals[0], dtype=float))
         f = np.asarray(vals[1], dtype=float).reshape(-1)
         rows = self.rows(vals, states)
         layout = [(kind, key) for kind, key, _, _ in rows]
         m = len(rows)
         if m == 0:
-            return np.linalg.solve(M, f), np.zeros(0), layout
+            return M, f, layout
         A = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for _, _, r, _ in rows])
         K = np.zeros((n + m, n + m))
         K[:n, :n] = M
@@ -322,8 +335,23 @@ class _Model:
                 f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
                 "conditions are not independent, so their multipliers (the contact forces) "
                 "are not determined (e.g. a table standing on four legs: its normal forces).")
-        x = np.linalg.solve(K, rhs)
-        return x[:n], x[n:], layout
+        return K, rhs, layout
+
+    def normal_scales(self, t, y, states):
+        """For each contact, the magnitude of the terms of its normal force N (0 when open):
+        N is row i of K^-1 [f, bias], a sum of K^-1_ij times the terms of f_j (the weight, a
+        lift, ...) and bias_j, so its terms add up to at most sum_j |K^-1_ij| (sum of |terms
+        of f_j|, |bias_j|). A normal force that small relative to them is their rounding."""
+        vals = self.values(t, y)
+        K, rhs, layout = self._saddle(t, vals, states)
+        terms = np.asarray(vals[self._terms], dtype=float).reshape(-1)
+        size = np.concatenate([terms, np.abs(rhs[self.n:])])
+        x = np.abs(np.linalg.inv(K)) @ size
+        out = [0.0] * len(self.contacts)
+        for i, (kind, key) in enumerate(layout):
+            if kind == "N":
+                out[key] = float(x[self.n + i])
+        return out
 
     @staticmethod
     def _slip_direction(state, vs):

@@ -25,6 +25,24 @@ def within_cone(needed, limit):
     return needed <= limit * (1 + CONE_SLACK) + 1e-300
 
 
+def presses(N, scale):
+    """Whether a normal force ``N`` presses (or is zero): ``N >= -CONE_SLACK * scale``, with
+    ``scale`` the magnitude of the terms of N (see ``_Model.normal_scales``): a lift equal to
+    the weight up to rounding leaves N = -1e-15 of it, which is not a pull. One rule for every
+    lift-off decision of the regimes (the start and the guard "lifts off").
+
+    >>> presses(-1e-12, 1.0), presses(-2e-12, 1.0), presses(0.0, 0.0)
+    (True, False, True)
+    """
+    return lift_margin(N, scale) >= 0
+
+
+def lift_margin(N, scale):
+    """The guard function of a lift-off: it crosses 0 downwards where :func:`presses` turns
+    False."""
+    return N + CONE_SLACK * scale
+
+
 class _Rules:
     """The guards and transitions of every regime of a model."""
 
@@ -35,6 +53,14 @@ class _Rules:
     def forces(self, t, y, states):
         _, lam, layout = self.m.solve(t, y, states)
         return self.m.contact_forces(t, y, states, lam, layout)
+
+    def margins(self, t, y, states, forces=None):
+        """For each contact, its normal force as the lift-off rule sees it
+        (:func:`lift_margin`): the friction limits use it too, so that a normal force within
+        rounding of zero neither pulls nor lets go of a friction that is zero."""
+        forces = self.forces(t, y, states) if forces is None else forces
+        scales = self.m.normal_scales(t, y, states)
+        return [lift_margin(N, scale) for (N, _), scale in zip(forces, scales, strict=True)]
 
     def _merge(self, k, old, new):
         """The state ``new`` of contact k (a sliding state), keeping the parts of its
@@ -129,10 +155,10 @@ class _Rules:
         stick = self._with_all(states, group, "stick")
         yp = self.m.project(t, y, stick)
         forces = self.forces(t, yp, stick)
-        Ns = [forces[j][0] for j in group]
+        margins = self.margins(t, yp, stick, forces)
         T = sum(forces[j][1] for j in group)
-        limit = sum(self.m.contacts[j].fs * forces[j][0] for j in group)
-        if min(Ns) >= 0 and within_cone(float(np.linalg.norm(T)), limit):
+        limit = sum(self.m.contacts[j].fs * margins[j] for j in group)
+        if all(margins[j] >= 0 for j in group) and within_cone(float(np.linalg.norm(T)), limit):
             return stick
         return self._slip_all(states, group, T)
 
@@ -175,14 +201,15 @@ class _Rules:
         name = m.regime_name
 
         def normal(t, y):
-            return self.forces(t, y, states)[k][0]
+            return self.margins(t, y, states)[k]
         opened = None if c.gap is None else name(self._with(states, k, "open"))
         out = [Guard(f"{c.name} lifts off", normal, target=opened, direction=-1)]
         if s == "stick":
             def cone(t, y):            # of the contacts that stick with k, see after_stop
                 group = m.group_of(m.values(t, y), states, k)
                 forces = self.forces(t, y, states)
-                return sum(m.contacts[j].fs * forces[j][0] for j in group) - float(
+                margins = self.margins(t, y, states, forces)
+                return sum(m.contacts[j].fs * margins[j] for j in group) - float(
                     np.linalg.norm(sum(forces[j][1] for j in group)))
 
             def to_slip(t, y):
@@ -288,12 +315,14 @@ class _Rules:
                 states[-1] = _compose(states[-1], parts)
         states = tuple(states)
         forces = self.forces(t, y, states)
+        margins = self.margins(t, y, states, forces)
         for k, (c, (N, _)) in enumerate(zip(self.m.contacts, forces, strict=True)):
             if states[k] == "open":
                 continue
-            if N < 0 and c.gap is not None:
+            pulls = not margins[k] >= 0         # the rule of presses
+            if pulls and c.gap is not None:
                 states = self._with(states, k, "open")
-            elif N < 0:
+            elif pulls:
                 raise ArgumentError(
                     f"the contact {c.name} pulls at t = {t} (normal force N = {N:.6g} < 0): "
                     "it opens at once; start the bodies where the contact presses.")
@@ -301,7 +330,7 @@ class _Rules:
                 group = self.m.group_of(self.m.values(t, y), states, k)
                 total = sum(forces[j][1] for j in group)
                 if not within_cone(float(np.linalg.norm(total)),
-                                   sum(self.m.contacts[j].fs * forces[j][0] for j in group)):
+                                   sum(self.m.contacts[j].fs * margins[j] for j in group)):
                     states = self._slip_all(states, group, total)
         for k, c in enumerate(self.m.contacts):
             if c.couples and states[k] != "open":

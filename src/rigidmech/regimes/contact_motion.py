@@ -47,7 +47,11 @@ Regimes are then named ``"stick, rolls+"``, ``"slip+, locked"``, ``"stick, no sp
 and :meth:`ContactMotion.rolling_couples` and :meth:`ContactMotion.pivoting_couples` give the
 couples.
 
-Where a normal force N would become negative (guard "lifts off") the contact opens: if the
+Where a normal force N would become negative (guard "lifts off") the contact opens. Negative
+means below -1e-12 times the magnitude of the terms of N (the weight, a lift, ...: the terms
+of the generalised forces carried through the solve for the multipliers), so that a lift equal
+to the weight up to rounding (N = -1e-15 of it) neither pulls at the start nor lifts off; the
+friction limits f_s N use the same N + 1e-12 x scale. If the
 contact has a ``gap`` (the distance between the surfaces), the motion goes on with the contact
 **open** (no condition, no action) until the gap closes again (guard "lands": a perfectly
 plastic impact sets the normal relative velocity to zero, in the metric of the mass matrix, and

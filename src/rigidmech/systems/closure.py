@@ -42,7 +42,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ConnectionError_
-from .._core.symbolic import nonzero_somewhere
+from .._core.symbolic import vanishes
 from ..torsors import Torsor
 from ..vectors import Frame, Vector, t, time_derivative
 from ..vectors.points import check_point
@@ -84,14 +84,11 @@ def _gear_rows(link):
 
 
 def _zero(e):
-    """Whether ``e`` vanishes identically: a non-zero value at a sample point settles it
+    """Whether ``e`` vanishes identically (:func:`~rigidmech._core.symbolic.vanishes`, the
+    rule of the joints and the energy balance): a non-zero value at a sample point settles it
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
-    ``simplify`` decides."""
-    if e == 0:
-        return True
-    if nonzero_somewhere(e, skip=(t,)):
-        return False
-    return sp.simplify(e) == 0
+    ``simplify`` decides; float constants count to their rounding."""
+    return vanishes(e, skip=(t,))
 
 
 def closure_conditions(link, meets=None) -> list:

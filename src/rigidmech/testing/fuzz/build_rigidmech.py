@@ -31,9 +31,9 @@ _EXACT = [True]
 
 def _x(value):
     """A number of the description as an exact rational (the grid values are binary
-    fractions, so nothing is rounded): rigidmech decides joint checks exactly with
-    ``simplify``, and float round-off (1e-16 q') is not zero to it. Floats with
-    ``to_rigidmech(..., exact=False)``."""
+    fractions, so nothing is rounded): exact models keep rigidmech's symbolic decisions
+    exact (joint checks, closures). Floats with ``to_rigidmech(..., exact=False)``: those
+    decisions then tolerate their round-off (1e-16 q') relative to the size of the terms."""
     return sp.Rational(value) if _EXACT[-1] else float(value)
 
 
