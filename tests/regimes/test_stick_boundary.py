@@ -7,28 +7,17 @@ The block (m = 1, g = 1, N = 1, spring k = 1 of zero free length, f = 0.15) rele
 at x0 sticks while k |x0| <= f N = 0.15.
 """
 
+import friction_block
 import pytest
 
-import rigidmech as rm
-from rigidmech.actions import Coulomb, FrictionContact, Spring
-from rigidmech.kinematics import ContactKinematics
+from rigidmech.actions import Coulomb
 from rigidmech.regimes import contact_motion
 
 LIMIT = 0.15
 
 
 def block():
-    x, y = rm.coordinates("x y")
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.translated("R1", G)
-    b = rm.Body("block", frame=R1, mass=1, centre=G)
-    s = rm.System(galilean=R0)
-    s.connect(R0, b, FrictionContact(ContactKinematics(
-        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(LIMIT)))
-    s.act(rm.gravity(-R0.j))
-    s.act(Spring(1, 0, a=R0.origin, b=G, on_b=b))
-    return s
+    return friction_block.block(LIMIT)
 
 
 @pytest.mark.parametrize("factor, regime", [(1.0, "stick"), (1 - 1e-12, "stick"),

@@ -9,28 +9,16 @@ N = m g = 1) released at x = 1: half-cycles of pi, slip- then slip+ then slip- t
 
 import math
 
+import friction_block
 import numpy as np
 import pytest
 
-import rigidmech as rm
 from rigidmech._core.errors import NumericalError
-from rigidmech.actions import Coulomb, FrictionContact, Spring
-from rigidmech.kinematics import ContactKinematics
 from rigidmech.regimes import Guard, Regime, contact_motion, integrate_phases
 
 
 def block():
-    x, y = rm.coordinates("x y")
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.translated("R1", G)
-    b = rm.Body("block", frame=R1, mass=1, centre=G)
-    s = rm.System(galilean=R0)
-    s.connect(R0, b, FrictionContact(ContactKinematics(
-        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(0.15)))
-    s.act(rm.gravity(-R0.j))
-    s.act(Spring(1, 0, a=R0.origin, b=G, on_b=b))
-    return s
+    return friction_block.block(0.15)
 
 
 @pytest.fixture
