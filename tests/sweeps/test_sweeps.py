@@ -191,3 +191,26 @@ def test_dask_keeps_the_finished_chunks_when_one_fails(eqs, client):
               labels="numpy", **FIXED)
     assert [f.index for f in r.failed] == [1]
     assert np.all(np.isfinite(r.values.values[:2])) and np.all(np.isnan(r.values.values[2:]))
+
+
+def test_without_dask_the_inprocess_backend_works_and_dask_is_a_clear_error(eqs, monkeypatch):
+    import sys
+    monkeypatch.setitem(sys.modules, "distributed", None)   # import distributed fails
+    r = sweep(lambda v, rng: v["x"], points(x=[1.0, 2.0]), labels="numpy")
+    assert r.values.values.tolist() == [1.0, 2.0]
+    with pytest.raises(rm.errors.ArgumentError, match=r"pip install rigidmech\[distributed\]"):
+        sweep(eqs, grid(m2=[1.0]), backend="dask", address="tcp://127.0.0.1:1", **FIXED)
+
+
+def test_xarray_labels_of_a_grid_and_of_points(eqs):
+    xr = pytest.importorskip("xarray")
+    r = sweep(eqs, grid(m2=[1.0, 2.0], q1=[0.1, 0.2, 0.3]), t=(0.0, 0.1), labels="xarray",
+              **FIXED)
+    assert isinstance(r.values, xr.DataArray)
+    assert r.values.dims == ("m2", "q1", "state")
+    assert r.values.coords["state"].values.tolist() == ["q1", "q2", "q1_dot", "q2_dot"]
+    assert r.values.coords["q1"].values.tolist() == [0.1, 0.2, 0.3]
+    p = sweep(eqs, points(m2=[1.0, 2.0], q1=[0.2, 0.3]), t=(0.0, 0.1), **FIXED)
+    assert p.values.dims == ("point", "state")
+    assert p.values.coords["m2"].values.tolist() == [1.0, 2.0]
+    np.testing.assert_array_equal(p.values.values[0], r.values.sel(m2=1.0, q1=0.2).values)

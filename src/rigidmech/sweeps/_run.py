@@ -10,8 +10,8 @@ Examples
 >>> import numpy as np
 >>> done = {}
 >>> failed = run_chunks(lambda cols, rng: cols["x"] ** 2, [{"x": np.array([1.0, 2.0])}],
-...                     np.random.SeedSequence(0).spawn(1), "inprocess", None, None, 10.0,
-...                     False, lambda i, r: done.setdefault(i, r))
+...                     np.random.SeedSequence(0).spawn(1), "inprocess", None, False,
+...                     lambda i, r: done.setdefault(i, r))
 >>> failed, done[0].tolist()
 ([], [1.0, 4.0])
 """
@@ -74,9 +74,10 @@ def _bar(progress, total):
     return tqdm(total=total, desc="sweep", unit="chunk", file=sys.stderr)
 
 
-def run_chunks(task, chunks, seeds, backend, client, address, timeout, progress, done):
-    """Run ``task`` on each chunk; ``done(i, result)`` for each finished one; return the
-    failures (errors and, after a stop, the chunks not run as ``(i, None)``)."""
+def run_chunks(task, chunks, seeds, backend, client, progress, done):
+    """Run ``task`` on each chunk (on the Dask ``client`` for ``backend="dask"``, see
+    :func:`connect`); ``done(i, result)`` for each finished one; return the failures (errors
+    and, after a stop, the chunks not run as ``(i, None)``)."""
     if progress is not None and not isinstance(progress, bool) and not callable(progress):
         raise ArgumentError(f"`progress` must be None, True, False or a callable "
                             f"progress(done, total); got {progress!r}.")
@@ -94,7 +95,7 @@ def run_chunks(task, chunks, seeds, backend, client, address, timeout, progress,
     try:
         if backend == "inprocess":
             return _inprocess(task, chunks, seeds, done, finished, state)
-        return _dask(task, chunks, seeds, client, address, timeout, done, finished, state)
+        return _dask(task, chunks, seeds, client, done, finished, state)
     finally:
         if bar is not None:
             bar.close()
@@ -119,7 +120,8 @@ def _inprocess(task, chunks, seeds, done, finished, state):
 
 
 def connect(client, address, timeout):
-    """The Dask client given, or one connected to ``address`` (the caller closes it)."""
+    """``(client, own)``: the Dask client given, or one connected to ``address`` (``own``
+    True: the caller closes it)."""
     try:
         import distributed
     except ImportError:
@@ -143,35 +145,30 @@ def connect(client, address, timeout):
             "runs and the address, or pass `client=`, or use backend='inprocess'.") from exc
 
 
-def _dask(task, chunks, seeds, client, address, timeout, done, finished, state):
+def _dask(task, chunks, seeds, client, done, finished, state):
     import distributed
 
-    client, own = connect(client, address, timeout)
     failures = []
     futures = {}
+    shipped = client.scatter(task, broadcast=True, hash=False)
+    for i, (columns, seed) in enumerate(zip(chunks, seeds, strict=True)):
+        futures[client.submit(run_chunk, shipped, columns, seed, pure=False)] = i
+    pending = set(futures.values())
     try:
-        shipped = client.scatter(task, broadcast=True, hash=False)
-        for i, (columns, seed) in enumerate(zip(chunks, seeds, strict=True)):
-            futures[client.submit(run_chunk, shipped, columns, seed, pure=False)] = i
-        pending = set(futures.values())
-        try:
-            for fut in distributed.as_completed(list(futures), loop=client.loop):
-                i = futures[fut]
-                pending.discard(i)
-                try:
-                    done(i, fut.result())
-                except Exception as exc:  # kept, the other chunks go on
-                    failures.append((i, exc))
-                finished()
-                if state["stop"]:
-                    break
-        except KeyboardInterrupt:
-            pass
-        for fut, i in futures.items():
-            if i in pending:
-                fut.cancel()
-                failures.append((i, None))
-    finally:
-        if own:
-            client.close()
+        for fut in distributed.as_completed(list(futures), loop=client.loop):
+            i = futures[fut]
+            pending.discard(i)
+            try:
+                done(i, fut.result())
+            except Exception as exc:  # kept, the other chunks go on
+                failures.append((i, exc))
+            finished()
+            if state["stop"]:
+                break
+    except KeyboardInterrupt:
+        pass
+    for fut, i in futures.items():
+        if i in pending:
+            fut.cancel()
+            failures.append((i, None))
     return sorted(failures, key=lambda f: f[0])

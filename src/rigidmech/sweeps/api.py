@@ -15,7 +15,7 @@ from ..dynamics import EquationsOfMotion
 from ..dynamics._compiled import coordinate_name
 from ..vibrations import LinearSystem
 from ._labelled import Labelled, Points, grid  # noqa: F401  (grid: the doctests)
-from ._run import ChunkFailure, run_chunks
+from ._run import ChunkFailure, connect, run_chunks
 from ._tasks import CallableTask, EigenTask, OdeTask
 
 __all__ = ["sweep", "SweepResult"]
@@ -245,23 +245,26 @@ def sweep(target, over, *, quantity="final", t=(0.0, 10.0), times=None, method="
     if isinstance(chunk_size, bool) or not isinstance(chunk_size, (int, np.integer)) \
             or chunk_size < 1:
         raise ArgumentError(f"`chunk_size` must be a positive integer; got {chunk_size!r}.")
-    if backend == "dask":
-        from ._run import connect
-        if client is None and address is None:
-            connect(None, None, timeout)   # the clear error, before compiling anything
     options = {"method": method, "rtol": rtol, "atol": atol, "max_steps": max_steps,
                "step": step}
     if callable(target) and not isinstance(target, (EquationsOfMotion, LinearSystem)):
         task, qdims, qcoords = CallableTask(target, fixed), None, {}
     else:
         task, qdims, qcoords = _task(target, over, fixed, quantity, t, times, options)
+    own = False
+    if backend == "dask":      # reached (or refused) before the chunks run
+        client, own = connect(client, address, timeout)
     starts = list(range(0, over.size, int(chunk_size)))
     chunks = [{k: v[s:s + chunk_size] for k, v in over.columns.items()} for s in starts]
     seq = np.random.SeedSequence(seed)
     seeds = seq.spawn(len(chunks))
     results = {}
-    failures = run_chunks(task, chunks, seeds, backend, client, address, timeout, progress,
-                          results.__setitem__)
+    try:
+        failures = run_chunks(task, chunks, seeds, backend, client, progress,
+                              results.__setitem__)
+    finally:
+        if own:
+            client.close()
     failed = [ChunkFailure(i, starts[i], min(starts[i] + chunk_size, over.size), exc)
               for i, exc in failures]
     if results:
