@@ -31,7 +31,7 @@ class SweepResult:
     values : xarray.DataArray or Labelled
         One entry per point (dims: the swept names for a grid, ``"point"`` for a list of
         points, then those of the quantity: ``"state"``, ``"time"``, ``"eigenvalue"``);
-        nan at the points of failed chunks.
+        nan at the points of failed chunks; None if no chunk finished.
     failed : tuple of ChunkFailure
         The chunks that raised (or were not run after a stop), in order.
     points : Points
