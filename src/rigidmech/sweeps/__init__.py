@@ -1,0 +1,24 @@
+"""Sweeps over parameters and initial states, in this process or on a Dask cluster (ch. 25.4,
+27).
+
+:func:`sweep` computes the final state (or samples) of equations of motion, or the eigenvalues
+of a linearised system, at every point of a :func:`grid` or a list of :func:`points`, in chunks:
+in-process by default, unchanged on a Dask cluster (``backend="dask"``; ``pip install
+rigidmech[distributed]``). The results are labelled by the swept values (an
+``xarray.DataArray`` when xarray is installed, else :class:`Labelled`); chunks that fail are
+returned beside the finished ones.
+
+Examples
+--------
+>>> r = sweep(lambda v, rng: v["a"] * v["b"], grid(a=[1.0, 2.0], b=[3.0, 4.0]),
+...           labels="numpy")
+>>> r.values.values.tolist()
+[[3.0, 4.0], [6.0, 8.0]]
+"""
+
+from ._labelled import Labelled, Points, grid, points
+from ._run import ChunkFailure, ClusterError
+from .api import SweepResult, sweep
+
+__all__ = ["sweep", "grid", "points", "Points", "Labelled", "SweepResult", "ChunkFailure",
+           "ClusterError"]
