@@ -234,7 +234,9 @@ def names() -> tuple:
     --------
     >>> names()                                        # doctest: +NORMALIZE_WHITESPACE
     ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass', 'satellite',
-     'moon-probe', 'foucault-pendulum', 'wagon-pendulum')
+     'moon-probe', 'foucault-pendulum', 'wagon-pendulum', 'block-on-incline', 'cart-pendulum',
+     'triple-pendulum', 'four-bar', 'slider-crank', 'wheel-on-incline', 'heavy-top',
+     'gyroscope')
     """
     return tuple(_BY_NAME)
 
@@ -245,7 +247,7 @@ def catalogue() -> tuple:
     Examples
     --------
     >>> [s.dof for s in catalogue()]
-    [1, 2, 2, 1, 2, 2, 2, 1]
+    [1, 2, 2, 1, 2, 2, 2, 1, 1, 2, 3, 3, 3, 2, 3, 3]
     """
     return _SCENES
 
@@ -281,3 +283,9 @@ from .space_scenes import SPACE_SCENES  # noqa: E402  (the module uses Scene and
 
 _SCENES += SPACE_SCENES
 _BY_NAME.update((s.name, s) for s in SPACE_SCENES)
+
+# -- solids, machines and tops (ch. 20-25, 27), from rigidmech.models: appended too ---------
+from .machine_scenes import MACHINE_SCENES  # noqa: E402  (the module uses Scene and Built)
+
+_SCENES += MACHINE_SCENES
+_BY_NAME.update((s.name, s) for s in MACHINE_SCENES)
