@@ -264,10 +264,10 @@ def get(name) -> Scene:
     --------
     >>> get("double-pendulum").title
     'Double pendulum of two uniform rods'
-    >>> get("triple-pendulum")
+    >>> get("quadruple-pendulum")
     Traceback (most recent call last):
     ...
-    rigidmech._core.errors.SceneError: unknown scene 'triple-pendulum'; known scenes: ...
+    rigidmech._core.errors.SceneError: unknown scene 'quadruple-pendulum'; known scenes: ...
     """
     if isinstance(name, Scene):
         return name
