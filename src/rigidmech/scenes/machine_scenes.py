@@ -49,6 +49,7 @@ MACHINE_SCENES = (
           parameters=(("m", 1.0, "mass of the block"), ("g", 9.81, "gravity"),
                       ("alpha", math.pi / 6, "angle of the incline, rad")),
           q0=(0.0,), t_end=2.0, builder=lambda: _built(models.block_on_incline()),
+          units={"x": "m"},
           notes="x: distance travelled down the slope from O; x = g sin(alpha) t^2 / 2 from "
                 "rest."),
     Scene("cart-pendulum", "A pendulum on a cart sliding freely: coupled motions of two solids",
@@ -57,6 +58,7 @@ MACHINE_SCENES = (
           parameters=(("M", 2.0, "mass of the cart"), ("m", 1.0, "mass of the bob"),
                       ("L", 1.0, "length of the rod"), ("g", 9.81, "gravity")),
           q0=(0.0, 0.5), t_end=10.0, builder=lambda: _built(models.cart_pendulum()),
+          units={"x": "m"},
           notes="x: position of the cart along i; theta: angle of the rod from the downward "
                 "vertical; small oscillations at w^2 = (M + m) g / (M L)."),
     Scene("triple-pendulum", "Triple pendulum of three uniform rods (relative angles)",
@@ -79,6 +81,7 @@ MACHINE_SCENES = (
           coordinates=("q1", "q2", "x"),
           parameters=(("m", 1.0, "mass of each part"), ("g", 9.81, "gravity")),
           q0=(1.0, -1.3, 1.3), t_end=5.0, builder=lambda: _built(models.slider_crank()),
+          units={"x": "m"},
           notes="crank 0.5, rod 1.5; q1 crank angle, q2 rod relative to the crank, x the "
                 "slider; q2 and x follow q1 through the closure."),
     Scene("wheel-on-incline", "A disk rolling without slipping down an incline", "ch. 23.4",
@@ -86,7 +89,7 @@ MACHINE_SCENES = (
           parameters=(("m", 1.0, "mass of the wheel"), ("g", 9.81, "gravity"),
                       ("r", 0.3, "radius of the wheel")),
           q0=(0.0, 0.0), t_end=2.0,
-          builder=lambda: _built(models.wheel_on_incline(math.pi / 6)),
+          builder=lambda: _built(models.wheel_on_incline(math.pi / 6)), units={"x": "m"},
           notes="slope 30 degrees; x: abscissa of the centre down the slope, theta: rotation "
                 "of the wheel; rolling: x'' = 2 g sin(alpha) / 3."),
     Scene("heavy-top", "The symmetric heavy top on a ball joint", "ch. 20, 25",

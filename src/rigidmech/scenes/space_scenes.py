@@ -145,7 +145,7 @@ SPACE_SCENES = (
           parameters=(("m", 1.0, "mass of the satellite (drops out)"),
                       ("mu", EARTH_MU_KM, "G M of the Earth, km^3/s^2")),
           q0=(7000.0, 0.0), u0=(0.0, 8.0), t_end=7200.0, rtol=1e-11, atol=1e-8,
-          builder=_satellite,
+          builder=_satellite, units={"x": "km", "y": "km"},
           notes="x, y: position of the satellite in the geocentric frame, km; time in s. "
                 "The default state gives an ellipse of period about 7100 s."),
     Scene("moon-probe", "A probe in the field of the Earth and the Moon (restricted three "
