@@ -86,7 +86,8 @@ def test_run_fixed_step(capsys):
                      "'soon'", id="t-end-value"),
         pytest.param(["run", "--t-end", "-1"], "`t_end` must be > 0; got -1", id="t-end-sign"),
         pytest.param(["fly"], "argument {run,scenes,modes}: invalid choice: 'fly'", id="command"),
-        pytest.param([], "the following arguments are required: {run,scenes,modes}", id="no-command"),
+        pytest.param([], "the following arguments are required: {run,scenes,modes}",
+                     id="no-command"),
     ],
 )
 def test_misuse_prints_one_line_and_exits_2(capsys, argv, match):

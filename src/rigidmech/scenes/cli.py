@@ -4,8 +4,11 @@
 ``run`` prints the scene's title and book section, its equations of motion M(q) q'' = f,
 integrates them, and prints the final state, the energy drift and the timings of each stage
 (derive, compile, integrate, in ms, with the number of evaluations); ``--plot out.png`` writes a
-figure (headless). ``scenes`` lists the catalogue. Without a NAME, ``run`` runs the default
-scene, ``double-pendulum``.
+figure (headless). ``scenes`` lists every scene ``run`` accepts (:func:`scene_names`, the one
+list also shown by ``run --help`` and by the message for an unknown name). Without a NAME,
+``run`` runs the default scene, ``double-pendulum``. The scenes with regime changes take the
+same options but three, which they refuse with the reason (``--step``, ``--max-steps``,
+``--pretty``); their ``--method`` must be adaptive.
 
 Every option and the ``--plot`` path are checked before the run. Misuse (unknown scene,
 parameter or method, malformed value, a non-positive value for a positive constant, wrong number
