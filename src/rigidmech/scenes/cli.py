@@ -38,6 +38,7 @@ import sys
 from .. import ode
 from .._core.errors import NumericalError, RigidmechError, SceneError
 from .._core.version import __version__
+from .bicycle_scene import BICYCLE_SCENE, run_bicycle
 from .catalogue import catalogue, get, names
 from .pipeline import check_plot_path, check_save_path, run
 from .regime_scenes import regime_methods, regime_scene_names, regime_scenes, run_regime_scene
@@ -56,7 +57,7 @@ def _all_scenes() -> tuple:
     """Every scene the command line runs, in listing order: the catalogue, then the scenes
     with regime changes. The one source of every listing (``scenes``, ``run --help``, the
     message for an unknown name)."""
-    return catalogue() + regime_scenes()
+    return catalogue() + regime_scenes() + (BICYCLE_SCENE,)
 
 
 def scene_names() -> tuple:
@@ -161,7 +162,7 @@ def _parser():
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
     r.add_argument("--save", metavar="PATH",
                    help="save the samples there (.npz or .csv, columns t, q, q')")
-    r.add_argument("--samples", type=_positive_int, default=1001, metavar="N",
+    r.add_argument("--samples", type=_positive_int, default=None, metavar="N",
                    help="number of evenly spaced output times (default 1001, at least 2)")
     r.add_argument("--max-steps", type=_positive_int, metavar="N",
                    help="largest number of solver steps (default 1000000)")
@@ -204,9 +205,14 @@ def _run(args, out):
         check_plot_path(args.plot, "--plot")
     if args.save is not None:
         check_save_path(args.save, "--save")
+    _check_name(args.name)  # unknown scene: fail before anything else
+    if args.name == BICYCLE_SCENE.name:  # a linear analysis: no integration
+        _run_bicycle(args, out)
+        return
+    if args.samples is None:
+        args.samples = 1001
     if args.samples < 2:
         raise _UsageError(f"argument --samples: expected at least 2; got {args.samples}")
-    _check_name(args.name)  # unknown scene: fail before anything else
     if args.name in regime_scene_names():  # motions with regime changes print their phases
         _run_regimes(args, out)
         return
@@ -252,6 +258,30 @@ _NOT_FOR_REGIMES = {
 }
 
 
+#: The run options of an integration, which the benchmark bicycle (a linear analysis) has not.
+_INTEGRATION_OPTIONS = ("t_end", "method", "rtol", "atol", "step", "q0", "u0", "plot", "save",
+                        "samples", "max_steps", "progress", "pretty")
+
+
+def _run_bicycle(args, out):
+    for option in _INTEGRATION_OPTIONS:
+        if getattr(args, option) not in (None, False):
+            raise SceneError(f"--{option.replace('_', '-')} is not an option of the scene "
+                             f"{args.name!r}: it is a linear analysis about the straight "
+                             "upright run (matrices and critical speeds), with no "
+                             "integration; only --param applies.")
+    print(run_bicycle(_params(args)).summary(), file=out)
+
+
+def _params(args):
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    return params
+
+
 def _run_regimes(args, out):
     for option, why in _NOT_FOR_REGIMES.items():
         if getattr(args, option) not in (None, False):
@@ -277,6 +307,10 @@ def _modes(args, out):
     from .modes import scene_modes  # imported on use: the vibrations layer
 
     _check_name(args.name)
+    if args.name == BICYCLE_SCENE.name:
+        raise SceneError(f"scene {args.name!r} is a linear analysis itself (its eigenvalues "
+                         "against the speed): run it with `python -m rigidmech run "
+                         f"{args.name}`.")
     if args.name in regime_scene_names():
         raise SceneError(f"scene {args.name!r} changes regime along its motion (phases "
                          "integrated one by one): it has no single set of equations to "
