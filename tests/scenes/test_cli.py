@@ -23,7 +23,8 @@ def test_scenes_lists_the_catalogue(capsys):
                          "coulomb-oscillator", "rolling-cylinder",
                          "satellite", "moon-probe", "foucault-pendulum", "wagon-pendulum",
                          "block-on-incline", "cart-pendulum", "triple-pendulum", "four-bar",
-                         "slider-crank", "wheel-on-incline", "heavy-top", "gyroscope"}
+                         "slider-crank", "wheel-on-incline", "heavy-top", "gyroscope",
+                         "benchmark-bicycle"}
     assert " 2 " in rows["rolling-cylinder"] and "fs=0.12 fk=0.1" in rows["coulomb-oscillator"]
     assert "ch. 22.2.1" in rows["simple-pendulum"] and "m=1 L=1 g=9.81" in rows["simple-pendulum"]
     assert " 2 " in rows["double-pendulum"] and "M=2 m=1 L=1 g=9.81" in rows["slider-pendulum"]
