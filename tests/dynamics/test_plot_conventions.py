@@ -149,3 +149,12 @@ def test_hohmann_example_keeps_its_labels_and_legend_off_the_orbits(monkeypatch)
         inside = ((xy[:, 0] > box.x0) & (xy[:, 0] < box.x1) & (xy[:, 1] > box.y0)
                   & (xy[:, 1] < box.y1))
         assert not inside.any(), f"the legend covers {line.get_label()!r}"
+
+
+def test_a_scene_in_other_units_says_so(tmp_path):
+    rep = scenes.run("moon-probe", t_end=0.5, n_output=51)
+    sc = rep.scene
+    fig = scenes.plot_simulation(rep.simulation, tmp_path / "probe.png", units=sc.units,
+                                 time_unit=sc.time_unit)
+    assert [a.get_ylabel() for a in fig.axes][:2] == ["$x$ [D]", "$y$ [D]"]
+    assert fig.axes[-1].get_xlabel() == "t [4.35 days]" and _texts_outside(fig) == []

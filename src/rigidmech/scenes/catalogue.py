@@ -83,6 +83,8 @@ class Scene:
     units : dict, optional
         Units of coordinates by name, for the plots and the saved columns (the angles of
         rotation of the bodies' frames are in rad without saying so).
+    time_unit : str
+        Unit of time of the plots (default ``"s"``).
 
     Examples
     --------
@@ -95,11 +97,12 @@ class Scene:
     """
 
     __slots__ = ("_name", "_title", "_section", "_coordinates", "_parameters", "_q0", "_u0",
-                 "_t_end", "_method", "_rtol", "_atol", "_builder", "_notes", "_units")
+                 "_t_end", "_method", "_rtol", "_atol", "_builder", "_notes", "_units",
+                 "_time_unit")
 
     def __init__(self, name, title, section, *, coordinates, parameters, q0, builder,
                  u0=None, t_end=10.0, method="dop853", rtol=1e-10, atol=1e-12, notes="",
-                 units=None):
+                 units=None, time_unit="s"):
         self._name, self._title, self._section = str(name), str(title), str(section)
         self._coordinates = tuple(coordinates)
         self._parameters = tuple(Parameter(*p) for p in parameters)
@@ -113,7 +116,7 @@ class Scene:
         self._t_end, self._method = float(t_end), str(method)
         self._rtol, self._atol = float(rtol), float(atol)
         self._builder, self._notes = builder, str(notes)
-        self._units = dict(units or {})
+        self._units, self._time_unit = dict(units or {}), str(time_unit)
         unknown = sorted(set(self._units) - set(self._coordinates))
         if unknown:
             raise SceneError(f"scene {name!r}: `units` names {unknown}, which is not a "
@@ -132,6 +135,8 @@ class Scene:
     rtol = property(lambda self: self._rtol, doc="Default relative tolerance.")
     atol = property(lambda self: self._atol, doc="Default absolute tolerance.")
     notes = property(lambda self: self._notes, doc="Conventions of the scene.")
+
+    time_unit = property(lambda self: self._time_unit, doc="Unit of time of the plots.")
 
     @property
     def units(self) -> dict:

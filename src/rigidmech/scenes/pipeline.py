@@ -406,7 +406,7 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     if plot is not None:
         plot_path = str(plot)
         plot_simulation(sim, plot_path, title=f"{scene.title} ({scene.section})",
-                        units=scene.units)
+                        units=scene.units, time_unit=scene.time_unit)
     save_path = sim.save(save, units=scene.units) if save is not None else None
     return RunReport(
         scene=scene, parameters=MappingProxyType(values), q0=q0, u0=u0, t_end=t_end,
@@ -418,7 +418,8 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         status=sim.status, message=sim.message, save_path=save_path)
 
 
-def plot_simulation(sim: Simulation, path, *, title=None, units=None, degrees=False):
+def plot_simulation(sim: Simulation, path, *, title=None, units=None, degrees=False,
+                    time_unit="s"):
     """Write a figure of the coordinates (one panel each, labelled with its name and unit,
     see :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`) and of the relative
     energy error against time. Returns the figure.
@@ -452,7 +453,7 @@ def plot_simulation(sim: Simulation, path, *, title=None, units=None, degrees=Fa
         axes[-1].grid(True, alpha=0.3)
     for a in axes[:-1]:
         a.set_xlabel("")
-    axes[-1].set_xlabel("t [s]")
+    axes[-1].set_xlabel(f"t [{time_unit}]")
     if title:
         fig.suptitle(title)
     fig.savefig(path, dpi=100)
