@@ -134,3 +134,10 @@ def test_benchmark_bicycle_from_the_command_line(capsys):
     weave = float(re.search(r"weave speed +([\d.]+) m/s", out).group(1))
     capsize = float(re.search(r"capsize speed ([\d.]+) m/s", out).group(1))
     assert weave == pytest.approx(4.2924, abs=5e-4) and capsize == pytest.approx(6.0243, abs=5e-4)
+
+
+def test_modes_of_the_benchmark_bicycle_points_to_run(capsys):
+    assert cli.main(["modes", BICYCLE]) == 2
+    assert capsys.readouterr().err.strip() == (
+        f"rigidmech: error: scene {BICYCLE!r} is a linear analysis itself (its eigenvalues "
+        f"against the speed): run it with `python -m rigidmech run {BICYCLE}`.")
