@@ -46,7 +46,8 @@ print(f"numerical arrival radius {np.linalg.norm(num.y[:3, -1]) / 1e3:.3f} km "
 # The drawing
 # -----------
 phi = np.linspace(0, 2 * np.pi, 300)
-fig, ax = plt.subplots(figsize=(6, 6))
+# constrained layout keeps every label inside the figure; the legend goes below the drawing
+fig, ax = plt.subplots(figsize=(6.5, 7.5), layout="constrained")
 ax.plot(r1 * np.cos(phi) / 1e3, r1 * np.sin(phi) / 1e3, label="low orbit (300 km)")
 ax.plot(r2 * np.cos(phi) / 1e3, r2 * np.sin(phi) / 1e3, label="geostationary orbit")
 ax.plot(r[:, 0] / 1e3, r[:, 1] / 1e3, "k--", label="transfer (Kepler)")
@@ -59,6 +60,6 @@ ax.annotate("burn 2", (-r2 / 1e3, 0), xytext=(-40e3, 4e3))
 ax.set_aspect("equal")
 ax.set_xlabel("x [km]")
 ax.set_ylabel("y [km]")
-ax.legend(loc="upper right", fontsize=8)
+ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), ncols=2, fontsize=8)
 ax.set_title(f"Hohmann transfer: {h.total_delta_v / 1e3:.2f} km/s in {h.time / 3600:.2f} h")
 plt.show()

@@ -21,7 +21,10 @@ def test_scenes_lists_the_catalogue(capsys):
     rows = {line.split()[0]: line for line in out[1:]}
     assert set(rows) == {"simple-pendulum", "double-pendulum", "slider-pendulum", "spring-mass",
                          "coulomb-oscillator", "rolling-cylinder",
-                         "satellite", "moon-probe", "foucault-pendulum", "wagon-pendulum"}
+                         "satellite", "moon-probe", "foucault-pendulum", "wagon-pendulum",
+                         "block-on-incline", "cart-pendulum", "triple-pendulum", "four-bar",
+                         "slider-crank", "wheel-on-incline", "heavy-top", "gyroscope",
+                         "benchmark-bicycle"}
     assert " 2 " in rows["rolling-cylinder"] and "fs=0.12 fk=0.1" in rows["coulomb-oscillator"]
     assert "ch. 22.2.1" in rows["simple-pendulum"] and "m=1 L=1 g=9.81" in rows["simple-pendulum"]
     assert " 2 " in rows["double-pendulum"] and "M=2 m=1 L=1 g=9.81" in rows["slider-pendulum"]
@@ -60,8 +63,8 @@ def test_run_fixed_step(capsys):
 @pytest.mark.parametrize(
     ("argv", "match"),
     [
-        pytest.param(["run", "triple-pendulum"], "unknown scene 'triple-pendulum'; known scenes: "
-                     "simple-pendulum, double-pendulum", id="scene"),
+        pytest.param(["run", "quadruple-pendulum"], "unknown scene 'quadruple-pendulum'; known "
+                     "scenes: simple-pendulum, double-pendulum", id="scene"),
         pytest.param(["run", "--param", "l=2"], "unknown parameter 'l' for scene "
                      "'double-pendulum'; its parameters are m, L, g.", id="param-name"),
         pytest.param(["run", "--param", "m"], "argument --param: expected NAME=VALUE "
@@ -83,8 +86,9 @@ def test_run_fixed_step(capsys):
         pytest.param(["run", "--t-end", "soon"], "argument --t-end: invalid float value: "
                      "'soon'", id="t-end-value"),
         pytest.param(["run", "--t-end", "-1"], "`t_end` must be > 0; got -1", id="t-end-sign"),
-        pytest.param(["fly"], "argument {run,scenes}: invalid choice: 'fly'", id="command"),
-        pytest.param([], "the following arguments are required: {run,scenes}", id="no-command"),
+        pytest.param(["fly"], "argument {run,scenes,modes}: invalid choice: 'fly'", id="command"),
+        pytest.param([], "the following arguments are required: {run,scenes,modes}",
+                     id="no-command"),
     ],
 )
 def test_misuse_prints_one_line_and_exits_2(capsys, argv, match):

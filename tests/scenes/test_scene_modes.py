@@ -172,8 +172,8 @@ def test_cli_modes_with_param(capsys):
 
 
 @pytest.mark.parametrize(("argv", "match"), [
-    pytest.param(["modes", "triple-pendulum"], "rigidmech: error: unknown scene "
-                 "'triple-pendulum'; known scenes: ", id="unknown"),
+    pytest.param(["modes", "quadruple-pendulum"], "rigidmech: error: unknown scene "
+                 "'quadruple-pendulum'; known scenes: ", id="unknown"),
     pytest.param(["modes", "coulomb-oscillator"], "rigidmech: error: scene "
                  "'coulomb-oscillator' changes regime along its motion", id="regime"),
     pytest.param(["modes", "--param", "m=1", "--param", "m=2"], "rigidmech: error: --param m "

@@ -3,8 +3,9 @@
 Functions called by the methods of :class:`~rigidmech.dynamics.Simulation` that carry the
 documentation: ``.npz`` files (arrays, names, parameters, status, event times) and ``.csv``
 files (a header line of comments with the status and the parameters, then the columns with
-their units where known), read back without the equations; a plot of the parameters of
-situation against time (matplotlib, imported on use).
+their units where known), read back without the equations; plots of the parameters of
+situation against time (one panel per coordinate, labelled with its name and unit), of their
+phase portraits and of the energy (matplotlib, imported on use).
 
 Examples
 --------
@@ -32,7 +33,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError
 
-__all__ = ["columns", "load", "plot", "save", "units_of"]
+__all__ = ["columns", "load", "plot", "save", "units_of", "PLOT_KINDS"]
 
 
 def columns(sim):
@@ -125,25 +126,97 @@ def load(cls, path):
                y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"))
 
 
-def plot(sim, path, ax):
-    """Plot the parameters of situation against time (see :meth:`Simulation.plot
-    <rigidmech.dynamics.Simulation.plot>`)."""
-    if ax is None:
-        if path is not None:
-            from matplotlib.figure import Figure  # imported on use (slow import)
+#: The kinds of figure of :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`.
+PLOT_KINDS = ("time", "phase", "energy")
 
-            ax = Figure(figsize=(7, 4)).subplots()
-        else:
-            import matplotlib.pyplot as plt  # imported on use (slow import)
 
-            ax = plt.subplots(figsize=(7, 4))[1]
-    for i, name in enumerate(sim._names):
-        ax.plot(sim.t, sim.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
-    ax.set_xlabel("t")
-    ax.set_ylabel("parameters of situation")
-    ax.legend()
-    ax.grid(True, alpha=0.3)
+def _selected(sim, coordinates):
+    """The names of the coordinates to draw: all, or the chosen ones in the order given."""
+    if coordinates is None:
+        return list(sim._names)
+    chosen = [coordinates] if isinstance(coordinates, str) else [str(c) for c in coordinates]
+    unknown = [c for c in chosen if c not in sim._names]
+    if unknown or not chosen:
+        raise ArgumentError(f"`coordinates` must name coordinates among "
+                            f"{', '.join(sim._names)}; got {coordinates!r}.")
+    return chosen
+
+
+def _axes(n, path, ax, figsize):
+    """``n`` stacked axes: those given (one Axes or a sequence of n), else a new figure with
+    constrained layout (labels are never cut): off-screen when a path is given, pyplot's
+    otherwise."""
+    if ax is not None:
+        axes = list(ax) if isinstance(ax, (list, tuple, np.ndarray)) else [ax]
+        if len(axes) != n:
+            raise ArgumentError(f"`ax` must give {n} Axes (one per panel); got {len(axes)}. "
+                                "Leave `ax` out to get a new figure, or choose the panels "
+                                "with `coordinates=`.")
+        return axes
     if path is not None:
-        ax.figure.tight_layout()
-        ax.figure.savefig(path, dpi=100)
-    return ax
+        from matplotlib.figure import Figure  # imported on use (slow import)
+
+        fig = Figure(figsize=figsize, layout="constrained")
+    else:
+        import matplotlib.pyplot as plt  # imported on use (slow import)
+
+        fig = plt.figure(figsize=figsize, layout="constrained")
+    return list(np.atleast_1d(fig.subplots(n, 1, sharex=(n > 1), squeeze=False)[:, 0]))
+
+
+def _label(name, unit, rate=False):
+    text = f"${sp.latex(sp.Symbol(name))}$"
+    if rate:
+        text = f"${sp.latex(sp.Symbol(name))}'$"
+    if unit:
+        text += f" [{unit}/s]" if rate else f" [{unit}]"
+    return text
+
+
+def plot(sim, path, ax, *, coordinates=None, kind="time", degrees=False, units=None):
+    """Plot a simulation (see :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`):
+    one panel per coordinate, each labelled with its name and unit. Returns the Axes as a
+    tuple."""
+    if kind not in PLOT_KINDS:
+        raise ArgumentError(f"`kind` must be one of {', '.join(PLOT_KINDS)}; got {kind!r}.")
+    if kind == "energy":
+        if coordinates is not None:
+            raise ArgumentError("`coordinates` does not apply to kind='energy' (the energy "
+                                "of the whole system is drawn); leave it out.")
+        e = np.asarray(sim.energy(), dtype=float)
+        scale = sim.energy_scale() or 1.0
+        axes = _axes(2, path, ax, (7, 4.5))
+        axes[0].plot(sim.t, e)
+        axes[0].set_ylabel("$E = T + V$")
+        axes[1].plot(sim.t, (e - e[0]) / scale)
+        axes[1].set_ylabel("$(E - E_0)$ / scale")
+        axes[0].set_title(f"energy (scale {scale:.4g}: the larger of T0 + |V0| and max T)",
+                          fontsize="medium")
+    else:
+        names = _selected(sim, coordinates)
+        unit_of = units_of(sim, units)
+        index = {n: i for i, n in enumerate(sim._names)}
+        n = len(names)
+        if kind == "time":
+            axes = _axes(n, path, ax, (7, 1.0 + 1.6 * n))
+        else:
+            axes = _axes(n, path, ax, (4.5, 0.6 + 3.4 * n))
+        for a, name in zip(axes, names, strict=True):
+            q, u, unit = sim.q[index[name]], sim.u[index[name]], unit_of[name]
+            if degrees and unit == "rad":
+                q, u, unit = np.degrees(q), np.degrees(u), "deg"
+            if kind == "time":
+                a.plot(sim.t, q)
+                a.set_ylabel(_label(name, unit))
+            else:
+                a.plot(q, u)
+                a.plot(q[:1], u[:1], "o", color="tab:green")   # the start
+                a.set_xlabel(_label(name, unit))
+                a.set_ylabel(_label(name, unit, rate=True))
+    for a in axes:
+        a.grid(True, alpha=0.3)
+    if kind != "phase":
+        axes[-1].set_xlabel("t [s]")
+    if path is not None:
+        axes[0].figure.savefig(path, dpi=100)
+    return tuple(axes)

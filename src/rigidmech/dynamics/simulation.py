@@ -496,13 +496,58 @@ class Simulation:
         return _files.load(cls, path)
 
     # -- display ------------------------------------------------------------------------
-    def plot(self, path=None, *, ax=None):
-        """Plot the parameters of situation against time; save to ``path`` if given.
+    def plot(self, path=None, *, ax=None, coordinates=None, kind="time", degrees=False,
+             units=None):
+        """Plot the motion; save to ``path`` if given. Returns the Axes, a tuple (one per
+        panel).
 
-        With ``path`` and no ``ax`` the figure is drawn off-screen (no pyplot state, works
-        headless); with neither, pyplot makes a figure to show. Returns the Axes.
+        Parameters
+        ----------
+        path : str or path-like, optional
+            Write the figure there (drawn off-screen: no pyplot state, works headless).
+            Without it (and without ``ax``) pyplot makes a figure to show.
+        ax : Axes or sequence of Axes, optional
+            Draw there, one Axes per panel.
+        coordinates : str or sequence of str, optional
+            The coordinates to draw (default: all), by name.
+        kind : {"time", "phase", "energy"}
+            ``"time"``: one panel per coordinate against t; ``"phase"``: one phase portrait
+            (q', q) per coordinate, the start marked; ``"energy"``: the total energy
+            E = T + V and its change relative to :meth:`energy_scale` against t.
+        degrees : bool
+            Draw the angles (unit rad) in degrees.
+        units : dict, optional
+            Units by coordinate name, decided as for :meth:`save`: given units first, else
+            rad for an angle of rotation of a body's frame, else none shown.
+
+        Each panel is labelled with the coordinate's name and unit (its rate's with ``/s``),
+        the time axis ``t [s]``; new figures use matplotlib's constrained layout, so no label
+        is cut (book, ch. 27: the numerical results of a motion).
+
+        Examples
+        --------
+        >>> import matplotlib
+        >>> matplotlib.use("Agg")
+        >>> import rigidmech as rm
+        >>> x, th = rm.coordinates("x theta")
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=th)
+        >>> s = rm.System(galilean=R0)
+        >>> s.add(rm.Body("b", frame=R1, mass=1,
+        ...               inertia=rm.InertiaOperator.from_products(1, 1, 1, frame=R1)))
+        >>> P = R0.point("P", x, 1, 0)
+        >>> s.add(rm.Body("c", frame=R0.translated("R2", P), mass=1, centre=P))
+        >>> sim = s.equations_of_motion().simulate(t=(0, 1), q0=[0.0, 0.5], u0=[1.0, 2.0])
+        >>> axes = sim.plot(units={"x": "m"}, degrees=True)
+        >>> [a.get_ylabel() for a in axes]
+        ['$x$ [m]', '$\\\\theta$ [deg]']
+        >>> sim.plot(kind="phase", coordinates="theta")[0].get_ylabel()
+        "$\\\\theta'$ [rad/s]"
+        >>> len(sim.plot(kind="energy"))
+        2
+        >>> import matplotlib.pyplot as plt; plt.close("all")
         """
-        return _files.plot(self, path, ax)
+        return _files.plot(self, path, ax, coordinates=coordinates, kind=kind,
+                           degrees=degrees, units=units)
 
     def __repr__(self):
         span = f"[{self.t[0]}, {self.t[-1]}]" if self.t.size else "[]"

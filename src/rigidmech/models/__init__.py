@@ -8,6 +8,7 @@ the examples import these builders rather than building their own copies.
 * :mod:`~rigidmech.models.chains`: compound pendulum, double pendulum (rods or point
   masses), n-link pendulum, pendulum on a cart;
 * :mod:`~rigidmech.models.loops`: four-bar, chain of four-bars, slider-crank;
+* :mod:`~rigidmech.models.incline`: a block sliding down a smooth incline;
 * :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline;
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
 * :mod:`~rigidmech.models.contacts`: a ball sliding then rolling, an eccentric disc rocking;
@@ -39,6 +40,7 @@ from .chains import (
     spherical_chain,
 )
 from .contacts import eccentric_disc, sliding_ball
+from .incline import block_on_incline
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
 from .loops import CHAIN_COUPLER, FOUR_BAR_LENGTHS, four_bar, four_bar_chain, slider_crank
 from .rolling import rolling_disc, wheel_on_incline
@@ -48,7 +50,7 @@ __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
            "spherical_chain", "cart_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
-           "rolling_disc", "wheel_on_incline",
+           "block_on_incline", "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
            "sliding_ball", "eccentric_disc", "heavy_top",
            "whipple_bicycle", "BENCHMARK_BICYCLE"]
@@ -82,6 +84,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (four_bar, "ch. 13.2, 25.3.3"),
     (four_bar_chain, "ch. 25.3.3"),
     (slider_crank, "ch. 13.2, 25.3.3"),
+    (block_on_incline, "ch. 23.2.5, 27.4"),
     (rolling_disc, "ch. 10.1, 13.1"),
     (wheel_on_incline, "ch. 23.4"),
     (sleigh, "ch. 13.1, 25.3.3"),
@@ -102,7 +105,7 @@ def catalogue() -> tuple:
     --------
     >>> from rigidmech import models
     >>> sorted({e.family for e in models.catalogue()})
-    ['bicycle', 'chains', 'contacts', 'knife', 'loops', 'rolling', 'tops']
+    ['bicycle', 'chains', 'contacts', 'incline', 'knife', 'loops', 'rolling', 'tops']
     """
     return _ENTRIES
 
@@ -114,7 +117,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    18
+    19
     """
     return tuple(_BY_NAME)
 

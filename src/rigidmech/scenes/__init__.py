@@ -9,6 +9,9 @@
   scenes``.
 * :mod:`~rigidmech.scenes.space_scenes`: a satellite, a probe between the Earth and the Moon,
   the Foucault pendulum (ch. 19, 24, 27), in the catalogue too;
+* :mod:`~rigidmech.scenes.machine_scenes`: a block on an incline, a cart-pendulum, a triple
+  pendulum, the four-bar, the slider-crank, a wheel on an incline, the heavy top, a gyroscope
+  (ch. 20-25, 27), built from :mod:`rigidmech.models`, in the catalogue too;
 * :mod:`~rigidmech.scenes.modes`: the natural modes of a scene about q = 0
   (``python -m rigidmech modes NAME``).
 

@@ -80,6 +80,11 @@ class Scene:
         ``builder() -> Built``: assembles the system in symbol form.
     notes : str
         Conventions worth knowing (which angles, which axis points down).
+    units : dict, optional
+        Units of coordinates by name, for the plots and the saved columns (the angles of
+        rotation of the bodies' frames are in rad without saying so).
+    time_unit : str
+        Unit of time of the plots (default ``"s"``).
 
     Examples
     --------
@@ -92,10 +97,12 @@ class Scene:
     """
 
     __slots__ = ("_name", "_title", "_section", "_coordinates", "_parameters", "_q0", "_u0",
-                 "_t_end", "_method", "_rtol", "_atol", "_builder", "_notes")
+                 "_t_end", "_method", "_rtol", "_atol", "_builder", "_notes", "_units",
+                 "_time_unit")
 
     def __init__(self, name, title, section, *, coordinates, parameters, q0, builder,
-                 u0=None, t_end=10.0, method="dop853", rtol=1e-10, atol=1e-12, notes=""):
+                 u0=None, t_end=10.0, method="dop853", rtol=1e-10, atol=1e-12, notes="",
+                 units=None, time_unit="s"):
         self._name, self._title, self._section = str(name), str(title), str(section)
         self._coordinates = tuple(coordinates)
         self._parameters = tuple(Parameter(*p) for p in parameters)
@@ -109,6 +116,11 @@ class Scene:
         self._t_end, self._method = float(t_end), str(method)
         self._rtol, self._atol = float(rtol), float(atol)
         self._builder, self._notes = builder, str(notes)
+        self._units, self._time_unit = dict(units or {}), str(time_unit)
+        unknown = sorted(set(self._units) - set(self._coordinates))
+        if unknown:
+            raise SceneError(f"scene {name!r}: `units` names {unknown}, which is not a "
+                             f"coordinate; the coordinates are {list(self._coordinates)}.")
 
     name = property(lambda self: self._name, doc="Identifier (command-line name).")
     title = property(lambda self: self._title, doc="One-line title.")
@@ -123,6 +135,13 @@ class Scene:
     rtol = property(lambda self: self._rtol, doc="Default relative tolerance.")
     atol = property(lambda self: self._atol, doc="Default absolute tolerance.")
     notes = property(lambda self: self._notes, doc="Conventions of the scene.")
+
+    time_unit = property(lambda self: self._time_unit, doc="Unit of time of the plots.")
+
+    @property
+    def units(self) -> dict:
+        """Units of coordinates by name (a fresh dict), e.g. ``{"x": "m"}``."""
+        return dict(self._units)
 
     @property
     def dof(self) -> int:
@@ -214,14 +233,14 @@ _SCENES = (
           coordinates=("x", "theta"),
           parameters=(("M", 2.0, "mass of the block"), ("m", 1.0, "mass of the rod"),
                       ("L", 1.0, "length of the rod"), ("g", 9.81, "gravity")),
-          q0=(0.0, 1.0), t_end=10.0, builder=_slider_pendulum,
+          q0=(0.0, 1.0), t_end=10.0, builder=_slider_pendulum, units={"x": "m"},
           notes="x: position of the block along the horizontal j; theta: angle of the rod "
                 "from the downward vertical."),
     Scene("spring-mass", "One-degree-of-freedom vibration: a mass on a spring", "ch. 21.2.2",
           coordinates=("x",),
           parameters=(("m", 1.0, "mass"), ("k", 4.0, "stiffness of the spring"),
                       ("l0", 1.0, "free length of the spring")),
-          q0=(0.5,), t_end=10.0, builder=_spring_mass,
+          q0=(0.5,), t_end=10.0, builder=_spring_mass, units={"x": "m"},
           notes="x: elongation of the spring (x > -l0); free vibration at sqrt(k/m)."),
 )
 _BY_NAME = {s.name: s for s in _SCENES}
@@ -234,7 +253,9 @@ def names() -> tuple:
     --------
     >>> names()                                        # doctest: +NORMALIZE_WHITESPACE
     ('simple-pendulum', 'double-pendulum', 'slider-pendulum', 'spring-mass', 'satellite',
-     'moon-probe', 'foucault-pendulum', 'wagon-pendulum')
+     'moon-probe', 'foucault-pendulum', 'wagon-pendulum', 'block-on-incline', 'cart-pendulum',
+     'triple-pendulum', 'four-bar', 'slider-crank', 'wheel-on-incline', 'heavy-top',
+     'gyroscope')
     """
     return tuple(_BY_NAME)
 
@@ -245,7 +266,7 @@ def catalogue() -> tuple:
     Examples
     --------
     >>> [s.dof for s in catalogue()]
-    [1, 2, 2, 1, 2, 2, 2, 1]
+    [1, 2, 2, 1, 2, 2, 2, 1, 1, 2, 3, 3, 3, 2, 3, 3]
     """
     return _SCENES
 
@@ -262,10 +283,10 @@ def get(name) -> Scene:
     --------
     >>> get("double-pendulum").title
     'Double pendulum of two uniform rods'
-    >>> get("triple-pendulum")
+    >>> get("quadruple-pendulum")
     Traceback (most recent call last):
     ...
-    rigidmech._core.errors.SceneError: unknown scene 'triple-pendulum'; known scenes: ...
+    rigidmech._core.errors.SceneError: unknown scene 'quadruple-pendulum'; known scenes: ...
     """
     if isinstance(name, Scene):
         return name
@@ -281,3 +302,9 @@ from .space_scenes import SPACE_SCENES  # noqa: E402  (the module uses Scene and
 
 _SCENES += SPACE_SCENES
 _BY_NAME.update((s.name, s) for s in SPACE_SCENES)
+
+# -- solids, machines and tops (ch. 20-25, 27), from rigidmech.models: appended too ---------
+from .machine_scenes import MACHINE_SCENES  # noqa: E402  (the module uses Scene and Built)
+
+_SCENES += MACHINE_SCENES
+_BY_NAME.update((s.name, s) for s in MACHINE_SCENES)

@@ -4,8 +4,11 @@
 ``run`` prints the scene's title and book section, its equations of motion M(q) q'' = f,
 integrates them, and prints the final state, the energy drift and the timings of each stage
 (derive, compile, integrate, in ms, with the number of evaluations); ``--plot out.png`` writes a
-figure (headless). ``scenes`` lists the catalogue. Without a NAME, ``run`` runs the default
-scene, ``double-pendulum``.
+figure (headless). ``scenes`` lists every scene ``run`` accepts (:func:`scene_names`, the one
+list also shown by ``run --help`` and by the message for an unknown name). Without a NAME,
+``run`` runs the default scene, ``double-pendulum``. The scenes with regime changes take the
+same options but three, which they refuse with the reason (``--step``, ``--max-steps``,
+``--pretty``); their ``--method`` must be adaptive.
 
 Every option and the ``--plot`` path are checked before the run. Misuse (unknown scene,
 parameter or method, malformed value, a non-positive value for a positive constant, wrong number
@@ -35,14 +38,44 @@ import sys
 from .. import ode
 from .._core.errors import NumericalError, RigidmechError, SceneError
 from .._core.version import __version__
+from .bicycle_scene import BICYCLE_SCENE, run_bicycle
 from .catalogue import catalogue, get, names
 from .pipeline import check_plot_path, check_save_path, run
-from .regime_scenes import regime_scene_names, regime_scenes, run_regime_scene
+from .regime_scenes import regime_methods, regime_scene_names, regime_scenes, run_regime_scene
 
-__all__ = ["main", "DEFAULT_SCENE"]
+__all__ = ["main", "DEFAULT_SCENE", "scene_names", "COMMANDS"]
 
 #: The scene ``python -m rigidmech run`` runs when no NAME is given.
 DEFAULT_SCENE = "double-pendulum"
+
+
+#: The commands, in the order of the usage line.
+COMMANDS = ("run", "scenes", "modes")
+
+
+def _all_scenes() -> tuple:
+    """Every scene the command line runs, in listing order: the catalogue, then the scenes
+    with regime changes. The one source of every listing (``scenes``, ``run --help``, the
+    message for an unknown name)."""
+    return catalogue() + regime_scenes() + (BICYCLE_SCENE,)
+
+
+def scene_names() -> tuple:
+    """The names of every scene ``python -m rigidmech run`` accepts, in listing order.
+
+    Examples
+    --------
+    >>> names = scene_names()
+    >>> names[0], "coulomb-oscillator" in names, len(names) == len(set(names))
+    ('simple-pendulum', True, True)
+    """
+    return tuple(s.name for s in _all_scenes())
+
+
+def _check_name(name):
+    if name not in scene_names():
+        raise SceneError(f"unknown scene {name!r}; known scenes: {', '.join(scene_names())} "
+                         "(list them with `python -m rigidmech scenes`).")
 
 
 class _UsageError(Exception):
@@ -106,16 +139,17 @@ def _parser():
     p = _Parser(prog="rigidmech", description="Mechanics of rigid bodies after J.-M. "
                 "Berthelot's textbook: run the book's systems from the command line.")
     p.add_argument("--version", action="version", version=f"rigidmech {__version__}")
-    sub = p.add_subparsers(dest="command", metavar="{run,scenes}")
+    sub = p.add_subparsers(dest="command", metavar="{" + ",".join(COMMANDS) + "}")
     sub.required = True
     r = sub.add_parser("run", help="derive, integrate and report a scene",
                        description="Derive the equations of motion of a scene, integrate them "
                        "and report the energy drift and the timings.")
     r.add_argument("name", nargs="?", default=DEFAULT_SCENE, metavar="NAME",
-                   help=f"scene name (default {DEFAULT_SCENE}); one of {', '.join(names())}")
+                   help=f"scene name (default {DEFAULT_SCENE}); one of {', '.join(scene_names())}")
     r.add_argument("--t-end", type=float, metavar="T", help="duration in seconds")
     r.add_argument("--method", metavar="M",
-                   help=f"integration method, one of {', '.join(ode.methods())}")
+                   help=f"integration method, one of {', '.join(ode.methods())} (the scenes "
+                   f"with regime changes: an adaptive one, {', '.join(regime_methods())})")
     r.add_argument("--rtol", type=float, metavar="R", help="relative tolerance")
     r.add_argument("--atol", type=float, metavar="A", help="absolute tolerance")
     r.add_argument("--step", type=float, metavar="H", help="step of a fixed-step method")
@@ -128,7 +162,7 @@ def _parser():
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
     r.add_argument("--save", metavar="PATH",
                    help="save the samples there (.npz or .csv, columns t, q, q')")
-    r.add_argument("--samples", type=_positive_int, default=1001, metavar="N",
+    r.add_argument("--samples", type=_positive_int, default=None, metavar="N",
                    help="number of evenly spaced output times (default 1001, at least 2)")
     r.add_argument("--max-steps", type=_positive_int, metavar="N",
                    help="largest number of solver steps (default 1000000)")
@@ -145,7 +179,8 @@ def _parser():
                         description="Linearise a scene about its equilibrium q = 0 and print "
                         "M, K and its natural frequencies and mode shapes.")
     md.add_argument("name", nargs="?", default=DEFAULT_SCENE, metavar="NAME",
-                    help=f"scene name (default {DEFAULT_SCENE})")
+                    help=f"scene name (default {DEFAULT_SCENE}); one of {', '.join(names())} "
+                    "(the scenes with regime changes have no single linearisation)")
     md.add_argument("--param", type=_param, action="append", default=[], metavar="NAME=VALUE",
                     help="override a parameter, e.g. --param m=2 (repeatable)")
     md.add_argument("--debug", action="store_true",
@@ -155,12 +190,10 @@ def _parser():
 
 def _list_scenes(out):
     rows = [("name", "title", "book", "dof", "parameters")]
-    for s in catalogue():
-        params = " ".join(f"{p.name}={p.default:g}" for p in s.parameters)
-        rows.append((s.name, s.title, s.section, str(s.dof), params))
-    for s in regime_scenes():
-        params = " ".join(f"{n}={v:g}" for n, v, _ in s.parameters)
-        rows.append((s.name, s.title, s.section, str(len(s.state)), params))
+    for s in _all_scenes():
+        params = " ".join(f"{n}={v:g}" for n, v in s.defaults.items())
+        dof = s.dof if hasattr(s, "dof") else len(s.state)
+        rows.append((s.name, s.title, s.section, str(dof), params))
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     for r in rows:
         print("  ".join(c.ljust(w) for c, w in zip(r[:4], widths, strict=True)) + "  " + r[4],
@@ -172,12 +205,18 @@ def _run(args, out):
         check_plot_path(args.plot, "--plot")
     if args.save is not None:
         check_save_path(args.save, "--save")
+    _check_name(args.name)  # unknown scene: fail before anything else
+    if args.name == BICYCLE_SCENE.name:  # a linear analysis: no integration
+        _run_bicycle(args, out)
+        return
+    if args.samples is None:
+        args.samples = 1001
     if args.samples < 2:
         raise _UsageError(f"argument --samples: expected at least 2; got {args.samples}")
     if args.name in regime_scene_names():  # motions with regime changes print their phases
         _run_regimes(args, out)
         return
-    get(args.name)  # unknown scene: fail before anything else
+    get(args.name)
     params = {}
     for name, value in args.param:
         if name in params:
@@ -209,24 +248,69 @@ class _Interrupted(Exception):
     """The run was interrupted; the partial outputs are written."""
 
 
+#: Run options that do not apply to a scene with regime changes, and why.
+_NOT_FOR_REGIMES = {
+    "step": "its switches of regime are located by the events of an adaptive method, which "
+            "chooses its steps",
+    "max_steps": "it is integrated phase by phase, each phase by an adaptive method with its "
+                 "own bound",
+    "pretty": "each regime has its own equations; the summary prints the phases",
+}
+
+
+#: The run options of an integration, which the benchmark bicycle (a linear analysis) has not.
+_INTEGRATION_OPTIONS = ("t_end", "method", "rtol", "atol", "step", "q0", "u0", "plot", "save",
+                        "samples", "max_steps", "progress", "pretty")
+
+
+def _run_bicycle(args, out):
+    for option in _INTEGRATION_OPTIONS:
+        if getattr(args, option) not in (None, False):
+            raise SceneError(f"--{option.replace('_', '-')} is not an option of the scene "
+                             f"{args.name!r}: it is a linear analysis about the straight "
+                             "upright run (matrices and critical speeds), with no "
+                             "integration; only --param applies.")
+    print(run_bicycle(_params(args)).summary(), file=out)
+
+
+def _params(args):
+    params = {}
+    for name, value in args.param:
+        if name in params:
+            raise SceneError(f"--param {name} given twice.")
+        params[name] = value
+    return params
+
+
 def _run_regimes(args, out):
-    for option in ("method", "step", "atol", "save", "max_steps", "progress"):
-        if getattr(args, option) is not None:
+    for option, why in _NOT_FOR_REGIMES.items():
+        if getattr(args, option) not in (None, False):
             raise SceneError(f"--{option.replace('_', '-')} is not an option of the regime "
-                             f"scene {args.name!r} (integrated phase by phase with dop853).")
+                             f"scene {args.name!r}: {why}.")
+    if args.method is not None and args.method not in regime_methods():
+        raise SceneError(f"--method is not an option of the regime scene {args.name!r} with "
+                         f"{args.method!r}: its switches of regime are located by the events "
+                         f"of an adaptive method; one of {', '.join(regime_methods())}.")
     params = {}
     for name, value in args.param:
         if name in params:
             raise SceneError(f"--param {name} given twice.")
         params[name] = value
     report = run_regime_scene(args.name, t_end=args.t_end, params=params, q0=args.q0,
-                              u0=args.u0, plot=args.plot)
+                              u0=args.u0, plot=args.plot, save=args.save, method=args.method,
+                              rtol=args.rtol, atol=args.atol, n_output=args.samples,
+                              progress=args.progress)
     print(report.summary(), file=out)
 
 
 def _modes(args, out):
     from .modes import scene_modes  # imported on use: the vibrations layer
 
+    _check_name(args.name)
+    if args.name == BICYCLE_SCENE.name:
+        raise SceneError(f"scene {args.name!r} is a linear analysis itself (its eigenvalues "
+                         "against the speed): run it with `python -m rigidmech run "
+                         f"{args.name}`.")
     if args.name in regime_scene_names():
         raise SceneError(f"scene {args.name!r} changes regime along its motion (phases "
                          "integrated one by one): it has no single set of equations to "

@@ -405,8 +405,9 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
     plot_path = None
     if plot is not None:
         plot_path = str(plot)
-        plot_simulation(sim, plot_path, title=f"{scene.title} ({scene.section})")
-    save_path = sim.save(save) if save is not None else None
+        plot_simulation(sim, plot_path, title=f"{scene.title} ({scene.section})",
+                        units=scene.units, time_unit=scene.time_unit)
+    save_path = sim.save(save, units=scene.units) if save is not None else None
     return RunReport(
         scene=scene, parameters=MappingProxyType(values), q0=q0, u0=u0, t_end=t_end,
         method=method, rtol=rtol, atol=atol, step=step, equations=eqs, simulation=sim,
@@ -417,11 +418,15 @@ def run(scene, *, t_end=None, params=None, q0=None, u0=None, method=None, rtol=N
         status=sim.status, message=sim.message, save_path=save_path)
 
 
-def plot_simulation(sim: Simulation, path, *, title=None):
-    """Write a figure of the coordinates and of the relative energy error against time.
+def plot_simulation(sim: Simulation, path, *, title=None, units=None, degrees=False,
+                    time_unit="s"):
+    """Write a figure of the coordinates (one panel each, labelled with its name and unit,
+    see :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`) and of the relative
+    energy error against time. Returns the figure.
 
-    Uses :class:`matplotlib.figure.Figure` directly (Agg canvas, no pyplot state): works
-    headless and leaves the user's matplotlib backend alone.
+    Uses :class:`matplotlib.figure.Figure` directly (Agg canvas, no pyplot state) with
+    constrained layout (no label cut): works headless and leaves the user's matplotlib
+    backend alone.
 
     Examples
     --------
@@ -429,30 +434,27 @@ def plot_simulation(sim: Simulation, path, *, title=None):
     >>> from rigidmech import scenes
     >>> report = scenes.run("spring-mass", t_end=1.0)
     >>> path = os.path.join(tempfile.mkdtemp(), "spring.png")
-    >>> fig = plot_simulation(report.simulation, path)
-    >>> os.path.getsize(path) > 1000
-    True
+    >>> fig = plot_simulation(report.simulation, path, units={"x": "m"})
+    >>> os.path.getsize(path) > 1000, [a.get_ylabel() for a in fig.axes][0]
+    (True, '$x$ [m]')
     """
     from matplotlib.figure import Figure
 
-    eqs = sim.equations
-    has_energy = eqs.energy is not None
-    fig = Figure(figsize=(7, 5.5 if has_energy else 3.5))
-    axes = fig.subplots(2 if has_energy else 1, 1, sharex=True, squeeze=False)[:, 0]
-    for i, name in enumerate(eqs.names):
-        axes[0].plot(sim.t, sim.q[i], label=f"${sp.latex(sp.Symbol(name))}$")
-    axes[0].set_ylabel("parameters of situation")
-    axes[0].legend(loc="upper right")
-    axes[0].grid(True, alpha=0.3)
+    n = len(sim.names)
+    has_energy = sim.equations is not None and sim.equations.energy is not None
+    fig = Figure(figsize=(7, 1.4 + 1.6 * (n + has_energy)), layout="constrained")
+    axes = fig.subplots(n + has_energy, 1, sharex=True, squeeze=False)[:, 0]
+    sim.plot(ax=list(axes[:n]), units=units, degrees=degrees)
     if has_energy:
         e = sim.energy()
         scale = sim.energy_scale() or 1.0
-        axes[1].plot(sim.t, (e - e[0]) / scale)
-        axes[1].set_ylabel("(E - E0) / (T0 + |V0|)")
-        axes[1].grid(True, alpha=0.3)
-    axes[-1].set_xlabel("t [s]")
+        axes[-1].plot(sim.t, (e - e[0]) / scale)
+        axes[-1].set_ylabel("$(E - E_0)$ / scale")
+        axes[-1].grid(True, alpha=0.3)
+    for a in axes[:-1]:
+        a.set_xlabel("")
+    axes[-1].set_xlabel(f"t [{time_unit}]")
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
     fig.savefig(path, dpi=100)
     return fig

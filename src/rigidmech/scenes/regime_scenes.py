@@ -19,6 +19,7 @@ from functools import lru_cache
 
 import sympy as sp
 
+from .. import ode
 from .._core.errors import SceneError
 from ..actions import Coulomb, FrictionContact, Spring, gravity
 from ..dynamics import System
@@ -27,10 +28,10 @@ from ..kinematics import ContactKinematics
 from ..kinetics import Body
 from ..regimes import PhasedMotion, contact_motion
 from ..vectors import Frame, coordinates
-from .pipeline import _finite, check_plot_path
+from .pipeline import _finite, check_plot_path, check_save_path
 
 __all__ = ["RegimeScene", "RegimeReport", "regime_scenes", "regime_scene_names",
-           "run_regime_scene"]
+           "run_regime_scene", "regime_methods", "save_motion"]
 
 
 @lru_cache(maxsize=8)
@@ -80,18 +81,34 @@ def _positive(p, *names):
         raise SceneError(f"parameters {', '.join(names)} must be > 0; got {', '.join(bad)}.")
 
 
-def _oscillator(p, q0, u0, t_end):
+def _oscillator(p, q0, u0, t_end, **solver):
     _positive(p, "m", "k", "N")
     return contact_motion(_oscillator_system(*_law(p)), t_end, {"x": q0[0], "y": 0.0},
-                          {"x": u0[0]}, rtol=1e-12, m=p["m"], k=p["k"], g=p["N"] / p["m"])
+                          {"x": u0[0]}, **solver, m=p["m"], k=p["k"], g=p["N"] / p["m"])
 
 
-def _cylinder(p, q0, u0, t_end):
+def _cylinder(p, q0, u0, t_end, **solver):
     _positive(p, "r", "g")
     return contact_motion(_cylinder_system(*_law(p)), t_end,
                           {"x": q0[0], "y": p["r"], "theta": q0[1]},
-                          {"x": u0[0], "theta": u0[1]}, rtol=1e-12, m=1.0, r=p["r"],
+                          {"x": u0[0], "theta": u0[1]}, **solver, m=1.0, r=p["r"],
                           g=p["g"], alpha=p["alpha"])
+
+
+#: Default solver of the regime scenes: an adaptive method, whose events locate the switches.
+DEFAULT_METHOD, DEFAULT_RTOL, DEFAULT_ATOL = "dop853", 1e-12, 1e-12
+
+
+def regime_methods() -> tuple:
+    """The integration methods a regime scene accepts: the adaptive ones of
+    :mod:`rigidmech.ode` (their events locate the switches of regime on the dense output).
+
+    Examples
+    --------
+    >>> "dop853" in regime_methods(), "rk4" in regime_methods()
+    (True, False)
+    """
+    return tuple(ode.methods("adaptive"))
 
 
 class RegimeScene:
@@ -193,11 +210,14 @@ class RegimeReport:
     'stick'
     """
 
-    __slots__ = ("scene", "parameters", "q0", "u0", "t_end", "motion", "seconds")
+    __slots__ = ("scene", "parameters", "q0", "u0", "t_end", "motion", "seconds", "save_path",
+                 "plot_path", "method")
 
-    def __init__(self, scene, parameters, q0, u0, t_end, motion: PhasedMotion, seconds):
+    def __init__(self, scene, parameters, q0, u0, t_end, motion: PhasedMotion, seconds,
+                 save_path=None, plot_path=None, method=DEFAULT_METHOD):
         self.scene, self.parameters, self.q0, self.u0 = scene, parameters, q0, u0
         self.t_end, self.motion, self.seconds = t_end, motion, seconds
+        self.save_path, self.plot_path, self.method = save_path, plot_path, method
 
     def summary(self) -> str:
         """Lines for a terminal: scene, parameters, the table of phases, the final state.
@@ -214,7 +234,7 @@ class RegimeReport:
           1      slip-   0            1.570796327  I stops slipping
           2      slip+   1.570796327  2            -
         final state at t = 2: [...] (slip+)
-        integrated in ... ms
+        integrated in ... ms (dop853, phase by phase)
         """
         sc = self.scene
         params = ", ".join(f"{k}={v:g}" for k, v in self.parameters.items())
@@ -227,22 +247,30 @@ class RegimeReport:
             f"phases ({len(self.motion.phases)}):",
             *("  " + line for line in self.motion.table().splitlines()),
             f"final state at t = {last.end:g}: [{final}] ({last.regime})",
-            f"integrated in {1e3 * self.seconds:.1f} ms",
+            f"integrated in {1e3 * self.seconds:.1f} ms ({self.method}, phase by phase)",
+            *([f"samples saved to {self.save_path}"] if self.save_path else []),
+            *([f"plot written to {self.plot_path}"] if self.plot_path else []),
         ])
 
     def __str__(self):
         return self.summary()
 
 
-def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None,
-                     plot=None) -> RegimeReport:
+def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None, plot=None,
+                     save=None, method=None, rtol=None, atol=None, n_output=1001,
+                     progress=None) -> RegimeReport:
     """Run the scene ``name`` phase by phase; ``plot`` writes a figure of the first state
-    component there.
+    component there, ``save`` the samples (:func:`save_motion`).
+
+    ``method`` (default ``dop853``) must be adaptive (:func:`regime_methods`): the switches of
+    regime are located by its events; ``rtol`` and ``atol`` default to 1e-12. ``n_output``
+    evenly spaced samples are saved.
 
     Raises
     ------
     SceneError
-        Unknown scene or parameter, wrong number of initial values.
+        Unknown scene, parameter or method, wrong number of initial values, a path that
+        cannot be written.
 
     Examples
     --------
@@ -251,6 +279,10 @@ def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None,
     ...
       1      slip+   0 ...
       2      stick   ...
+    >>> run_regime_scene("rolling-cylinder", method="rk4")        # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    rigidmech._core.errors.SceneError: `method` of a regime scene must be adaptive ...
     """
     if name not in _BY_NAME:
         raise SceneError(f"unknown regime scene {name!r}; known: {', '.join(_BY_NAME)}.")
@@ -270,16 +302,71 @@ def run_regime_scene(name, *, t_end=None, params=None, q0=None, u0=None,
     t_end = sc._t_end if t_end is None else _finite(t_end, "`t_end`")
     if t_end <= 0:
         raise SceneError(f"`t_end` must be > 0; got {t_end:g}.")
+    method = DEFAULT_METHOD if method is None else method
+    if method not in regime_methods():
+        raise SceneError(f"`method` of a regime scene must be adaptive (its events locate the "
+                         f"switches of regime): one of {', '.join(regime_methods())}; got "
+                         f"{method!r}.")
+    rtol = DEFAULT_RTOL if rtol is None else _finite(rtol, "`rtol`")
+    atol = DEFAULT_ATOL if atol is None else _finite(atol, "`atol`")
+    if not (rtol > 0 and atol >= 0):
+        raise SceneError(f"`rtol` must be > 0 and `atol` >= 0; got rtol={rtol:g}, "
+                         f"atol={atol:g}.")
     if plot is not None:
         check_plot_path(plot)
+    if save is not None:
+        check_save_path(save)
     start = time.perf_counter()
-    motion = sc._runner(values, q0, u0, t_end)
+    motion = sc._runner(values, q0, u0, t_end, method=method, rtol=rtol, atol=atol,
+                        progress=progress)
     seconds = time.perf_counter() - start
     if plot is not None:
         from matplotlib.figure import Figure  # plotting only on demand
 
-        fig = Figure(figsize=(7, 3.5))
-        motion.plot(fig.add_subplot(), component=0, label=sc._state[0])
-        fig.tight_layout()
+        fig = Figure(figsize=(7, 3.5), layout="constrained")
+        ax = fig.add_subplot()
+        motion.plot(ax, component=0, label=sc._state[0])
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel(sc._state[0])
         fig.savefig(plot)
-    return RegimeReport(sc, values, q0, u0, t_end, motion, seconds)
+    save_path = None if save is None else save_motion(motion, save, sc.layout, n_output)
+    return RegimeReport(sc, values, q0, u0, t_end, motion, seconds, save_path,
+                        None if plot is None else str(plot), method)
+
+
+def save_motion(motion: PhasedMotion, path, names, n_output=1001) -> str:
+    """Write ``n_output`` evenly spaced samples of a phased motion to ``path``: ``.npz``
+    (arrays ``t``, ``y``, ``regime``, ``names``) or ``.csv`` (columns ``t [s]``, the state
+    components ``names``, ``regime``). Returns the path.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> rep = run_regime_scene("coulomb-oscillator", t_end=2.0)
+    >>> path = save_motion(rep.motion, os.path.join(tempfile.mkdtemp(), "osc.csv"),
+    ...                    rep.scene.layout, 5)
+    >>> with open(path) as fh:
+    ...     fh.readline().strip()
+    't [s],x,y,x_dot,y_dot,regime'
+    """
+    import csv
+    import os
+
+    import numpy as np
+
+    text = os.fspath(path)
+    t0, t1 = motion.phases[0].start, motion.phases[-1].end
+    t = np.linspace(t0, t1, int(n_output))
+    y = motion(t)
+    ends = np.array([p.end for p in motion.phases])
+    k = np.minimum(np.searchsorted(ends, t, side="left"), len(ends) - 1)
+    regimes = np.array([motion.phases[i].regime for i in k])
+    if text.lower().endswith(".npz"):
+        np.savez(text, t=t, y=y, regime=regimes, names=np.array(list(names)))
+    else:
+        with open(text, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["t [s]", *names, "regime"])
+            for j in range(t.size):
+                w.writerow([repr(float(t[j])), *(repr(float(v)) for v in y[:, j]), regimes[j]])
+    return text

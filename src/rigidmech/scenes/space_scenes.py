@@ -145,7 +145,7 @@ SPACE_SCENES = (
           parameters=(("m", 1.0, "mass of the satellite (drops out)"),
                       ("mu", EARTH_MU_KM, "G M of the Earth, km^3/s^2")),
           q0=(7000.0, 0.0), u0=(0.0, 8.0), t_end=7200.0, rtol=1e-11, atol=1e-8,
-          builder=_satellite,
+          builder=_satellite, units={"x": "km", "y": "km"},
           notes="x, y: position of the satellite in the geocentric frame, km; time in s. "
                 "The default state gives an ellipse of period about 7100 s."),
     Scene("moon-probe", "A probe in the field of the Earth and the Moon (restricted three "
@@ -155,9 +155,9 @@ SPACE_SCENES = (
                       ("mE", 1.0 - EARTH_MOON_MU, "mass of the Earth (G = 1)"),
                       ("mM", EARTH_MOON_MU, "mass of the Moon (G = 1)")),
           q0=(0.1 - EARTH_MOON_MU, 0.0), u0=(0.0, 4.2), t_end=6.0, rtol=1e-11, atol=1e-12,
-          builder=_moon_probe,
+          builder=_moon_probe, units={"x": "D", "y": "D"}, time_unit="4.35 days",
           notes="x, y: position of the probe in the barycentric Galilean frame; units: the "
-                "Earth-Moon distance and G = 1 (with the default masses, t = 2 pi is 27.3 "
+                "Earth-Moon distance D and G = 1 (with the default masses, t = 2 pi is 27.3 "
                 "days). The Earth and the Moon move on circular orbits; Jacobi's integral "
                 "is conserved."),
     Scene("foucault-pendulum", "Foucault pendulum on the rotating Earth", "ch. 19, 24",
