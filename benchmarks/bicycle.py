@@ -42,12 +42,15 @@ def whipple_bicycle():
     """The bicycle's equations of motion and rear radius: from rigidmech.models when it exists,
     else the builder of tests/vibrations/test_whipple_bicycle.py."""
     try:
+        from rigidmech.models import BENCHMARK_BICYCLE
         from rigidmech.models import whipple_bicycle as build  # type: ignore[import-not-found]
     except ImportError:
         here = os.path.dirname(os.path.abspath(__file__))
         sys.path.insert(0, os.path.join(here, os.pardir, "tests", "vibrations"))
         from test_whipple_bicycle import whipple_bicycle as build
-    return build()
+        return build()
+    # the catalogue's builder returns a Model (system, coordinates, ...), not the equations
+    return build().system.equations_of_motion(), BENCHMARK_BICYCLE["rR"]
 
 
 def kane_bicycle():

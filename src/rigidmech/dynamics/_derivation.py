@@ -151,6 +151,40 @@ def partials(system, solid, point):
     return system._cache[key]
 
 
+# False: the previous path (sympy's xreplace), kept only for the test of equivalence
+# (tests/dynamics/test_derivation_equivalence.py); not an option.
+_SHARED_REPLACE = True
+
+
+def _replace_shared(vector, rule, memo):
+    """``vector.xreplace(rule)``, the same result, each distinct subexpression rebuilt once
+    (``memo`` shared between calls).
+
+    sympy's ``xreplace`` walks an expression as a tree: the accelerations of a chain repeat
+    the subexpressions of the bodies before them, and dropping q'' from them was half the
+    derivation of the 3D chain. Unlike :func:`~rigidmech._core.symbolic.xreplace_shared`, sums
+    and products are rebuilt with evaluation, as ``xreplace`` does (here leaves are replaced by
+    zero, which must cancel the terms that hold them).
+    """
+    def walk(e):
+        hit = memo.get(e)
+        if hit is not None:
+            return hit
+        if e in rule:
+            out = rule[e]
+        elif not e.args:
+            out = e
+        else:
+            args = tuple(walk(a) for a in e.args)
+            out = e if all(a is b for a, b in zip(args, e.args, strict=True)) else e.func(*args)
+        memo[e] = out
+        return out
+
+    if not _SHARED_REPLACE:
+        return vector.xreplace(rule)
+    return vector.applyfunc(walk)
+
+
 def equations_of_motion(system, open_contacts):
     """The equations of motion of ``system``, derived once and cached (see
     :meth:`System.equations_of_motion <rigidmech.dynamics.System.equations_of_motion>`)."""
@@ -169,17 +203,18 @@ def equations_of_motion(system, open_contacts):
     # re-sorts it at every step.
     M_terms = [[[] for _ in range(n)] for _ in range(n)]
     f_terms = [[] for _ in range(n)]
+    memo = {}  # the subexpressions of all bodies' accelerations, rebuilt once
     for body in system._bodies:
         if not body.mass:
             continue
         parts = partials(system, body, body.centre)
         m = body.mass
         # accelerations without the q'' terms (they make up M q'')
-        a0 = body.centre.velocity(R).dt(R).xreplace(no_acc)
+        a0 = _replace_shared(body.centre.velocity(R).dt(R), no_acc, memo)
         J = body.inertia
         if J is not None:
             w = body.rotation_vector(R)
-            d0 = J.apply(w).dt(R).xreplace(no_acc)
+            d0 = _replace_shared(J.apply(w).dt(R), no_acc, memo)
             JW = [J.apply(Wi) if not Wi.is_zero else Vector.zero() for Wi, _ in parts]
         for i in range(n):
             Wi, Vi = parts[i]
