@@ -57,7 +57,8 @@ def _values(matrix, rule, rest):
     return np.array(m.evalf(30).tolist(), dtype=float)
 
 
-@pytest.mark.parametrize("name", sorted(BUILDERS))
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n == "whipple_bicycle"
+                                  else n for n in sorted(BUILDERS)])
 def test_derivation_agrees_with_the_previous_path(name, monkeypatch):
     build = BUILDERS[name]
     system = build().system

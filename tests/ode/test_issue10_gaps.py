@@ -44,6 +44,7 @@ def test_radau_nfev_unchanged_without_t_eval():
     np.testing.assert_array_equal(a.t, b.t)
 
 
+@pytest.mark.slow  # minutes under tracemalloc: run by CI's slow stage
 def test_radau_memory_bounded_by_samples():
     # 3000 time units at rtol 1e-10: about 10^4 steps; 100 samples asked for.
     te = np.linspace(0.0, 3.0e3, 100)
@@ -87,6 +88,7 @@ def test_adams_t_eval_samples_step_by_step_same_steps(which, rtol):
     np.testing.assert_allclose(r.y, dense.sol(te), rtol=0, atol=1e-14 * np.abs(y0).max())
 
 
+@pytest.mark.slow  # minutes under tracemalloc: run by CI's slow stage
 def test_adams_t_eval_memory_bounded_by_samples():
     te = np.linspace(0.0, 2.0e3, 100)
     run = dict(method="adams", rtol=1e-10, atol=1e-12, t_eval=te)
