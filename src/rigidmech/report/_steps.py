@@ -17,7 +17,7 @@ Examples
 >>> w = StepsWriter(pendulum.system, {"bar": pendulum.point("O_R0")})
 >>> w.kinematics()
 >>> w.steps[0][0], w.steps[0][3][0][0].text
-('Kinematic torsors', '{V(bar/R0)}_O_R0')
+('Kinematic torsors', '{V(bar/R0)}')
 """
 
 from __future__ import annotations
@@ -72,24 +72,18 @@ class StepsWriter:
             names[id(a)] = kind if kinds.count(kind) == 1 else f"{kind}#{seen[kind]}"
         return names
 
-    def _torsor(self, letter, body, point=None, index=None):
+    def _torsor(self, letter, body, index=None):
         R = self.R.name
         sub_t = "" if index is None else f"_{self.q_text[index]}"
         sub_x = "" if index is None else f"_{{{self.q_tex[index]}}}"
         text = f"{{{letter}{sub_t}({body}/{R})}}"
         tex = rf"\{{\mathcal{{{letter}}}{sub_x}({tex_name(body)}/{_sym_tex(R)})\}}"
-        if point is not None:
-            text += f"_{point.name}"
-            tex += f"_{{{_sym_tex(point.name)}}}"
         return Words(text, tex)
 
     @staticmethod
-    def _action(source, target, point=None):
+    def _action(source, target):
         text = f"{{A({source} -> {target})}}"
         tex = rf"\{{\mathcal{{A}}({tex_name(source)} \to {tex_name(target)})\}}"
-        if point is not None:
-            text += f"_{point.name}"
-            tex += f"_{{{_sym_tex(point.name)}}}"
         return Words(text, tex)
 
     def _add(self, title, section, intro, lines):
@@ -145,7 +139,7 @@ class StepsWriter:
             P = self.points[b.name]
             V = b.kinematic_torsor(relative_to=self.R, at=P)
             self.results["kinematic"][b.name] = V
-            lines.append((self._torsor("V", b.name, P), V, ""))
+            lines.append((self._torsor("V", b.name), V, ""))
         self._add("Kinematic torsors", "ch. 9.2.4", "", lines)
 
     # -- 3. kinetics ------------------------------------------------------------------
@@ -160,8 +154,8 @@ class StepsWriter:
             self.results["kinetic"][b.name] = C
             self.results["dynamic"][b.name] = D
             self.results["kinetic_energy"][b.name] = E
-            lines += [(self._torsor("C", b.name, b.centre), C, ""),
-                      (self._torsor("D", b.name, b.centre), D, ""),
+            lines += [(self._torsor("C", b.name), C, ""),
+                      (self._torsor("D", b.name), D, ""),
                       (Words(f"E_k({b.name}/{R.name})",
                              rf"E_k({tex_name(b.name)}/{_sym_tex(R.name)})"), E, "")]
         T = self.system.kinetic_energy()
@@ -176,7 +170,7 @@ class StepsWriter:
         lines = []
         for solid, torsor, action in s._contributions():
             name = self._names[id(action)]
-            label = self._action(name, solid.name, torsor.point)
+            label = self._action(name, solid.name)
             self.results["actions"][f"{name} -> {solid.name}"] = torsor
             lines.append((label, torsor, "given"))
         tree = {id(k) for k in s.mechanism.tree_links()}
@@ -194,7 +188,7 @@ class StepsWriter:
                 lines.append((None, None, f"{kind} {link.label}: no action torsor shown"))
                 continue
             self.results["actions"][key] = A
-            lines.append((self._action(first.name, second.name, A.point), A, note))
+            lines.append((self._action(first.name, second.name), A, note))
         self._add("Action torsors", "ch. 11, 13.2",
                   "The given actions, and the connections' actions with their unknowns.", lines)
 
@@ -210,7 +204,7 @@ class StepsWriter:
             P = self.points[b.name]
             parts = tuple(self._partial(b, P, i) for i in range(len(self.q)))
             self.results["partial"][b.name] = parts
-            lines += [(self._torsor("V", b.name, P, i), V, "") for i, V in enumerate(parts)]
+            lines += [(self._torsor("V", b.name, index=i), V, "") for i, V in enumerate(parts)]
         self._add("Partial kinematic torsors", "ch. 25.1.2",
                   "{V_i(S/R)} = d{V(S/R)}/dq_i' for each parameter q_i.", lines)
         lines = []

@@ -13,7 +13,7 @@ Examples
 ['Parameters of situation', 'Kinematic torsors', 'Kinetic and dynamic torsors']
 >>> print(rep.steps[1].to_text())
 2. Kinematic torsors (ch. 9.2.4)
-   {V(bar/R0)}_O_R0 = {theta_dot k_R1 ; 0}_O_R0
+   {V(bar/R0)} = {theta_dot k_R1 ; 0}_O_R0
 """
 
 from __future__ import annotations
