@@ -96,7 +96,8 @@ class StepsWriter:
         lines = [(None, Words(f"reference {R.name} ({kind})",
                               rf"\text{{reference }} {_sym_tex(R.name)}"
                               rf"\text{{ ({tex_text(kind)})}}"), ""),
-                 (Words("q", "q"), sp.Tuple(*self.q), f"{len(self.q)} parameter{'' if len(self.q) == 1 else 's'} of situation"),
+                 (Words("q", "q"), sp.Tuple(*self.q),
+                  f"{len(self.q)} parameter{'' if len(self.q) == 1 else 's'} of situation"),
                  (Words("constants", r"\text{constants}"), sp.Tuple(*s.parameters), "")]
         O = R.origin
         for b in s.bodies:
