@@ -211,8 +211,8 @@ class Display:
         if not longs:
             return
         used = {s.name for e in longs for s in e.free_symbols}
-        prefix = next(p for p in ("z", "zeta", "w_", "xi") if not any(
-            n.startswith(p) for n in used))
+        prefix = next((p for p in ("z", "zeta", "w_", "xi") if not any(
+            n.startswith(p) for n in used)), "named_")
         names = sp.numbered_symbols(prefix, start=1)
         replacements, reduced = sp.cse(longs, symbols=names, order="none")
         named = list(replacements)

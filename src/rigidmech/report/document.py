@@ -133,11 +133,13 @@ class Derivation:
         self._results = MappingProxyType(dict(results))
         self._title = title
 
-    route = property(lambda self: self._route)
-    steps = property(lambda self: self._steps)
-    named = property(lambda self: self._named)
-    results = property(lambda self: self._results)
-    title = property(lambda self: self._title)
+    route = property(lambda self: self._route, doc="``'principle'`` or ``'lagrange'``.")
+    steps = property(lambda self: self._steps, doc="The steps, a tuple of :class:`Step`.")
+    named = property(lambda self: self._named,
+                     doc="The named expressions: (symbol, definition) pairs.")
+    results = property(lambda self: self._results,
+                       doc="The library's results shown by the steps (a read-only mapping).")
+    title = property(lambda self: self._title, doc="The report's title.")
 
     # -- the library's results, for programs and tests ------------------------------------
     def kinematic_torsor(self, body):
