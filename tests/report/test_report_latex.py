@@ -12,6 +12,7 @@ import subprocess
 
 import pytest
 
+import rigidmech as rm
 from rigidmech import models, report
 from rigidmech.errors import ArgumentError, ArgumentTypeError
 
@@ -100,3 +101,22 @@ def test_without_pdflatex_the_compile_test_skips_locally_and_fails_in_ci(monkeyp
     monkeypatch.delenv("CI")
     with pytest.raises(pytest.skip.Exception, match="pdflatex is not installed"):
         pdflatex()
+
+
+def test_names_with_latex_special_characters_compile(tmp_path):
+    # a body, points and actions whose names hold _ and # (two forces: Force#1, Force#2)
+    x = rm.coordinates("x")
+    m, k, F = rm.constants("m k F", positive=True)
+    R0 = rm.Frame("R0")
+    P = R0.point("P_1", x, 0, 0)
+    body = rm.Body("block_&_co", frame=R0.translated("R_b", P), mass=m, centre=P)
+    s = rm.System(galilean=R0)
+    s.connect(R0, body, rm.joints.Prismatic(at=P, axis=R0.i), label="s_1")
+    s.act(rm.Force(on=body, vector=F * R0.i, at=P))
+    s.act(rm.Force(on=body, vector=-F / 2 * R0.i, at=P))
+    s.act(rm.Spring(k, 0, a=R0.origin, b=P, on_b=body))
+    got = report.derivation(s)
+    text = got.to_text()
+    assert "{A(Force#1 -> block_&_co)}" in text and "{A(Force#2 -> block_&_co)}" in text
+    assert "unknowns X_s_1, Y_s_1, L_s_1, M_s_1, N_s_1" in text
+    compile_tex(got.write(tmp_path / "names.tex"))
