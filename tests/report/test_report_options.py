@@ -140,3 +140,38 @@ def test_a_loop_shows_its_closure_conditions_and_multipliers():
     A = s.constraints().jacobian
     assert got.results["equations"].constraints.jacobian == A
     assert "A^T lambda = " in text and str(lam[0]) in text
+
+
+def test_a_rolling_contact_is_shown_with_its_unknowns_and_its_multipliers():
+    # the rolling contact is the disc's tree connection and it links the parameters: its
+    # power goes through A^T lambda, and is not announced as zero (ch. 25.3.3)
+    got = report.derivation(models.rolling_disc(), simplify=False)
+    text = got.to_text()
+    assert ("{A(R0 -> disc)} = {T1_1 i_R0 + T2_1 j_R0 + N_1 k_R0 ; 0}_I   [RollingContact 1: "
+            "unknowns N_1, T1_1, T2_1; linking: in the equations through its multipliers]"
+            ) in text
+    assert "(connection 1)" not in text
+    assert "A^T lambda = [[lambda_1.t1], [lambda_1.t2], [0], [0], " in text
+
+
+def test_a_loop_closed_on_the_ground_is_shown_with_its_multipliers():
+    # two bars on pivots, the tip T of the second kept on the plane y = 0 of the ground by a
+    # point contact: the closing connection goes from the ground R0 to bar2
+    q1, q2 = rm.coordinates("q1 q2")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q1)
+    A = R0.origin.moved("A", R1.i)
+    R2 = R1.rotated("R2", about=R0.k, angle=q2, origin=A)
+    bar1, bar2 = rm.Body("bar1", frame=R1, mass=1), rm.Body("bar2", frame=R2, mass=1)
+    s = rm.System(galilean=R0)
+    s.connect(R0, bar1, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(bar1, bar2, rm.joints.Pivot(at=A, axis=R0.k))
+    s.connect(R0, bar2, rm.actions.PointContact(at=R0.origin, normal=R0.j),
+              meets=A.moved("T", R2.i))
+    s.act(rm.gravity(-R0.j))
+    got = report.derivation(s, simplify=False)
+    (label,) = [lab for lab, _, _ in s.closure_conditions()]
+    text = got.to_text()
+    assert f"lambda = (lambda_{label})" in text
+    assert f"{{A(R0 -> bar2)}} = {{lambda_{label} j_R0 ; 0}}_T" in text
+    assert "closes a loop: its multipliers" in text

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ..kinetics import Body
 from ..torsors import Torsor
 from ..vectors import t
 from ._display import Relation, Words, tex_name, tex_text
@@ -34,6 +35,12 @@ __all__ = ["StepsWriter"]
 def _sym_tex(name):
     """A frame's or a point's name as sympy prints a symbol of that name (R0 -> R_{0})."""
     return sp.latex(sp.Symbol(name))
+
+
+def _as_argument(solid):
+    """A solid as :meth:`System.connection_action` takes it: a Body, or the Galilean frame
+    for the ground."""
+    return solid if isinstance(solid, Body) else solid.frame
 
 
 class StepsWriter:
@@ -58,6 +65,8 @@ class StepsWriter:
         self.results = {"points": dict(points), "kinematic": {}, "kinetic": {}, "dynamic": {},
                         "kinetic_energy": {}, "partial": {}, "actions": {}}
         self._names = self._action_names()
+        # the labels of the linking connections (closure rows are labelled "<label>.<row>")
+        self.linking = {label.rsplit(".", 1)[0] for label, _, _ in system.closure_conditions()}
         c = system.constraints()
         self.linked = None if c is None else \
             sp.ImmutableMatrix(c.jacobian.T * sp.Matrix(system.multiplier_symbols()))
@@ -179,12 +188,16 @@ class StepsWriter:
             first, second, conn = link.first, link.second, link.connection
             key = f"{first.name} -> {second.name} ({link.label})"
             kind = type(conn).__name__
-            if id(link) in tree and hasattr(conn, "action_torsor"):
+            if id(link) not in tree:
+                # a loop-closing connection: its action is sum lambda_i e_i (ch. 25.3.3)
+                A = s.connection_action(_as_argument(first), _as_argument(second),
+                                        label=link.label)
+                note = f"{kind} {link.label}, closes a loop: its multipliers"
+            elif hasattr(conn, "action_torsor"):
                 A, unknowns = conn.action_torsor(link.label)
                 note = f"{kind} {link.label}: unknowns {', '.join(map(str, unknowns))}"
-            elif id(link) not in tree:
-                A = s.connection_action(first, second, label=link.label)
-                note = f"{kind} {link.label}, linking: its multipliers"
+                if link.label in self.linking:
+                    note += "; linking: in the equations through its multipliers"
             else:
                 lines.append((None, None, f"{kind} {link.label}: no action torsor shown"))
                 continue
@@ -221,6 +234,8 @@ class StepsWriter:
         lines.append((Words("Q", "Q"), Q, "power coefficients of the given actions"))
         ground = s.mechanism.solids[0]
         for link in s.mechanism.tree_links():
+            if link.label in self.linking:
+                continue   # its power is that of its multipliers, A^T lambda
             A = self.results["actions"].get(f"{link.first.name} -> {link.second.name} "
                                             f"({link.label})")
             if A is None:
