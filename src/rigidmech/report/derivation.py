@@ -41,7 +41,7 @@ from ..models import Model
 from ..vectors import Point
 from ._display import Display, Relation, check_max_ops
 from ._steps import StepsWriter
-from .document import Derivation, Step
+from .document import Derivation, Line, Step
 
 __all__ = ["derivation", "ROUTES", "default_point"]
 
@@ -208,7 +208,7 @@ def _render(writer, route, simplify, max_ops):
                     text, tex = f"{label.text}  {text}", rf"{label.latex}\quad {tex}"
                 elif label is not None:
                     text, tex = f"{label.text} = {text}", f"{label.latex} = {tex}"
-            rendered.append((text, tex, note))
+            rendered.append(Line(text, tex, note))
         steps.append((number, title, section, intro, tuple(rendered)))
     named_lines = tuple((f"{s} = {display.text(e)}", f"{display.latex(s)} = {display.latex(e)}")
                         for s, e in display.named)

@@ -33,17 +33,21 @@ LATEX_PACKAGES = ("amsmath", "geometry")
 
 
 class Line(NamedTuple):
-    """One shown relation of a step: ``label = value`` (or ``value`` alone), with an
-    optional note; ``value`` is already in its shown form.
+    """One shown line of a step: ``label = value`` in plain text and in LaTeX (math mode),
+    and a note (either may be empty: a note alone).
 
     Examples
     --------
-    >>> Line(None, None, "no body has a mass").note
-    'no body has a mass'
+    >>> from rigidmech import models, report
+    >>> line = report.derivation(models.compound_pendulum()).steps[1].lines[0]
+    >>> line.text
+    '{V(bar/R0)} = {theta_dot k_R1 ; 0}_O_R0'
+    >>> line.latex.startswith(r"\\{\\mathcal{V}(\\mathrm{bar}/R_{0})\\} =")
+    True
     """
 
-    label: object
-    value: object
+    text: str
+    latex: str
     note: str = ""
 
 
@@ -61,7 +65,7 @@ class Step(NamedTuple):
     title: str
     section: str
     intro: str
-    lines: tuple   # of (text, latex, note): rendered lines
+    lines: tuple   # of Line
 
     @property
     def heading(self) -> str:
