@@ -175,3 +175,17 @@ def test_a_loop_closed_on_the_ground_is_shown_with_its_multipliers():
     assert f"lambda = (lambda_{label})" in text
     assert f"{{A(R0 -> bar2)}} = {{lambda_{label} j_R0 ; 0}}_T" in text
     assert "closes a loop: its multipliers" in text
+
+
+def test_a_massless_body_has_no_kinetic_torsor_in_the_report():
+    x = rm.coordinates("x")
+    R0 = rm.Frame("R0")
+    P = R0.point("P", x, 0, 0)
+    s = rm.System(galilean=R0)
+    s.connect(R0, rm.Body("link", frame=R0.translated("R1", P)),
+              rm.joints.Prismatic(at=P, axis=R0.i))
+    got = report.derivation(s)
+    assert "link is massless: no kinetic torsor" in got.to_text()
+    assert got.kinematic_torsor("link").velocity.is_zero is False
+    with pytest.raises(ArgumentError, match="`body` link is massless: it has no kinetic torsor"):
+        got.kinetic_torsor("link")

@@ -159,7 +159,7 @@ def derivation(system, *, route: str = "principle", at=None, simplify: bool = Tr
     >>> rep.kinematic_torsor("bar2").velocity
     L*Derivative(theta1(t), t)*R1.j
     >>> print(rep.steps[-1].to_text())  # doctest: +ELLIPSIS
-    7. Equations of motion (ch. 20.2, 25.1.4)
+    8. Equations of motion (ch. 20.2, 25.1.4)
        ...
        (theta1) 4*L**2*m*theta1_ddot/3 + L**2*m*theta2_ddot*cos(theta1 - theta2)/2 = ...
     """

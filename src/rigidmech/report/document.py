@@ -114,8 +114,9 @@ class Derivation:
         The library's own results shown by the steps, written with q(t): ``"points"``,
         ``"kinematic"``, ``"kinetic"``, ``"dynamic"``, ``"kinetic_energy"`` (body name ->
         value), ``"partial"`` (body name -> tuple of torsors, one per coordinate),
-        ``"actions"`` (label -> torsor), ``"power_coefficients"``, ``"equations"`` and, on
-        Lagrange's route, ``"momenta"`` (dT/dq_i').
+        ``"actions"`` (label -> torsor), ``"kinetic_energy_total"`` (T of the set),
+        ``"power_coefficients"``, ``"equations"`` and, on Lagrange's route, ``"momenta"``
+        (dT/dq_i', one per coordinate).
 
     Examples
     --------
@@ -147,21 +148,41 @@ class Derivation:
 
     # -- the library's results, for programs and tests ------------------------------------
     def kinematic_torsor(self, body):
-        """{V(S/R)} of ``body`` (a Body or its name) at the report's point for it."""
-        return self._results["kinematic"][self._key(body)]
+        """{V(S/R)} of ``body`` (a Body or its name) at the report's point for it (ch. 9.2.4).
+
+        Examples
+        --------
+        >>> from rigidmech import models, report
+        >>> rep = report.derivation(models.compound_pendulum(), simplify=False)
+        >>> rep.kinematic_torsor("bar")
+        KinematicTorsor(V(R1/R0): rotation=Derivative(theta(t), t)*R1.k, velocity=0, at=O_R0)
+        >>> rep.partial_kinematic_torsors("bar")
+        (Torsor(resultant=R1.k, moment=0, at=O_R0),)
+        """
+        return self._get("kinematic", body)
 
     def partial_kinematic_torsors(self, body) -> tuple:
         """The partial kinematic torsors {V_i(S/R)} of ``body``, one per coordinate, at the
         same point as :meth:`kinematic_torsor` (ch. 25.1.2)."""
-        return self._results["partial"][self._key(body)]
+        return self._get("partial", body)
 
     def kinetic_torsor(self, body):
-        """{C(S/R)} of ``body`` at its mass centre (ch. 16.1.2)."""
-        return self._results["kinetic"][self._key(body)]
+        """{C(S/R)} of ``body`` at its mass centre (ch. 16.1.2).
+
+        Examples
+        --------
+        >>> from rigidmech import models, report
+        >>> rep = report.derivation(models.compound_pendulum(), simplify=False)
+        >>> rep.kinetic_torsor("bar").moment
+        L**2*m*Derivative(theta(t), t)/12*R1.k
+        >>> rep.dynamic_torsor("bar").moment_at(rep.kinematic_torsor("bar").point)
+        L**2*m*Derivative(theta(t), (t, 2))/3*R1.k
+        """
+        return self._get("kinetic", body)
 
     def dynamic_torsor(self, body):
         """{D(S/R)} of ``body`` at its mass centre (ch. 16.2.2)."""
-        return self._results["dynamic"][self._key(body)]
+        return self._get("dynamic", body)
 
     @property
     def kinetic_energy(self):
@@ -170,8 +191,20 @@ class Derivation:
 
     @property
     def action_torsors(self):
-        """The action torsors shown, by label: the given actions and the connections' (with
-        their unknowns or multipliers)."""
+        """The action torsors shown, by label: the given actions (``"Gravity -> bar"``) and
+        the connections' (``"R0 -> bar (1)"``, with their unknowns or multipliers).
+
+        Examples
+        --------
+        >>> from rigidmech import models, report
+        >>> rep = report.derivation(models.compound_pendulum(), simplify=False)
+        >>> list(rep.action_torsors)
+        ['Gravity -> bar', 'R0 -> bar (1)']
+        >>> rep.action_torsors["R0 -> bar (1)"].moment
+        L_1*R0.i + M_1*R0.j
+        >>> rep.power_coefficients
+        Matrix([[-L*g*m*sin(theta(t))/2]])
+        """
         return self._results["actions"]
 
     @property
@@ -185,16 +218,32 @@ class Derivation:
         :class:`~rigidmech.dynamics.EquationsOfMotion`."""
         return self._results["equations"]
 
-    def _key(self, body):
+    def _get(self, kind, body):
         name = getattr(body, "name", body)
-        if name not in self._results["kinematic"]:
-            known = ", ".join(self._results["kinematic"])
+        if name not in self._results["points"]:
+            known = ", ".join(self._results["points"])
             raise ArgumentError(f"`body` must be a body of the report ({known}); got {body!r}.")
-        return name
+        if name not in self._results[kind]:
+            raise ArgumentError(f"`body` {name} is massless: it has no {kind} torsor. Give it a "
+                                "mass, or ask for another body.")
+        return self._results[kind][name]
 
     # -- forms ----------------------------------------------------------------------------
     def to_text(self) -> str:
-        """The report in plain text."""
+        """The report in plain text (also ``str(report)``).
+
+        Examples
+        --------
+        >>> from rigidmech import models, report
+        >>> text = report.derivation(models.compound_pendulum()).to_text()
+        >>> print(text[text.index("8. Equations"):])
+        8. Equations of motion (ch. 20.2, 25.1.4)
+           M(q) q'' = f(q, q', t)
+           M(q) = [[L**2*m/3]]   [mass matrix]
+           f(q, q', t) = [[-L*g*m*sin(theta)/2]]
+           (theta)  L**2*m*theta_ddot/3 = -L*g*m*sin(theta)/2
+        <BLANKLINE>
+        """
         parts = [self._title, "=" * len(self._title)]
         parts += [s.to_text() for s in self._steps]
         if self._named_lines:
@@ -207,7 +256,18 @@ class Derivation:
     def to_latex(self, *, standalone: bool = True) -> str:
         """The report in LaTeX: a complete document (``standalone=True``, compiles with
         pdflatex and the packages of :data:`LATEX_PACKAGES`) or a fragment to include in
-        one that loads amsmath (``standalone=False``)."""
+        one that loads amsmath (``standalone=False``).
+
+        Examples
+        --------
+        >>> from rigidmech import models, report
+        >>> rep = report.derivation(models.compound_pendulum(), simplify=False)
+        >>> document = rep.to_latex()
+        >>> [line.split("{")[1] for line in document.splitlines()[:3]]
+        ['article}', 'amsmath}', 'geometry}']
+        >>> "documentclass" in rep.to_latex(standalone=False)
+        False
+        """
         body = [s.to_latex() for s in self._steps]
         if self._named_lines:
             body.append(r"\subsection*{Named expressions}")
@@ -242,6 +302,16 @@ class Derivation:
         ------
         ArgumentError
             If ``path`` does not end with ``.tex``.
+
+        Examples
+        --------
+        >>> import tempfile, pathlib
+        >>> from rigidmech import models, report
+        >>> rep = report.derivation(models.compound_pendulum(), simplify=False)
+        >>> with tempfile.TemporaryDirectory() as tmp:
+        ...     path = rep.write(pathlib.Path(tmp) / "pendulum.tex")
+        ...     path.name, "documentclass" in path.read_text()
+        ('pendulum.tex', True)
         """
         if not isinstance(path, (str, os.PathLike)):
             raise ArgumentTypeError(f"`path` must be a str or a path; got {type(path).__name__}.")
