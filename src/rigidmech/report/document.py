@@ -91,9 +91,11 @@ class Step(NamedTuple):
         if self.intro:
             out.append(tex_text(self.intro))
         for _, tex, note in self.lines:
-            if tex:
+            if tex and note:
+                out.append(rf"\[ {tex} \qquad \text{{\small ({tex_text(note)})}} \]")
+            elif tex:
                 out.append(rf"\[ {tex} \]")
-            if note:
+            elif note:
                 out.append(rf"\noindent{{\small {tex_text(note)}}}")
         return "\n".join(out)
 
