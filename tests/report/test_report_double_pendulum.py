@@ -13,19 +13,19 @@ import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
-from rigidmech import models, report
+from rigidmech import report
 
 pytestmark = pytest.mark.filterwarnings("error")
 
 
 @pytest.fixture(scope="module")
-def pendulum():
-    return models.double_pendulum()
+def pendulum(double_pendulum):
+    return double_pendulum
 
 
 @pytest.fixture(scope="module")
-def principle(pendulum):
-    return report.derivation(pendulum)
+def principle(double_pendulum_report):
+    return double_pendulum_report
 
 
 @pytest.fixture(scope="module")

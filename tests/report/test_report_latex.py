@@ -41,8 +41,8 @@ def compile_tex(path):
 
 
 @pytest.fixture(scope="module")
-def pendulum_report():
-    return report.derivation(models.double_pendulum())
+def pendulum_report(double_pendulum_report):
+    return double_pendulum_report
 
 
 @pytest.fixture(scope="module")

@@ -246,7 +246,7 @@ class Derivation:
            (theta)  L**2*m*theta_ddot/3 = -L*g*m*sin(theta)/2
         <BLANKLINE>
         """
-        parts = [self._title, "=" * len(self._title)]
+        parts = [f"{self._title}\n{'=' * len(self._title)}"]
         parts += [s.to_text() for s in self._steps]
         if self._named_lines:
             parts.append("Named expressions")
