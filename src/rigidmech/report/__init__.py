@@ -17,7 +17,7 @@ Matrix([[L**2*m/3]])
 (True, False)
 """
 
-from .derivation import ROUTES, default_point, derivation
+from .derive import ROUTES, default_point, derivation
 from .document import LATEX_PACKAGES, Derivation, Line, Step
 
 __all__ = ["derivation", "default_point", "ROUTES", "Derivation", "Step", "Line",
