@@ -18,7 +18,8 @@ import numpy as np
 SRC = Path(__file__).resolve().parent.parent / "src"
 
 LAZY_THIRD_PARTY = ("scipy", "matplotlib", "tqdm")
-LAZY_SUBPACKAGES = ("statics", "regimes", "lagrange", "vibrations", "scenes", "models", "testing")
+LAZY_SUBPACKAGES = ("statics", "regimes", "lagrange", "vibrations", "scenes", "models", "testing",
+                    "report")
 
 
 def run_json(code):
