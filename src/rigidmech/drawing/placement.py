@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
-from ..actions import Gravity, Joint
+from ..actions import Damper, Gravity, Joint, Spring
 from ..vectors import Frame, Point, Vector, t
 
 __all__ = ["Placer", "Placement", "place", "connection_point"]
@@ -100,6 +100,9 @@ class Placer:
                 pts.append(p)
         for _, _, contact in system.contacts:
             pts.append(contact.contact.point)
+        for action in system.actions:
+            if isinstance(action, Spring | Damper):
+                pts += [action.a, action.b]
         for p in points:
             if not isinstance(p, Point):
                 raise ArgumentTypeError(

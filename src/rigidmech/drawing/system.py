@@ -15,11 +15,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from ..actions import Damper, Spring
 from ..systems import Link
 from ..vectors import Frame
 from .bodies import View, draw_body, is_3d, shape_mesh
 from .placement import Placement, Placer
-from .symbols import draw_connection, draw_frame
+from .symbols import draw_connection, draw_frame, draw_spring
 
 __all__ = ["Drawing", "draw", "FIGURE_FORMATS", "limits_of", "outline_points", "azimuth_of"]
 
@@ -96,7 +97,7 @@ def limits_of(placements, view, size):
     pts = [view.project(np.array(list(p.points.values()))) for p in placements]
     pts += [view.project(outline_points(p, b)) for p in placements for b in p.system.bodies]
     pts = np.vstack(pts)
-    return pts.min(axis=0) - 3 * size, pts.max(axis=0) + 3 * size
+    return pts.min(axis=0) - 4 * size, pts.max(axis=0) + 4 * size
 
 
 def azimuth_of(placements, view) -> float:
@@ -224,6 +225,12 @@ def draw(system, q, params=None, *, t=0.0, ax=None, frames=False, labels=True, d
                               label=labels)
         if sym is not None:
             symbols.append(sym)
+    for action in system.actions:
+        if isinstance(action, Spring | Damper):
+            draw_spring(ax, view.project(placement.point(action.a)),
+                        view.project(placement.point(action.b)), size=size,
+                        damper=isinstance(action, Damper),
+                        ground_a=action.on_a is None)
     bodies = {}
     for n, body in enumerate(system.bodies):
         bodies[body.name] = draw_body(ax, body, placement, view, color=PALETTE[n % 10],
