@@ -71,7 +71,17 @@ class View:
     @classmethod
     def of(cls, placement, dim=None) -> View:
         """The view a placement is best seen in: 2D for a planar system (seen along the
-        normal of its plane, gravity down the page), 3D otherwise (gravity down)."""
+        normal of its plane, gravity down the page), 3D otherwise (gravity down); ``dim``
+        forces one.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> from rigidmech.drawing import place
+        >>> p = place(models.heavy_top(), [0.0, 0.5, 0.0], {"l": 1.0})
+        >>> View.of(p).dim, View.of(p, 2).dim
+        (3, 2)
+        """
         plane = placement.placer.plane
         if dim is None:
             dim = 2 if plane is not None else 3
@@ -92,7 +102,13 @@ class View:
         return cls([first, np.cross(up, first), up], 3)
 
     def project(self, xyz) -> np.ndarray:
-        """Coordinates on the axes of points (..., 3) given in the reference."""
+        """Coordinates on the axes of points (..., 3) given in the reference.
+
+        Examples
+        --------
+        >>> View([[0, 1, 0], [-1, 0, 0], [0, 0, 1]], 2).project([[1.0, 2.0, 3.0]]).tolist()
+        [[2.0, -1.0]]
+        """
         return (np.asarray(xyz, dtype=float) @ self._rows.T)[..., :self._dim]
 
 

@@ -156,6 +156,13 @@ class Placer:
         ------
         ArgumentError
             If symbols without a value remain (named in the message).
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> pendulum = models.compound_pendulum()
+        >>> Placer(pendulum, {"L": 2.0}).number(pendulum.constant("L") ** 2 / 2)
+        2.0
         """
         x = sp.sympify(expr).xreplace(self._values)
         if not x.is_number:
@@ -179,6 +186,13 @@ class Placer:
         ------
         ArgumentError
             For a wrong number of values, an unknown name, or a value that is not finite.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> placer = Placer(models.compound_pendulum(), {"L": 2.0})
+        >>> placer.at({"theta": 0.0}).point("G").tolist()
+        [1.0, 0.0, 0.0]
         """
         qv = _state(q, self._coordinates)
         out = [float(x) for x in self._function(float(t), *qv)]
@@ -359,7 +373,17 @@ class Placement:
         return self.point(frame.origin)
 
     def vector(self, vector: Vector) -> np.ndarray:
-        """The components of a vector in the reference's basis, evaluated at this state."""
+        """The components of a vector in the reference's basis, evaluated at this state.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rigidmech import models
+        >>> dp = models.double_pendulum()
+        >>> p = place(dp, [np.pi / 2, 0.0], {"L": 1.0})
+        >>> p.vector(dp.frame("R1").i).round(12).tolist()
+        [0.0, 1.0, 0.0]
+        """
         if not isinstance(vector, Vector):
             raise ArgumentTypeError(f"`vector` must be a Vector; got {type(vector).__name__}.")
         return self._evaluate(vector.components(self._placer.reference), "the vector")
@@ -370,7 +394,15 @@ class Placement:
         return dict(self._points)
 
     def extent(self):
-        """(low, high): the corners of the box holding every compiled point."""
+        """(low, high): the corners of the box holding every compiled point.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> low, high = place(models.compound_pendulum(), [0.0], {"L": 2.0}).extent()
+        >>> low.tolist(), high.tolist()                # O and the mass centre G
+        ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+        """
         xyz = np.array(list(self._points.values()) or [np.zeros(3)])
         return xyz.min(axis=0), xyz.max(axis=0)
 

@@ -52,6 +52,18 @@ class Drawing(NamedTuple):
         ------
         ArgumentError
             For another extension or a folder that does not exist.
+
+        Examples
+        --------
+        >>> import os, tempfile, matplotlib
+        >>> matplotlib.use("Agg")
+        >>> from rigidmech import models
+        >>> d = draw(models.compound_pendulum(), [0.5], {"L": 1.0})
+        >>> with tempfile.TemporaryDirectory() as folder:
+        ...     path = d.save(os.path.join(folder, "pendulum.svg"))
+        ...     os.path.getsize(path) > 1000
+        True
+        >>> import matplotlib.pyplot as plt; plt.close(d.figure)
         """
         path = os.fspath(path)
         ext = os.path.splitext(path)[1].lower().lstrip(".")
@@ -77,7 +89,16 @@ def _symbol_size(placement, view):
 
 def outline_points(placement, body) -> np.ndarray:
     """Points (N, 3) in the reference that the drawing of a body covers: its shape's mesh
-    or a rod's ends, else its mass centre."""
+    or a rod's ends, else its mass centre.
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import place
+    >>> m = models.compound_pendulum()
+    >>> outline_points(place(m, [0.0], {"L": 2.0}), m.body("bar")).tolist()
+    [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]
+    """
     G = placement.point(body.centre)
     shape = body.shape
     if shape is None or shape.kind == "point_mass":
@@ -92,8 +113,18 @@ def outline_points(placement, body) -> np.ndarray:
 
 def limits_of(placements, view, size):
     """(low, high) in the view's coordinates holding every compiled point and every body's
-    outline in the placements, with a margin for the symbols (an animation keeps one box
-    for all its frames)."""
+    outline in the placements, with a margin of 4 ``size`` for the symbols (an animation
+    keeps one box for all its frames).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import View, place
+    >>> p = place(models.compound_pendulum(), [0.0], {"L": 2.0})   # gravity along R0.i
+    >>> low, high = limits_of([p], View.of(p), 0.1)
+    >>> low.round(12).tolist(), high.round(12).tolist()
+    ([-0.4, -2.4], [0.4, 0.4])
+    """
     pts = [view.project(np.array(list(p.points.values()))) for p in placements]
     pts += [view.project(outline_points(p, b)) for p in placements for b in p.system.bodies]
     pts = np.vstack(pts)
@@ -101,7 +132,18 @@ def limits_of(placements, view, size):
 
 
 def azimuth_of(placements, view) -> float:
-    """The azimuth (degrees) of a 3D view that shows the spread of the points across."""
+    """The azimuth (degrees) of a 3D view that shows the spread of the points across: 60
+    degrees off the direction of their largest horizontal spread (-60, matplotlib's
+    default, when they have none).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import View, place
+    >>> p = place(models.heavy_top(), [0.0, 0.0, 0.0], {"l": 1.0})    # the axis vertical
+    >>> azimuth_of([p], View.of(p))
+    -60.0
+    """
     pts = np.vstack([view.project(np.array(list(p.points.values()))) for p in placements])
     spread = pts[:, :2] - pts[:, :2].mean(axis=0)
     if len(spread) < 2 or np.ptp(spread, axis=0).max() < 1e-9:
