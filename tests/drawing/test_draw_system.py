@@ -165,3 +165,10 @@ def test_spring_drawn_between_its_end_points():
     assert_allclose(xy[[0, -1]], d.view.project(np.array([[0, 0, 0], [1.5, 0, 0]])),
                     atol=1e-12)
     assert [c.kind for c in d.connections] == ["slide"]
+
+
+def test_dim_and_placer_checked():
+    with pytest.raises(ArgumentError, match="`dim` must be None, 2 or 3; got 1"):
+        draw(models.double_pendulum(), [0.0, 0.0], {"L": 1.0}, dim=1)
+    with pytest.raises(TypeError, match="`placer` must be a Placer"):
+        draw(models.double_pendulum(), [0.0, 0.0], placer="compiled")

@@ -58,7 +58,8 @@ class View:
 
     def __init__(self, rows, dim: int):
         rows = np.array(rows, dtype=float)
-        if rows.shape != (3, 3) or not np.allclose(rows @ rows.T, np.eye(3), atol=1e-9):
+        if rows.shape != (3, 3) or not np.allclose(rows @ rows.T, np.eye(3), rtol=0,
+                                                   atol=1e-9):
             raise ArgumentError(f"`rows` must be an orthonormal 3 x 3 basis; got {rows!r}.")
         if dim not in (2, 3):
             raise ArgumentError(f"`dim` must be 2 or 3; got {dim!r}.")
