@@ -203,7 +203,7 @@ def _shaded(polys, color):
 def _principal_axes(body, placement):
     """Columns: the principal directions of inertia of a body in the reference."""
     J = body.inertia
-    M = sp.Matrix(J.matrix).xreplace(placement.placer._values)
+    M = sp.Matrix(J.matrix).xreplace(placement.placer.parameters)
     if all(M[r, c] == 0 for r in range(3) for c in range(3) if r != c):
         return placement.rotation(J.frame)
     try:
