@@ -160,7 +160,8 @@ def _draw_2d(ax, kind, at, axis, normal, towards_body, s, ground, zorder):
         ax.add_patch(dot)
         return arts + [dot]
     if kind == "embedding":
-        square = Rectangle(at - 0.5 * s, s, s, facecolor=_INK, hatch="////" if ground else None,
+        square = Rectangle(at - 0.7 * s, 1.4 * s, 1.4 * s, facecolor=_INK,
+                           hatch="////" if ground else None,
                            edgecolor="white" if ground else _INK, zorder=zorder + 2)
         ax.add_patch(square)
         return [square]
