@@ -172,3 +172,15 @@ def test_dim_and_placer_checked():
         draw(models.double_pendulum(), [0.0, 0.0], {"L": 1.0}, dim=1)
     with pytest.raises(TypeError, match="`placer` must be a Placer"):
         draw(models.double_pendulum(), [0.0, 0.0], placer="compiled")
+
+
+def test_damper_drawn_as_a_dashpot():
+    from rigidmech.drawing import draw_spring
+
+    fig, ax = plt.subplots()
+    arts = draw_spring(ax, np.array([0.0, 0.0]), np.array([2.0, 0.0]), size=0.2, damper=True)
+    # rod a -> cup, the cup (3 sides), piston rod -> b, the piston plate across
+    assert len(arts) == 4
+    assert_allclose(arts[0].get_xydata(), [[0, 0], [0.7, 0]])
+    assert_allclose(arts[2].get_xydata(), [[1.1, 0], [2.0, 0]])
+    assert draw_spring(ax, np.zeros(2), np.zeros(2), size=0.2) == []
