@@ -19,7 +19,7 @@ SRC = Path(__file__).resolve().parent.parent / "src"
 
 LAZY_THIRD_PARTY = ("scipy", "matplotlib", "tqdm")
 LAZY_SUBPACKAGES = ("statics", "regimes", "lagrange", "vibrations", "scenes", "models", "testing",
-                    "report")
+                    "report", "drawing")
 
 
 def run_json(code):

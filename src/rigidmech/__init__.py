@@ -80,6 +80,7 @@ __all__ += ["systems", "Mechanism"]
 
 __all__ += ["models"]
 __all__ += ["report"]
+__all__ += ["drawing"]
 
 from ._core.deprecation import deprecated_aliases  # noqa: E402
 
@@ -89,8 +90,8 @@ _deprecated = deprecated_aliases(__name__, {"Contact": ("rigidmech.ContactLaws",
 # lazy: import cost (see docs/performance). These subpackages (and the names taken from them)
 # are imported on first access, by this module ``__getattr__`` (PEP 562): ``rm.statics``,
 # ``rm.Statics``, ``from rigidmech import *`` and ``dir(rm)`` are as if imported eagerly.
-_LAZY_SUBPACKAGES = ("lagrange", "models", "regimes", "report", "scenes", "statics", "testing",
-                     "vibrations")
+_LAZY_SUBPACKAGES = ("drawing", "lagrange", "models", "regimes", "report", "scenes", "statics",
+                     "testing", "vibrations")
 _LAZY_NAMES = {"Catenary": "statics", "Statics": "statics", "lagrange_equations": "lagrange"}
 
 
