@@ -16,7 +16,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 from .._core.validation import substitutions
 from ..statics import Limit, Statics
-from ..statics.limits import _lp_margin   # the limit's own program (no public equivalent)
+from ..statics.limits import _lp_margin  # the limit's own program (no public equivalent)
 
 __all__ = ["limiting_values"]
 

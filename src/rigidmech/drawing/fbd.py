@@ -29,9 +29,23 @@ from . import arrows as _arrows
 from ._fbd_sources import Source, plan, state_numbers
 from .fbd_actions import _build
 
-__all__ = ["FreeBodyDiagram", "free_body_diagram", "draw_actions"]
+__all__ = ["FreeBodyDiagram", "DrawnArrow", "free_body_diagram", "draw_actions", "NEGLIGIBLE"]
 
 _PLANE_TOL = 1e-9   # |z| / scale below which a point or a force is in the plane z = 0
+#: a force below NEGLIGIBLE * (scale * length), a moment below NEGLIGIBLE * (scale *
+#: length^2), is rounding noise (the moment of a pivot's action at its point): not drawn
+NEGLIGIBLE = 1e-9
+
+
+@dataclass(frozen=True)
+class DrawnArrow:
+    """A straight arrow of a diagram: its name, its artist, its tail and its vector (data
+    units: the force divided by the scale)."""
+
+    name: str
+    artist: object
+    tail: np.ndarray
+    vector: np.ndarray
 
 
 @dataclass
@@ -47,8 +61,8 @@ class FreeBodyDiagram:
         2 or 3.
     scale : float or None
         Force per unit of length of the arrows of known forces (None: no known force).
-    arrows : list of (str, artist)
-        The straight arrows of forces, with their names.
+    arrows : list of DrawnArrow
+        The straight arrows of forces, with their names, tails and vectors.
     couples : list of (str, list of artists)
         The couples (curved or double arrows), with their names.
     labels : list of matplotlib Text
@@ -139,7 +153,7 @@ class _Painter:
 
     def arrow(self, name, tail, vec, color, label):
         art = _arrows.force_arrow(self.d.ax, tail, vec, dim=self.d.dim, color=color)
-        self.d.arrows.append((name, art))
+        self.d.arrows.append(DrawnArrow(name, art, np.array(tail), np.array(vec)))
         self.tips += [tail, tail + vec]
         if label:
             self.text(tail + vec, label, color)
@@ -153,6 +167,11 @@ class _Painter:
         if label:
             self.text(at + np.array([r, r, 0.0]) * 0.8, label, color)
 
+    def visible(self, v, power=1):
+        """Whether ``v`` (a force, or a moment with ``power`` 2) is above rounding noise."""
+        ref = (self.d.scale or 0.0) * self.length**power
+        return float(np.linalg.norm(v)) > NEGLIGIBLE * ref and np.any(v != 0)
+
     def vector(self, force):
         n = float(np.linalg.norm(force))
         if self.d.scale is None:
@@ -163,12 +182,12 @@ class _Painter:
         colour = _arrows.COLOURS["given"]
         if a.kind == "couple":
             m = a.moment if self.d.dim == 3 else np.array([0.0, 0.0, a.moment[2]])
-            if np.linalg.norm(m) > 0:
+            if self.visible(m, 2):
                 value = np.linalg.norm(m) if self.d.dim == 3 else m[2]
                 self.couple(a.label, a.point, m, colour,
                             f"{a.label} = {_fmt(value)}" if self.show else a.label)
             return
-        if np.linalg.norm(a.force) > 0:
+        if self.visible(a.force):
             self.arrow(a.label, a.point, self.vector(a.force), colour,
                        f"{a.label} = {_fmt(np.linalg.norm(a.force))}" if self.show
                        else a.label)
@@ -182,14 +201,14 @@ class _Painter:
             moments = [c for c in comps if c.kind == "moment"]
             text = ", ".join(f"{c.name} = {_fmt(c.value)}" for c in forces)
             f = a.force if self.d.dim == 3 else np.array([a.force[0], a.force[1], 0.0])
-            if np.linalg.norm(f) > 0:
+            if self.visible(f):
                 vec = self.vector(f)
                 arrow_length = float(np.linalg.norm(vec))
                 self.arrow(a.label, a.point, vec, colour, text if self.show else a.label)
             elif forces:
                 self.text(a.point, text if self.show else a.label, colour)
             m = a.moment if self.d.dim == 3 else np.array([0.0, 0.0, a.moment[2]])
-            if moments and np.linalg.norm(m) > 0:
+            if moments and self.visible(m, 2):
                 mtext = ", ".join(f"{c.name} = {_fmt(c.value)}" for c in moments)
                 self.couple(a.label, a.point, m, colour, mtext if self.show else a.label)
         else:
@@ -206,8 +225,8 @@ class _Painter:
         if a.cone is not None:
             lines, edge = _arrows.cone_lines(
                 self.d.ax, a.point, a.cone.normal, a.cone.half_angle,
-                1.3 * max(arrow_length, 0.3 * self.length), dim=self.d.dim, side=a.cone.side,
-                on_edge=a.cone.status == "edge")
+                1.3 * max(arrow_length, 0.3 * self.length), dim=self.d.dim,
+                side=a.cone.side, on_edge=a.cone.status == "edge")
             self.d.cones.append((a.label, lines, edge))
 
 
