@@ -360,7 +360,12 @@ def _state_vector(given, coords, argument, default):
         by_name = {}
         for k, v in given.items():
             by_name[k if isinstance(k, str) else k.func.__name__] = v
-        missing = [c.func.__name__ for c in coords if c.func.__name__ not in by_name]
+        names = [c.func.__name__ for c in coords]
+        extra = sorted(set(by_name) - set(names))
+        if extra:
+            raise ArgumentError(f"`{argument}`: {extra} name no coordinate of the diagram; "
+                                f"expected some of {names}.")
+        missing = [n for n in names if n not in by_name]
         if missing and default is None:
             raise ArgumentError(f"`{argument}` must give a value for {missing}; got "
                                 f"{sorted(by_name)}.")

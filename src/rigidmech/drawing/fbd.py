@@ -200,16 +200,19 @@ class _Painter:
             forces = [c for c in comps if c.kind == "force"]
             moments = [c for c in comps if c.kind == "moment"]
             text = ", ".join(f"{c.name} = {_fmt(c.value)}" for c in forces)
+            mtext = ", ".join(f"{c.name} = {_fmt(c.value)}" for c in moments)
+            m = a.moment if self.d.dim == 3 else np.array([0.0, 0.0, a.moment[2]])
+            couple = bool(moments) and self.visible(m, 2)
+            if mtext and not couple:       # a zero moment: its value beside the forces'
+                text = ", ".join(x for x in (text, mtext) if x)
             f = a.force if self.d.dim == 3 else np.array([a.force[0], a.force[1], 0.0])
             if self.visible(f):
                 vec = self.vector(f)
                 arrow_length = float(np.linalg.norm(vec))
                 self.arrow(a.label, a.point, vec, colour, text if self.show else a.label)
-            elif forces:
+            elif text:
                 self.text(a.point, text if self.show else a.label, colour)
-            m = a.moment if self.d.dim == 3 else np.array([0.0, 0.0, a.moment[2]])
-            if moments and self.visible(m, 2):
-                mtext = ", ".join(f"{c.name} = {_fmt(c.value)}" for c in moments)
+            if couple:
                 self.couple(a.label, a.point, m, colour, mtext if self.show else a.label)
         else:
             for c in comps:
