@@ -1,9 +1,30 @@
-"""Drawings of systems and free-body diagrams (book, ch. 13-14)."""
+"""Pictures of a system (book, ch. 13, 20, 25): bodies by their shapes, frames, connections.
 
-from .fbd import FreeBodyDiagram, draw_actions, free_body_diagram
-from .fbd_actions import Component, Cone, ExternalAction, external_actions, limiting_values
-from .fbd_motion import FreeBodyMotion, free_body_motion
+The numeric core: :class:`Placer` / :func:`place` evaluate a system at a state into
+positions and rotation matrices (:class:`Placement`); :class:`View` maps them onto a plane
+or into space; :func:`draw_body` draws one body by its shape.
 
-__all__ = ["Component", "Cone", "ExternalAction", "external_actions", "limiting_values",
-           "FreeBodyDiagram", "free_body_diagram", "draw_actions", "FreeBodyMotion",
-           "free_body_motion"]
+Free-body diagrams (ch. 13-14): :func:`free_body_diagram` draws a body or a set of bodies
+isolated with the actions exerted on it (:func:`external_actions` gives them in numbers);
+:func:`free_body_motion` draws them along a simulation.
+"""
+
+from .bodies import View, draw_body, is_3d, shape_mesh
+from .placement import Placement, Placer, connection_point, place
+
+__all__ = ["Placer", "Placement", "place", "connection_point", "View", "draw_body",
+           "shape_mesh", "is_3d"]
+
+from .fbd import FreeBodyDiagram, draw_actions, free_body_diagram  # noqa: E402
+from .fbd_actions import (  # noqa: E402
+    Component,
+    Cone,
+    ExternalAction,
+    external_actions,
+    limiting_values,
+)
+from .fbd_motion import FreeBodyMotion, free_body_motion  # noqa: E402
+
+__all__ += ["Component", "Cone", "ExternalAction", "external_actions", "limiting_values",
+            "FreeBodyDiagram", "free_body_diagram", "draw_actions", "FreeBodyMotion",
+            "free_body_motion"]

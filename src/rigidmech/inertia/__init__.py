@@ -41,10 +41,12 @@ from .catalogue import (
 from .composite import MassProperties, Part, composite, mass_properties
 from .operator import InertiaOperator
 from .principal import PrincipalAxes, principal_axes
+from .shapes import SHAPE_DIMENSIONS, Shape
 
 __all__ = [
     "InertiaOperator", "PrincipalAxes", "principal_axes",
     "rod", "ring", "disk", "cylinder", "tube", "hollow_cylinder", "cylindrical_shell",
     "cone", "sphere", "spherical_shell", "block", "rectangular_plate", "ellipsoid",
     "hemisphere", "point_mass", "Part", "MassProperties", "composite", "mass_properties",
+    "Shape", "SHAPE_DIMENSIONS",
 ]

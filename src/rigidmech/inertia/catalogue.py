@@ -39,6 +39,7 @@ from .._core.errors import ArgumentError, ArgumentTypeError
 from ..vectors import Vector
 from ._checks import check_frame, nonnegative
 from .operator import UNPLACED, InertiaOperator
+from .shapes import Shape
 
 __all__ = [
     "rod", "ring", "disk", "cylinder", "tube", "hollow_cylinder", "cylindrical_shell",
@@ -67,19 +68,21 @@ def _axis(axis):
     )
 
 
-def _revolution(axis, axial, transverse, centre):
+def _revolution(axis, axial, transverse, centre, shape):
     frame, n = _axis(axis)
     moments = [transverse] * 3
     moments[n] = axial
-    return _central(InertiaOperator.from_products(*moments, frame=frame, at=centre), centre)
+    return _central(InertiaOperator.from_products(*moments, frame=frame, at=centre), centre,
+                    Shape(shape[0], shape[1:], axis=axis))
 
 
-def _central(op, centre):
+def _central(op, centre, shape):
     """Mark a catalogue operator as taken at the body's mass centre (see
     :meth:`InertiaOperator.placed_at`): at the given ``centre``, or, without one, at the
-    frame's origin until a body places it at its own mass centre."""
+    frame's origin until a body places it at its own mass centre; tag it with its
+    :class:`~rigidmech.inertia.Shape`."""
     return InertiaOperator._make(op.matrix, op.frame, op.at,
-                                 central=True if centre is not None else UNPLACED)
+                                 central=True if centre is not None else UNPLACED, shape=shape)
 
 
 def rod(mass, length, *, axis, centre=None) -> InertiaOperator:
@@ -121,7 +124,7 @@ def rod(mass, length, *, axis, centre=None) -> InertiaOperator:
     rigidmech._core.errors.ArgumentError: `mass` must be >= 0; got -1.
     """
     m, L = nonnegative(mass, "mass"), nonnegative(length, "length")
-    return _revolution(axis, sp.S.Zero, m * L**2 / 12, centre)
+    return _revolution(axis, sp.S.Zero, m * L**2 / 12, centre, ("rod", L))
 
 
 def ring(mass, radius, *, axis, centre=None) -> InertiaOperator:
@@ -137,7 +140,7 @@ def ring(mass, radius, *, axis, centre=None) -> InertiaOperator:
     Matrix([[9, 9, 18]])
     """
     m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
-    return _revolution(axis, m * R**2, m * R**2 / 2, centre)
+    return _revolution(axis, m * R**2, m * R**2 / 2, centre, ("ring", R))
 
 
 def disk(mass, radius, *, axis, centre=None) -> InertiaOperator:
@@ -155,7 +158,7 @@ def disk(mass, radius, *, axis, centre=None) -> InertiaOperator:
     Matrix([[R**2*m/4, R**2*m/4, R**2*m/2]])
     """
     m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
-    return _revolution(axis, m * R**2 / 2, m * R**2 / 4, centre)
+    return _revolution(axis, m * R**2 / 2, m * R**2 / 4, centre, ("disk", R))
 
 
 def cylinder(mass, radius, length, *, axis, centre=None) -> InertiaOperator:
@@ -174,7 +177,8 @@ def cylinder(mass, radius, length, *, axis, centre=None) -> InertiaOperator:
     """
     m, R, L = (nonnegative(x, n) for x, n in ((mass, "mass"), (radius, "radius"),
                                                (length, "length")))
-    return _revolution(axis, m * R**2 / 2, m * (3 * R**2 + L**2) / 12, centre)
+    return _revolution(axis, m * R**2 / 2, m * (3 * R**2 + L**2) / 12, centre,
+                       ("cylinder", R, L))
 
 
 def tube(mass, r_in, r_out, length, *, axis, centre=None) -> InertiaOperator:
@@ -200,7 +204,7 @@ def tube(mass, r_in, r_out, length, *, axis, centre=None) -> InertiaOperator:
     if (r2 - r1).is_negative:
         raise ArgumentError(f"`r_in` must be <= `r_out`; got r_in={r_in} and r_out={r_out}.")
     s = r1**2 + r2**2
-    return _revolution(axis, m * s / 2, m * (3 * s + L**2) / 12, centre)
+    return _revolution(axis, m * s / 2, m * (3 * s + L**2) / 12, centre, ("tube", r1, r2, L))
 
 
 hollow_cylinder = tube
@@ -221,7 +225,8 @@ def cylindrical_shell(mass, radius, length, *, axis, centre=None) -> InertiaOper
     """
     m, R, L = (nonnegative(x, n) for x, n in ((mass, "mass"), (radius, "radius"),
                                                (length, "length")))
-    return _revolution(axis, m * R**2, m * (6 * R**2 + L**2) / 12, centre)
+    return _revolution(axis, m * R**2, m * (6 * R**2 + L**2) / 12, centre,
+                       ("cylindrical_shell", R, L))
 
 
 def cone(mass, radius, height, *, axis, centre=None) -> InertiaOperator:
@@ -241,7 +246,8 @@ def cone(mass, radius, height, *, axis, centre=None) -> InertiaOperator:
     """
     m, R, h = (nonnegative(x, n) for x, n in ((mass, "mass"), (radius, "radius"),
                                                (height, "height")))
-    return _revolution(axis, _R(3, 10) * m * R**2, _R(3, 80) * m * (4 * R**2 + h**2), centre)
+    return _revolution(axis, _R(3, 10) * m * R**2, _R(3, 80) * m * (4 * R**2 + h**2), centre,
+                       ("cone", R, h))
 
 
 def sphere(mass, radius, *, frame, centre=None) -> InertiaOperator:
@@ -258,7 +264,8 @@ def sphere(mass, radius, *, frame, centre=None) -> InertiaOperator:
     """
     check_frame(frame, "frame")
     m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
-    return _revolution(frame.k, _R(2, 5) * m * R**2, _R(2, 5) * m * R**2, centre)
+    return _central(_revolution(frame.k, _R(2, 5) * m * R**2, _R(2, 5) * m * R**2, centre,
+                                ("disk", R)), centre, Shape("sphere", [R], frame=frame))
 
 
 def spherical_shell(mass, radius, *, frame, centre=None) -> InertiaOperator:
@@ -272,7 +279,8 @@ def spherical_shell(mass, radius, *, frame, centre=None) -> InertiaOperator:
     """
     check_frame(frame, "frame")
     m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
-    return _revolution(frame.k, _R(2, 3) * m * R**2, _R(2, 3) * m * R**2, centre)
+    return _central(_revolution(frame.k, _R(2, 3) * m * R**2, _R(2, 3) * m * R**2, centre,
+                                ("disk", R)), centre, Shape("spherical_shell", [R], frame=frame))
 
 
 def block(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
@@ -294,7 +302,7 @@ def block(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
                                                   (c, "c")))
     return _central(centre=centre, op=InertiaOperator.from_products(
         m * (b**2 + c**2) / 12, m * (c**2 + a**2) / 12, m * (a**2 + b**2) / 12, frame=frame,
-        at=centre))
+        at=centre), shape=Shape("block", [a, b, c], frame=frame))
 
 
 def rectangular_plate(mass, a, b, *, frame, centre=None) -> InertiaOperator:
@@ -329,7 +337,7 @@ def ellipsoid(mass, a, b, c, *, frame, centre=None) -> InertiaOperator:
                                                   (c, "c")))
     return _central(centre=centre, op=InertiaOperator.from_products(
         m * (b**2 + c**2) / 5, m * (c**2 + a**2) / 5, m * (a**2 + b**2) / 5, frame=frame,
-        at=centre))
+        at=centre), shape=Shape("ellipsoid", [a, b, c], frame=frame))
 
 
 def hemisphere(mass, radius, *, axis, centre=None) -> InertiaOperator:
@@ -348,7 +356,8 @@ def hemisphere(mass, radius, *, axis, centre=None) -> InertiaOperator:
     Matrix([[83*R**2*m/320, 83*R**2*m/320, 2*R**2*m/5]])
     """
     m, R = nonnegative(mass, "mass"), nonnegative(radius, "radius")
-    return _revolution(axis, _R(2, 5) * m * R**2, _R(83, 320) * m * R**2, centre)
+    return _revolution(axis, _R(2, 5) * m * R**2, _R(83, 320) * m * R**2, centre,
+                       ("hemisphere", R))
 
 
 def point_mass(mass, *, frame, centre=None) -> InertiaOperator:
@@ -367,4 +376,5 @@ def point_mass(mass, *, frame, centre=None) -> InertiaOperator:
     """
     check_frame(frame, "frame")
     nonnegative(mass, "mass")
-    return _central(InertiaOperator.from_products(0, 0, 0, frame=frame, at=centre), centre)
+    return _central(InertiaOperator.from_products(0, 0, 0, frame=frame, at=centre), centre,
+                    Shape("point_mass", frame=frame))

@@ -145,7 +145,7 @@ class InertiaOperator:
     A*R0.i - F*R0.j
     """
 
-    __slots__ = ("_matrix", "_frame", "_at", "_hash", "_central")
+    __slots__ = ("_matrix", "_frame", "_at", "_hash", "_central", "_shape")
 
     def __init__(self, *args, **kwargs):
         raise TypeError(
@@ -155,8 +155,9 @@ class InertiaOperator:
         )
 
     @classmethod
-    def _make(cls, matrix, frame, at, central=False):
+    def _make(cls, matrix, frame, at, central=False, shape=None):
         obj = object.__new__(cls)
+        obj._shape = shape
         obj._matrix = matrix
         obj._frame = frame
         obj._at = at
@@ -302,6 +303,25 @@ class InertiaOperator:
         return bool(self._central)
 
     @property
+    def shape(self):
+        """The :class:`~rigidmech.inertia.Shape` of the homogeneous body of the catalogue
+        this operator is (ch. 15.5), or None (an operator given by its moments, a sum, an
+        operator moved by Huygens). Kept by :meth:`placed_at`, :meth:`in_basis`,
+        :meth:`subs` and :meth:`simplify`; not part of ``==``.
+
+        Examples
+        --------
+        >>> from rigidmech.inertia import rod
+        >>> from rigidmech.vectors import Frame
+        >>> R1 = Frame("R1")
+        >>> rod(1, 2, axis=R1.i).shape.kind
+        'rod'
+        >>> InertiaOperator.from_products(1, 1, 1, frame=R1).shape is None
+        True
+        """
+        return self._shape
+
+    @property
     def is_placed(self) -> bool:
         """False only for a catalogue operator built without ``centre=``: central, but its
         point (the origin of its frame) is a default that a
@@ -344,7 +364,7 @@ class InertiaOperator:
                 f"this one is at {self._at.name}. Use moved(to, mass=, centre=) (Huygens)."
             )
         check_same_tree(self._frame, centre, "centre")
-        return InertiaOperator._make(self._matrix, self._frame, centre, True)
+        return InertiaOperator._make(self._matrix, self._frame, centre, True, self._shape)
 
     @property
     def at(self) -> Point:
@@ -456,7 +476,7 @@ class InertiaOperator:
                 P = sp.ImmutableMatrix(value)
                 full = P.T * J * P
                 J = _sym([[full[r, c] for c in range(3)] for r in range(3)])
-        return InertiaOperator._make(J, frame, self._at, self._central)
+        return InertiaOperator._make(J, frame, self._at, self._central, self._shape)
 
     def moved(self, to: Point, *, mass, centre: Point) -> InertiaOperator:
         """The operator at ``to``, by the relations of Huygens (ch. 15.2.1-15.2.2).
@@ -620,7 +640,9 @@ class InertiaOperator:
         """
         return InertiaOperator._make(self._matrix.subs(*args, **kwargs),
                                      self._frame.subs(*args, **kwargs),
-                                     self._at.subs(*args, **kwargs), self._central)
+                                     self._at.subs(*args, **kwargs), self._central,
+                                     None if self._shape is None
+                                     else self._shape.subs(*args, **kwargs))
 
     def simplify(self) -> InertiaOperator:
         """The operator with simplified entries (never done unless asked).
@@ -635,7 +657,7 @@ class InertiaOperator:
         1
         """
         return InertiaOperator._make(self._matrix.applyfunc(sp.simplify), self._frame,
-                                     self._at, self._central)
+                                     self._at, self._central, self._shape)
 
     def is_close(self, other, *, rtol=1e-9, atol=0.0) -> bool:
         """Numeric closeness of the matrices (in this operator's basis) and of the points.

@@ -201,6 +201,24 @@ class Body(Solid):
         """The operator of inertia at G in the body's basis (None for a particle)."""
         return self._inertia
 
+    @property
+    def shape(self):
+        """The :class:`~rigidmech.inertia.Shape` of the body when its operator of inertia
+        comes from the catalogue (a rod, a disk, a block...: ch. 15.5), centred on its mass
+        centre; None otherwise (an operator given by its moments, a particle, a massless
+        link). :mod:`rigidmech.drawing` draws a body by its shape.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R1 = rm.Frame("R1")
+        >>> Body("bar", frame=R1, mass=1, inertia=rm.inertia.rod(1, 2, axis=R1.i)).shape
+        Shape('rod', length=2, axis=R1.i)
+        >>> Body("b", frame=R1, mass=1).shape is None
+        True
+        """
+        return None if self._inertia is None else self._inertia.shape
+
     def _angular_momentum_at_centre(self, w: Vector) -> Vector:
         if self._inertia is None:
             return Vector.zero()
