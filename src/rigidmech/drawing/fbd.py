@@ -20,14 +20,16 @@ per unit of length) shown by the force-scale key.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError
 from . import arrows as _arrows
 from ._fbd_sources import Source, plan, state_numbers
-from .fbd_actions import _build
+from .bodies import View, draw_body
+from .fbd_actions import _build, _frozen
+from .placement import Placer
 
 __all__ = ["FreeBodyDiagram", "DrawnArrow", "free_body_diagram", "draw_actions", "NEGLIGIBLE"]
 
@@ -57,12 +59,14 @@ class FreeBodyDiagram:
     ----------
     ax : matplotlib Axes
     actions : tuple of ExternalAction
+        The actions, in the reference's basis.
     dim : int
         2 or 3.
     scale : float or None
         Force per unit of length of the arrows of known forces (None: no known force).
     arrows : list of DrawnArrow
-        The straight arrows of forces, with their names, tails and vectors.
+        The straight arrows of forces, with their names, tails and vectors in the view's
+        coordinates (``view.rows @`` the reference's components).
     couples : list of (str, list of artists)
         The couples (curved or double arrows), with their names.
     labels : list of matplotlib Text
@@ -71,17 +75,25 @@ class FreeBodyDiagram:
         The friction cones by contact label, with their highlighted edge.
     key : list of artists
         The force-scale key.
+    view : View
+        How the reference's coordinates map to the axes (:class:`View`): for a System at a
+        state, the view of its placement (gravity down the page); otherwise the reference's
+        own axes.
+    bodies : list of artists
+        The isolated bodies.
     """
 
     ax: object
     actions: tuple
     dim: int
     scale: float | None
+    view: object = None
     arrows: list = field(default_factory=list)
     couples: list = field(default_factory=list)
     labels: list = field(default_factory=list)
     cones: list = field(default_factory=list)
     key: list = field(default_factory=list)
+    bodies: list = field(default_factory=list)
 
     @property
     def figure(self):
@@ -97,6 +109,24 @@ class FreeBodyDiagram:
 def _fmt(v):
     s = f"{v:.3g}"
     return "0" if s in ("-0", "0", "-0.0") else s
+
+
+def rotated(actions, rows):
+    """``actions`` with every vector in the coordinates of the basis ``rows`` (a rotation:
+    moments turn as vectors)."""
+    R = np.asarray(rows, dtype=float)
+
+    def rot(v):
+        return None if v is None else _frozen(R @ v)
+
+    out = []
+    for a in actions:
+        comps = tuple(replace(c, direction=rot(c.direction)) for c in a.components)
+        cone = None if a.cone is None else replace(a.cone, normal=rot(a.cone.normal),
+                                                   side=rot(a.cone.side))
+        out.append(replace(a, point=rot(a.point), force=rot(a.force), moment=rot(a.moment),
+                           components=comps, cone=cone))
+    return tuple(out)
 
 
 def planar(actions) -> bool:
@@ -122,8 +152,10 @@ def _in_view(direction, kind, dim):
     return abs(float(direction[2])) > _PLANE_TOL
 
 
-def _extent(actions, extra=()):
-    pts = [a.point for a in actions] + list(extra)
+def _extent(actions, placement=None):
+    pts = [a.point for a in actions]
+    if placement is not None:
+        pts += list(placement.extent())
     if not pts:
         return 1.0
     size = float(np.ptp(np.array(pts), axis=0).max())
@@ -234,10 +266,12 @@ class _Painter:
 
 
 def draw_actions(ax, actions, *, dim=2, scale=None, length=1.0, show_values=True,
-                 key=True, unit="N") -> FreeBodyDiagram:
+                 key=True, unit="N", view=None) -> FreeBodyDiagram:
     """Draw ``actions`` (:class:`ExternalAction`) on ``ax`` at ``scale`` (force per unit of
     length; None: every arrow 0.35 ``length`` long) and return the diagram (no body is
-    drawn). ``length`` is the size of the diagram (the spread of the points).
+    drawn). ``length`` is the size of the diagram (the spread of the points); ``view`` (a
+    :class:`View`) maps the reference's coordinates to the axes (default: the reference's
+    own x, y, z).
 
     Examples
     --------
@@ -257,22 +291,31 @@ def draw_actions(ax, actions, *, dim=2, scale=None, length=1.0, show_values=True
     (2, ['N_A = 10', 'F = 10'])
     >>> plt.close(fig)
     """
-    diagram = FreeBodyDiagram(ax, tuple(actions), dim, scale)
+    view = View(np.eye(3), dim) if view is None else view
+    diagram = FreeBodyDiagram(ax, tuple(actions), dim, scale, view)
     painter = _Painter(diagram, length, show_values)
-    for a in diagram.actions:
+    seen = rotated(diagram.actions, view.rows)
+    for a in seen:
         if a.kind in ("connection", "contact", "rolling"):
             painter.connection(a)
         else:
             painter.given(a)
-    _limits(ax, [a.point for a in diagram.actions] + painter.tips, dim, length)
+    _limits(ax, [a.point for a in seen] + painter.tips, dim, length)
     if key and scale is not None:
         diagram.key, _ = _arrows.scale_key(ax, scale, 0.25 * length, dim=dim, unit=unit)
     return diagram
 
 
-def _limits(ax, points, dim, length):
+def _limits(ax, points, dim, length, *, with_data=True):
+    """Limits holding ``points`` with a margin of a quarter of ``length`` and, in 2D with
+    ``with_data``, everything already drawn (the bodies by their shapes)."""
     pts = np.array(points, dtype=float).reshape(-1, 3)
     lo, hi = pts.min(axis=0) - 0.25 * length, pts.max(axis=0) + 0.25 * length
+    if dim == 2 and with_data:
+        box = ax.dataLim
+        if np.all(np.isfinite([box.x0, box.x1, box.y0, box.y1])):
+            lo[:2] = np.minimum(lo[:2], [box.x0 - 0.1 * length, box.y0 - 0.1 * length])
+            hi[:2] = np.maximum(hi[:2], [box.x1 + 0.1 * length, box.y1 + 0.1 * length])
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     if dim == 3:
@@ -280,6 +323,7 @@ def _limits(ax, points, dim, length):
         ax.set_box_aspect(hi - lo)
     else:
         ax.set_aspect("equal")
+    return lo, hi
 
 
 def _axes(ax, dim):
@@ -384,31 +428,63 @@ def free_body_diagram(system, bodies, *, q=None, u=None, t=0.0, params=None,
     items = plan(source, equilibrium=equilibrium, values=values, dynamic=dynamic)
     numbers = state_numbers(source, items, q=q, u=u, t=t, params=params)
     actions = _build(items, numbers)
-    dim = _check_dim(dim, actions)
     scale = _check_scale(scale)
+    placement = None
+    if source.dynamics is not None and (q is not None or not source.dynamics.coordinates):
+        placement = Placer(source.dynamics, params).at([] if q is None else q, t)
+    view, dim = _view(placement, actions, dim)
     ax = _axes(ax, dim)
-    length = _extent(actions)
+    length = _extent(actions, placement)
     if scale is None:
         scale = _default_scale([actions], length)
-    _draw_isolated(ax, actions, dim, length)
-    return draw_actions(ax, actions, dim=dim, scale=scale, length=length,
-                        show_values=show_values, key=key, unit=unit)
+    drawn = _draw_bodies(ax, source.bodies, placement, view, actions, length)
+    d = draw_actions(ax, actions, dim=dim, scale=scale, length=length,
+                     show_values=show_values, key=key, unit=unit, view=view)
+    d.bodies = drawn
+    return d
+
+
+def _view(placement, actions, dim):
+    """The View (and dim) of a diagram: that of the placement when there is one (its plane,
+    gravity down), the reference's axes otherwise; planar means the actions too lie in the
+    view's plane."""
+    if dim is not None and dim not in (2, 3):
+        raise ArgumentError(f"`dim` must be 2, 3 or None (chosen from the system); got {dim!r}.")
+    if placement is None:
+        dim = _check_dim(dim, actions)
+        return View(np.eye(3), dim), dim
+    view = View.of(placement, dim)
+    seen = rotated(actions, view.rows)
+    if view.dim == 2 and not planar(seen):
+        if dim == 2:
+            raise ArgumentError(
+                "`dim` = 2 needs a planar diagram (points in the plane, forces in it, moments "
+                "normal to it); got out-of-plane actions. Pass dim=3 or None.")
+        view = View.of(placement, 3)
+    return view, view.dim
+
+
+def _draw_bodies(ax, bodies, placement, view, actions, length):
+    if placement is None:
+        return _draw_isolated(ax, actions, view.dim, length)
+    return [a for b in bodies for a in draw_body(ax, b, placement, view, color="0.75",
+                                                 zorder=1)]
 
 
 def _draw_isolated(ax, actions, dim, length):
-    """The isolated set, drawn minimally: the outline of the points where the actions are
-    exerted (a plate through them, or a small square around a single point)."""
+    """The isolated set of a Statics or a Mechanism (no placement to draw its bodies by
+    their shapes), drawn minimally: a bar through the points where the actions are exerted,
+    or a small square around a single point."""
     pts = np.unique(np.round(np.array([a.point for a in actions]), 12), axis=0)
     style = dict(color="0.85", zorder=1)
     if dim == 3:
-        ax.plot(*pts.T, "o-", color="0.6")
-        return
+        return ax.plot(*pts.T, "o-", color="0.6")
     if len(pts) == 1:
         h = 0.1 * length
         x, y = pts[0][:2]
-        ax.fill([x - h, x + h, x + h, x - h], [y - h, y - h, y + h, y + h], **style)
-        return
+        return ax.fill([x - h, x + h, x + h, x - h], [y - h, y - h, y + h, y + h], **style)
     centred = pts[:, :2] - pts[:, :2].mean(axis=0)
     axis = np.linalg.svd(centred)[2][0]
     order = np.argsort(centred @ axis)
-    ax.plot(*pts[order, :2].T, color="0.7", linewidth=6, solid_capstyle="round", zorder=1)
+    return ax.plot(*pts[order, :2].T, color="0.7", linewidth=6, solid_capstyle="round",
+                   zorder=1)

@@ -30,15 +30,17 @@ from ._fbd_sources import Source, motion_numbers, plan
 from .fbd import (
     FreeBodyDiagram,
     _axes,
-    _check_dim,
     _check_scale,
     _default_scale,
-    _draw_isolated,
+    _draw_bodies,
     _extent,
     _limits,
+    _view,
     draw_actions,
+    rotated,
 )
 from .fbd_actions import _build
+from .placement import Placer
 
 __all__ = ["FreeBodyMotion", "free_body_motion"]
 
@@ -57,14 +59,32 @@ class FreeBodyMotion:
         Force per unit of length, the same at every instant.
     dim : int
         2 or 3.
+    view : View
+        How the reference's coordinates map to the axes (that of the first instant).
     """
 
-    def __init__(self, times, actions, scale, dim, length, unit):
+    def __init__(self, times, actions, scale, view, length, unit, placements, bodies):
         self.times = np.asarray(times, dtype=float)
         self.actions = tuple(actions)
-        self.scale, self.dim, self._length, self._unit = scale, dim, length, unit
-        pts = [a.point for acts in self.actions for a in acts]
-        self._points = pts
+        self.scale, self.view, self._length, self._unit = scale, view, length, unit
+        self.dim = view.dim
+        self._placements, self._bodies = tuple(placements), tuple(bodies)
+        seen = [rotated(acts, view.rows) for acts in self.actions]
+        self._points = [a.point for acts in seen for a in acts] + _tips(
+            seen, scale, length) + [view.rows @ c for p in self._placements
+                                    for c in p.extent()]
+        self._box = self._whole_box()
+
+    def _whole_box(self):
+        """The limits of every instant (bodies drawn by their shapes on a scratch figure):
+        the same at every frame of an animation."""
+        from matplotlib.figure import Figure
+
+        ax = Figure().add_subplot(projection="3d" if self.dim == 3 else None)
+        for k, acts in enumerate(self.actions):
+            _draw_bodies(ax, self._bodies, self._placements[k], self.view, acts,
+                         self._length)
+        return _limits(ax, self._points, self.dim, self._length)
 
     def _instant(self, instant):
         if isinstance(instant, bool) or not isinstance(instant, int | np.integer):
@@ -88,11 +108,12 @@ class FreeBodyMotion:
         k = self._instant(instant)
         ax = _axes(ax, self.dim)
         acts = self.actions[k]
-        _draw_isolated(ax, acts, self.dim, self._length)
+        drawn = _draw_bodies(ax, self._bodies, self._placements[k], self.view, acts,
+                             self._length)
         d = draw_actions(ax, acts, dim=self.dim, scale=self.scale, length=self._length,
-                         show_values=show_values, key=False, unit=self._unit)
-        _limits(ax, self._points + _tips(self.actions, self.scale, self._length), self.dim,
-                self._length)
+                         show_values=show_values, key=False, unit=self._unit, view=self.view)
+        d.bodies = drawn
+        _limits(ax, list(self._box), self.dim, 0.0, with_data=False)
         if key and self.scale is not None:
             from .arrows import scale_key
 
@@ -195,18 +216,27 @@ def free_body_motion(simulation, bodies, *, times=None, system=None, dim=None, s
             raise ArgumentError("`system` is needed: these equations were not derived by "
                                 "System.equations_of_motion(); pass system=... .")
     source = Source(system, bodies)
+    if source.dynamics is None:
+        raise ArgumentTypeError(
+            f"`system` must be the dynamics System of the simulation; got "
+            f"{type(system).__name__}.")
     items = plan(source, dynamic=True)
     numbers, link_numbers = motion_numbers(simulation, source, items)
     indices = _indices(simulation.t, times)
     actions = [_build(items, lambda e, k=k: numbers(e, k),
                       lambda it, k=k: link_numbers(it, k)) for k in indices]
-    dims = {_check_dim(dim, acts) for acts in actions}
-    the_dim = 3 if 3 in dims else 2
-    length = _extent([a for acts in actions for a in acts])
+    placer = Placer(source.dynamics, simulation.parameters)
+    placements = [placer.at(simulation.q[:, k], simulation.t[k]) for k in indices]
+    views = [_view(p, acts, dim) for p, acts in zip(placements, actions, strict=True)]
+    view = views[0][0]
+    if any(v.dim == 3 for v, _ in views) and view.dim == 2:
+        view = _view(placements[0], actions[0], 3)[0]
+    length = max(_extent(acts, p) for p, acts in zip(placements, actions, strict=True))
     scale = _check_scale(scale)
     if scale is None:
         scale = _default_scale(actions, length)
-    return FreeBodyMotion(simulation.t[indices], actions, scale, the_dim, length, unit)
+    return FreeBodyMotion(simulation.t[indices], actions, scale, view, length, unit,
+                          placements, source.bodies)
 
 
 def _indices(t, times):
