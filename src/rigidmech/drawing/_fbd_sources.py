@@ -292,13 +292,20 @@ def state_numbers(source, items, *, q, u, t, params):
         subs[c.diff(_t)] = ui
         subs[c] = qi
     symbols = _free_symbols(exprs)
-    dyn = source.dynamics
+    needs_dynamics = source.dynamics is not None and any(it.link is not None for it in items)
+    dyn = source.dynamics if needs_dynamics else None
     if dyn is not None:
-        symbols |= set(dyn.parameters)
+        symbols |= set(dyn.equations_of_motion().parameters)
     subs.update({k: float(v) for k, v in substitutions(params, symbols, "params").items()})
     subs[_t] = float(t)
+    lams = set(dyn.multiplier_symbols()) if dyn is not None else set()
+    missing = sorted(s.name for s in symbols - set(subs) - lams)
+    if missing:
+        raise ArgumentError(
+            f"`params` must give numbers for {missing} to draw the free-body diagram; got "
+            f"{sorted(str(k) for k in (params or {}))}.")
     dynamic = {}
-    if dyn is not None and any(it.link is not None for it in items):
+    if dyn is not None:
         dynamic = _dynamic_state(dyn, coords, qv, uv, float(t), params or {})
 
     def numbers(batch):
