@@ -110,7 +110,8 @@ def test_limiting_equilibrium_on_the_edge_of_the_cone():
     n = contact.cone.normal
     angle = math.acos(contact.force @ n / np.linalg.norm(contact.force))
     assert angle == pytest.approx(math.atan(F_S), rel=1e-7)
-    d = free_body_diagram(st, block.bodies[0], params={"m": M, "g": G, "alpha": lim.value}, values=x)
+    d = free_body_diagram(st, block.bodies[0], params={"m": M, "g": G, "alpha": lim.value},
+                          values=x)
     (label, lines, edge), = d.cones
     assert label == "A" and len(lines) == 2 and edge is not None
 
