@@ -79,6 +79,7 @@ from .systems import Mechanism  # noqa: E402
 __all__ += ["systems", "Mechanism"]
 
 __all__ += ["models"]
+__all__ += ["drawing"]
 
 from ._core.deprecation import deprecated_aliases  # noqa: E402
 
@@ -88,7 +89,7 @@ _deprecated = deprecated_aliases(__name__, {"Contact": ("rigidmech.ContactLaws",
 # lazy: import cost (see docs/performance). These subpackages (and the names taken from them)
 # are imported on first access, by this module ``__getattr__`` (PEP 562): ``rm.statics``,
 # ``rm.Statics``, ``from rigidmech import *`` and ``dir(rm)`` are as if imported eagerly.
-_LAZY_SUBPACKAGES = ("lagrange", "models", "regimes", "scenes", "statics", "testing",
+_LAZY_SUBPACKAGES = ("drawing", "lagrange", "models", "regimes", "scenes", "statics", "testing",
                      "vibrations")
 _LAZY_NAMES = {"Catenary": "statics", "Statics": "statics", "lagrange_equations": "lagrange"}
 

@@ -9,11 +9,16 @@ isolated with the actions exerted on it (:func:`external_actions` gives them in 
 :func:`free_body_motion` draws them along a simulation.
 """
 
+from .animation import animate, sample_motion, save_animation
 from .bodies import View, draw_body, is_3d, shape_mesh
 from .placement import Placement, Placer, connection_point, place
+from .symbols import ConnectionSymbol, connection_kind, draw_connection, draw_frame
+from .system import FIGURE_FORMATS, Drawing, draw
 
 __all__ = ["Placer", "Placement", "place", "connection_point", "View", "draw_body",
-           "shape_mesh", "is_3d"]
+           "shape_mesh", "is_3d", "ConnectionSymbol", "connection_kind", "draw_connection",
+           "draw_frame", "Drawing", "draw", "FIGURE_FORMATS",
+           "animate", "sample_motion", "save_animation"]
 
 from .fbd import FreeBodyDiagram, draw_actions, free_body_diagram  # noqa: E402
 from .fbd_actions import (  # noqa: E402

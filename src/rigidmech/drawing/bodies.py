@@ -301,7 +301,7 @@ def _unshaped(ax, body, placement, view, G, size, color, zorder):
             p = connection_point(link.connection)
             if p is not None:
                 seg = view.project(np.array([placement.point(p), G]))
-                arts += ax.plot(*seg.T, color=_darker(color), lw=2.5, zorder=zorder)
+                arts += ax.plot(*seg.T, color=_darker(color), lw=3.0, zorder=zorder)
     if body.mass is None or body.mass == 0:
         return arts
     if body.inertia is None:     # a particle: a bob
@@ -316,7 +316,7 @@ def _unshaped(ax, body, placement, view, G, size, color, zorder):
     axes = _principal_axes(body, placement)
     at = view.project(G)
     for n in range(3):
-        tip = view.project(G + size * axes[:, n])
+        tip = view.project(G + 2 * size * axes[:, n])
         if view.dim == 2:
             if np.linalg.norm(tip - at) < 0.3 * size:
                 continue

@@ -21,7 +21,9 @@ other moment: ``rigidmech: interrupted``, status 130). Any other failure prints 
 ``--debug`` shows its traceback instead. ``--save PATH`` writes the samples (``.npz`` or
 ``.csv``), ``--samples N`` sets their number, ``--max-steps N`` bounds the solver's steps,
 ``--progress/--no-progress`` shows or hides a progress bar on stderr (default: shown on a
-terminal for runs longer than 2 s).
+terminal for runs longer than 2 s). ``--animate out.gif`` writes an animation of the bodies
+moving (:func:`rigidmech.drawing.animate`, 60 images); the scenes with regime changes and the
+bicycle (a linear analysis) cannot be drawn and are refused before the run.
 
 ``python -m rigidmech modes NAME`` (default ``double-pendulum``) linearises a scene about its
 equilibrium q = 0 and prints M, K and the natural frequencies and mode shapes
@@ -32,6 +34,7 @@ with no equilibrium at q = 0 is refused with one line (status 2).
 from __future__ import annotations
 
 import argparse
+import os
 import re
 import sys
 
@@ -48,6 +51,9 @@ __all__ = ["main", "DEFAULT_SCENE", "scene_names", "COMMANDS"]
 #: The scene ``python -m rigidmech run`` runs when no NAME is given.
 DEFAULT_SCENE = "double-pendulum"
 
+
+#: Number of images of ``run --animate``.
+ANIMATION_FRAMES = 60
 
 #: The commands, in the order of the usage line.
 COMMANDS = ("run", "scenes", "modes")
@@ -160,6 +166,8 @@ def _parser():
     r.add_argument("--u0", type=_floats, metavar="U",
                    help="initial velocities q', comma-separated")
     r.add_argument("--plot", metavar="PATH", help="write a figure there (PNG, PDF, SVG...)")
+    r.add_argument("--animate", metavar="PATH",
+                   help="write an animation of the bodies moving there (GIF, through pillow)")
     r.add_argument("--save", metavar="PATH",
                    help="save the samples there (.npz or .csv, columns t, q, q')")
     r.add_argument("--samples", type=_positive_int, default=None, metavar="N",
@@ -206,6 +214,8 @@ def _run(args, out):
     if args.save is not None:
         check_save_path(args.save, "--save")
     _check_name(args.name)  # unknown scene: fail before anything else
+    if args.animate is not None:
+        _check_animation(args.name, args.animate)
     if args.name == BICYCLE_SCENE.name:  # a linear analysis: no integration
         _run_bicycle(args, out)
         return
@@ -228,6 +238,9 @@ def _run(args, out):
                  progress=args.progress, n_output=args.samples, dense_output=False)
     print(report.summary(pretty=args.pretty), file=out)
     sim = report.simulation
+    if args.animate is not None and sim.t.size > 0:
+        _write_animation(sim, args.animate)
+        print(f"animation: {args.animate}", file=out)
     if report.status == "interrupted":
         stop = sim.t.size > 1 and sim.t[-1] == sim.t_stop   # the state reached, kept
         raise _Interrupted(f"interrupted at t = {sim.t_stop:g} (the samples up to t = "
@@ -237,6 +250,32 @@ def _run(args, out):
     if report.status == "failed":
         raise NumericalError(report.message.rstrip(".")
                              + _outputs(report, "; partial output in "))
+
+
+def _check_animation(name, path):
+    """Refuse, before the run, an animation of a scene that cannot be drawn or a path that
+    cannot be written."""
+    if name == BICYCLE_SCENE.name or name in regime_scene_names():
+        drawable = ", ".join(names())
+        why = ("a linear analysis, with no motion to draw" if name == BICYCLE_SCENE.name
+               else "a motion with regime changes, whose phases are not one system to draw")
+        raise SceneError(f"--animate: scene {name!r} cannot be drawn ({why}); the scenes "
+                         f"that can: {drawable}.")
+    if not str(path).lower().endswith(".gif"):
+        raise _UsageError(f"argument --animate: expected a path ending with .gif; got {path!r}")
+    folder = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(folder):
+        raise _UsageError(f"argument --animate: the folder {folder} does not exist")
+
+
+def _write_animation(sim, path):
+    # imported here, like the pipeline's plots: matplotlib's pyplot only when asked
+    import matplotlib.pyplot as plt
+
+    from ..drawing import animate
+
+    anim = animate(sim, n_frames=ANIMATION_FRAMES, path=path)
+    plt.close(anim._fig)
 
 
 def _outputs(report, lead=", in "):
