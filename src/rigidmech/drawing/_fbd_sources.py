@@ -289,8 +289,8 @@ def state_numbers(source, items, *, q, u, t, params):
     qv = _state_vector(q, coords, "q", default=None)
     uv = _state_vector(u, coords, "u", default=0.0)
     for c, qi, ui in zip(coords, qv, uv, strict=True):
-        subs[c.diff(_t)] = ui
-        subs[c] = qi
+        subs[c.diff(_t)] = sp.Float(float(ui))
+        subs[c] = sp.Float(float(qi))
     symbols = _free_symbols(exprs)
     needs_dynamics = source.dynamics is not None and any(it.link is not None for it in items)
     dyn = source.dynamics if needs_dynamics else None
