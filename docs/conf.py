@@ -68,6 +68,8 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "remove_config_comments": True,
     "min_reported_time": 1,
+    # the animations of rigidmech.drawing.animate, embedded as JavaScript players (no ffmpeg)
+    "matplotlib_animations": (True, "jshtml"),
 }
 
 # -- HTML -----------------------------------------------------------------------------------

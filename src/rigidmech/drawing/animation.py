@@ -1,7 +1,7 @@
 """The bodies of a system moving along a simulated motion: :func:`animate` (book, ch. 27).
 
-The motion is sampled at evenly spaced times (the coordinates interpolated linearly between
-the simulation's samples), the system is drawn at each one with :func:`~rigidmech.drawing.draw`
+The motion is shown at the simulation's samples nearest to evenly spaced times
+(:func:`sample_motion`), the system is drawn at each one with :func:`~rigidmech.drawing.draw`
 in one fixed box, and the frames make a matplotlib ``FuncAnimation``, written as a GIF
 through pillow (or any format matplotlib's writers know).
 """
@@ -43,8 +43,9 @@ def _simulation_parts(sim, system):
 
 
 def sample_motion(sim, n_frames):
-    """(times, coordinates): ``n_frames`` evenly spaced times over the simulation and the
-    coordinates there, linearly interpolated (shape (n, n_frames)).
+    """(times, coordinates) of ``n_frames`` images along a simulation: the samples of the
+    simulation nearest to evenly spaced times over it (the states the solver computed, on
+    the constraints to its tolerance; no interpolation). Coordinates: shape (n, n_frames).
 
     Examples
     --------
@@ -52,7 +53,7 @@ def sample_motion(sim, n_frames):
     >>> x = rm.coordinates("x")
     >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
     ...                            forcing=sp.ImmutableMatrix([[0]]))
-    >>> sim = eqs.simulate(t=(0, 2), q0=[0.0], u0=[1.0])
+    >>> sim = eqs.simulate(t=(0, 2), q0=[0.0], u0=[1.0], n_output=5)
     >>> times, q = sample_motion(sim, 3)
     >>> times.tolist(), q.round(9).tolist()
     ([0.0, 1.0, 2.0], [[0.0, 1.0, 2.0]])
@@ -60,8 +61,12 @@ def sample_motion(sim, n_frames):
     if isinstance(n_frames, bool) or not isinstance(n_frames, int | np.integer) or n_frames < 1:
         raise ArgumentError(f"`n_frames` must be a whole number >= 1; got {n_frames!r}.")
     t, q = np.asarray(sim.t, dtype=float), np.atleast_2d(np.asarray(sim.q, dtype=float))
-    times = np.linspace(t[0], t[-1], int(n_frames))
-    return times, np.array([np.interp(times, t, row) for row in q])
+    wanted = np.linspace(t[0], t[-1], int(n_frames))
+    right = np.clip(np.searchsorted(t, wanted), 1, len(t) - 1) if len(t) > 1 else \
+        np.zeros(len(wanted), dtype=int)
+    left = np.maximum(right - 1, 0)
+    nearest = np.where(np.abs(t[left] - wanted) <= np.abs(t[right] - wanted), left, right)
+    return t[nearest], q[:, nearest]
 
 
 def _coordinates_in_order(sim, placer, q):
@@ -90,7 +95,8 @@ def animate(sim, system=None, *, params=None, n_frames=40, fps=None, path=None, 
     params : dict, optional
         Values of the constants; default the values the simulation was run with.
     n_frames : int, default 40
-        Number of images, at evenly spaced times over the simulation.
+        Number of images, at the samples nearest to evenly spaced times (simulate with
+        ``n_output`` at least this).
     fps : float, optional
         Images per second; default so that the animation lasts as long as the motion (at
         most 30, at least 2).
@@ -127,6 +133,7 @@ def animate(sim, system=None, *, params=None, n_frames=40, fps=None, path=None, 
     >>> anim = animate(sim, n_frames=3)
     >>> len(anim.placements)
     3
+    >>> html = anim.to_jshtml()                 # render it (or anim.save("out.gif"))
     >>> import matplotlib.pyplot as plt; plt.close(anim._fig)
     """
     t, _, system = _simulation_parts(sim, system)
