@@ -16,6 +16,8 @@ N_B L sin(alpha) + T_B L cos(alpha) = W L cos(alpha) / 2, give
 """
 
 import math
+import os
+from pathlib import Path
 
 import matplotlib
 
@@ -125,9 +127,27 @@ def test_the_ground_cannot_be_isolated():
         external_actions(st, [ladder, st.reference], params={**VALUES, "alpha": 1.0})
 
 
+#: the matplotlib the reference images of tests/drawing were made with, and their tolerance
+#: (RMS difference, 0-255 scale), those of test_reference_images
+PINNED = (Path(__file__).resolve().parent / "reference_images" / "MATPLOTLIB_VERSION"
+          ).read_text().strip()
+TOLERANCE = 2.0
+
+
+@pytest.fixture
+def pinned_matplotlib():
+    if matplotlib.__version__ != PINNED:
+        message = (f"the reference images were made with matplotlib {PINNED}; this is "
+                   f"{matplotlib.__version__} (pip install matplotlib=={PINNED})")
+        if os.environ.get("CI"):
+            pytest.fail(message)
+        pytest.skip(message)
+
+
 @pytest.mark.images
+@pytest.mark.usefixtures("pinned_matplotlib")
 @image_comparison(["ladder_at_its_limit"], extensions=["png"], remove_text=True,
-                  style="mpl20", tol=0.5)
+                  style="mpl20", tol=TOLERANCE)
 def test_reference_image(at_limit):
     st, ladder, lim, x = at_limit
     fig, ax = plt.subplots(figsize=(4, 4))
