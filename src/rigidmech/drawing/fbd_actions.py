@@ -77,7 +77,7 @@ class Cone:
         arctan f_s, in radians.
     status : str or None
         Where the action lies when known: ``"inside"``, ``"edge"`` (limiting equilibrium or
-        sliding: | |T| - f_s N | <= CONE_RTOL |R|) or ``"outside"``; None when unknown.
+        sliding: ``abs(|T| - f_s N) <= CONE_RTOL |R|``) or ``"outside"``; None when unknown.
     side : numpy.ndarray or None
         Unit direction of the tangential part of the action (the side of the cone it leans
         on), None when unknown or purely normal.
