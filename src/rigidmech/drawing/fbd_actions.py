@@ -26,11 +26,13 @@ from ..statics import Limit, Statics
 from ..statics.limits import _lp_margin  # the limit's own program (no public equivalent)
 from ._fbd_sources import Source, plan, state_numbers
 
-__all__ = ["Component", "Cone", "ExternalAction", "external_actions", "CONE_RTOL"]
+__all__ = ["Component", "Cone", "ExternalAction", "external_actions", "limiting_values",
+           "CONE_RTOL"]
 
-#: relative tolerance (on |R|) of the decision "the action lies on the edge of its friction
-#: cone": | |T| - f N | <= CONE_RTOL |R| (the limits of :mod:`rigidmech.statics.limits` are
-#: accurate to about 1e-9 relative; a margin above that, far below a visible difference)
+#: relative tolerance (on the magnitude of R) of the decision "the action lies on the edge of
+#: its friction cone": ``abs(|T| - f N) <= CONE_RTOL |R|`` (the limits of
+#: :mod:`rigidmech.statics.limits` are accurate to about 1e-9 relative; a margin above that,
+#: far below a visible difference)
 CONE_RTOL = 1e-6
 
 
