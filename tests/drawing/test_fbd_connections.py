@@ -109,3 +109,23 @@ def test_heavy_top_is_drawn_in_space():
                        atol=1e-9)
     with pytest.raises(rm.errors.ArgumentError, match="`dim` = 2 needs a planar diagram"):
         free_body_diagram(top.system, top.bodies[0], q=q, u=u, params=params, dim=2)
+
+
+def test_a_one_sided_contact_with_friction_of_a_system():
+    """The ball sliding on the floor (FrictionContact at I): its action depends on the
+    regime, so the diagram shows its unknowns (named as rigidmech.regimes names the contact,
+    after its point) and its cone; values given by name (those of
+    ContactMotion.contact_actions) place it in the cone."""
+    ball = models.sliding_ball(mu=0.3)
+    params = {"m": 1.0, "r": 0.1, "g": 9.81}
+    q = [0.0, 0.0, 0.1, 0.0, 0.0, 0.0]
+    acts = external_actions(ball.system, ball.bodies[0], q=q, params=params)
+    contact = next(a for a in acts if a.kind == "contact")
+    assert contact.label == "I" and contact.force is None
+    assert [c.name for c in contact.components] == ["N_I", "T1_I", "T2_I"]
+    assert contact.cone.half_angle == pytest.approx(math.atan(0.3), rel=1e-15)
+    sliding = external_actions(ball.system, ball.bodies[0], q=q, params=params,
+                               values={"N_I": 9.81, "T1_I": -0.3 * 9.81, "T2_I": 0.0})
+    contact = next(a for a in sliding if a.kind == "contact")
+    assert contact.cone.status == "edge"
+    assert np.allclose(contact.force, [-0.3 * 9.81, 0.0, 9.81])

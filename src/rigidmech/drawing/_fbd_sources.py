@@ -91,6 +91,7 @@ class Source:
             self.all_bodies = tuple(graph.bodies)
             links = [_Link(k.first, k.second, k.connection, k.label,
                            *k.connection.action_torsor(k.label)) for k in graph.links]
+            links += _contact_links(self.dynamics)
             solids = list(graph.solids)
             loads = [(None, a) for a in graph.actions]
         else:
@@ -136,6 +137,19 @@ class Source:
                 name = f"{name}{seen[name]}"
             labelled.append((kind, name, torsor))
         return labelled
+
+
+def _contact_links(system):
+    """The one-sided contacts with friction of a dynamics System (not in its graph), labelled
+    as :mod:`rigidmech.regimes` names them: the contact point's name, with the contact's rank
+    appended when that name is taken."""
+    out, names = [], []
+    for k, (parent, child, contact) in enumerate(system.contacts if system else ()):
+        name = contact.contact.point.name
+        name = name if name not in names else f"{name}{k + 1}"
+        names.append(name)
+        out.append(_Link(parent, child, contact, name, *contact.action_torsor(name)))
+    return out
 
 
 def _isolated(bodies, all_bodies):
