@@ -160,3 +160,25 @@ def test_noise_sized_moments_are_not_drawn(factor, drawn):
     st.act(rm.actions.Couple(on=box, moment=moment * R0.k))
     d = free_body_diagram(st, box, equilibrium=eq, scale=d0.scale)
     assert (len(d.couples) == 1) is drawn
+
+
+@pytest.mark.parametrize(("given", "error", "match"), [
+    ({"q": "abc"}, ArgumentTypeError, "`q` must be a sequence of numbers"),
+    ({"q": [np.nan]}, ArgumentError, "`q` must be a finite real number; got nan"),
+    ({"q": [1j]}, ArgumentError, "`q` must be a finite real number"),
+    ({"q": [0.1], "u": "x"}, ArgumentTypeError, "`u` must be a sequence of numbers"),
+    ({"q": [0.1], "params": [1, 2]}, ArgumentTypeError, "`params` must be a dict"),
+    ({"q": [0.1], "params": {**PARAMS, "m": "x"}}, ArgumentError, r"`params\['m'\]` must be "
+                                                                   "a number"),
+    ({"q": [0.1], "params": {**PARAMS, "m": np.nan}}, ArgumentError,
+     r"`params\['m'\]` must be a finite real number"),
+    ({"q": [0.1], "t": "now"}, ArgumentTypeError, "`t` must be a number"),
+    ({"q": [0.1], "values": {"X_1": np.nan}}, ArgumentError,
+     r"`values\['X_1'\]` must be a finite real number"),
+    ({"q": [0.1], "values": [1]}, ArgumentTypeError, "`values` must be a dict"),
+    ({"q": [0.1], "ax": "ax"}, ArgumentTypeError, "`ax` must be a matplotlib Axes"),
+])
+def test_junk_gets_an_error_naming_the_argument(given, error, match):
+    pend = models.compound_pendulum()
+    with pytest.raises(error, match=match):
+        free_body_diagram(pend.system, pend.bodies[0], **{"params": PARAMS, **given})

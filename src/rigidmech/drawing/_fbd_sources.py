@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.validation import substitutions
+from .._core.validation import finite_real, substitutions
 from ..actions import (
     ContactLaws,
     Couple,
@@ -234,13 +234,13 @@ def _values_of(equilibrium, values, unknowns):
                 f"{type(equilibrium).__name__}.")
         known.update(equilibrium.values)
     by_name = {u.name: u for u in unknowns}
-    for key, v in (values or {}).items():
+    for key, v in _mapping(values, "values").items():
         name = key if isinstance(key, str) else getattr(key, "name", None)
         if name not in by_name:
             raise ArgumentError(
                 f"`values`: {key!r} is no unknown of the connections of the isolated set; "
                 f"expected some of {sorted(by_name)}.")
-        known[by_name[name]] = sp.sympify(v)
+        known[by_name[name]] = sp.Float(_number(v, f"values[{name!r}]"))
     return known
 
 
@@ -291,6 +291,23 @@ def plan(source, *, equilibrium=None, values=None, dynamic=False):
     return items
 
 
+def _number(x, argument):
+    """A finite real float for ``argument``, or a clear error."""
+    v = finite_real(x, argument)
+    if not v.is_number:
+        raise ArgumentError(f"`{argument}` must be a number; got {x!r}.")
+    return float(v)
+
+
+def _mapping(x, argument):
+    if x is None:
+        return {}
+    if not isinstance(x, dict):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a dict (values by name or symbol); got {type(x).__name__}.")
+    return x
+
+
 def _free_symbols(exprs):
     return set().union(*(sp.sympify(e).free_symbols for e in exprs)) - {_t}
 
@@ -310,8 +327,10 @@ def state_numbers(source, items, *, q, u, t, params):
     dyn = source.dynamics if needs_dynamics else None
     if dyn is not None:
         symbols |= set(dyn.equations_of_motion().parameters)
-    subs.update({k: float(v) for k, v in substitutions(params, symbols, "params").items()})
-    subs[_t] = float(t)
+    params = _mapping(params, "params")
+    subs.update({k: _number(v, f"params[{k.name!r}]")
+                 for k, v in substitutions(params, symbols, "params").items()})
+    subs[_t] = t = _number(t, "t")
     lams = set(dyn.multiplier_symbols()) if dyn is not None else set()
     missing = sorted(s.name for s in symbols - set(subs) - lams)
     if missing:
@@ -390,8 +409,13 @@ def _state_vector(given, coords, argument, default):
         if missing and default is None:
             raise ArgumentError(f"`{argument}` must give a value for {missing}; got "
                                 f"{sorted(by_name)}.")
-        return np.array([float(by_name.get(c.func.__name__, default)) for c in coords])
-    arr = np.asarray(given, dtype=float).reshape(-1)
+        return np.array([_number(by_name.get(c.func.__name__, default),
+                                 f"{argument}[{c.func.__name__!r}]") for c in coords])
+    if isinstance(given, str | bytes) or not hasattr(given, "__len__"):
+        raise ArgumentTypeError(
+            f"`{argument}` must be a sequence of numbers or a dict by coordinate name; got "
+            f"{type(given).__name__}.")
+    arr = np.array([_number(v, argument) for v in np.asarray(given, dtype=object).reshape(-1)])
     if arr.size != len(coords):
         raise ArgumentError(
             f"`{argument}` must hold {len(coords)} values, one per coordinate "

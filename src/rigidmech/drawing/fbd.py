@@ -332,6 +332,11 @@ def _axes(ax, dim):
     if ax is None:
         fig = plt.figure()
         return fig.add_subplot(projection="3d" if dim == 3 else None)
+    from matplotlib.axes import Axes
+
+    if not isinstance(ax, Axes):
+        raise ArgumentTypeError(f"`ax` must be a matplotlib Axes (or None for a new figure); "
+                                f"got {type(ax).__name__}.")
     is3d = getattr(ax, "name", "") == "3d"
     if is3d != (dim == 3):
         raise ArgumentError(
