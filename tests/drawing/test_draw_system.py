@@ -151,3 +151,24 @@ def test_2d_axes_refused_for_a_spatial_system():
 def test_a_planar_system_drawn_in_3d_on_request():
     d = draw(models.double_pendulum(), [0.6, 1.2], {"L": 1.0}, dim=3)
     assert d.ax.name == "3d" and len(d.connections[1].at) == 3
+
+
+def test_spring_drawn_between_its_end_points():
+    from rigidmech.scenes.catalogue import get
+
+    scene = get("spring-mass")                    # P = (l0 + x, 0, 0), spring from O to P
+    built = scene.build()
+    d = draw(built.system, [0.5], {"l0": 1.0})
+    zigzags = [line for line in d.ax.lines if len(line.get_xdata()) == 19]
+    assert len(zigzags) == 1
+    xy = np.c_[zigzags[0].get_xdata(), zigzags[0].get_ydata()]
+    assert_allclose(xy[[0, -1]], d.view.project(np.array([[0, 0, 0], [1.5, 0, 0]])),
+                    atol=1e-12)
+    assert [c.kind for c in d.connections] == ["slide"]
+
+
+def test_dim_and_placer_checked():
+    with pytest.raises(ArgumentError, match="`dim` must be None, 2 or 3; got 1"):
+        draw(models.double_pendulum(), [0.0, 0.0], {"L": 1.0}, dim=1)
+    with pytest.raises(TypeError, match="`placer` must be a Placer"):
+        draw(models.double_pendulum(), [0.0, 0.0], placer="compiled")

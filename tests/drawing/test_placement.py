@@ -106,3 +106,23 @@ def test_ambiguous_or_unknown_point_name():
     p = place(models.double_pendulum(), [0.0, 0.0], {"L": 1.0})
     with pytest.raises(ArgumentError, match="`point` must name one point"):
         p.point("Z")
+
+
+@pytest.mark.parametrize("rows, dim, match", [
+    pytest.param([[1, 0, 0], [0, 1, 0], [0, 0, 1.001]], 2, "`rows` must be an orthonormal",
+                 id="not-unit"),
+    pytest.param([[1, 0, 0], [0, 1, 0]], 2, "`rows` must be an orthonormal", id="shape"),
+    pytest.param(np.eye(3), 4, "`dim` must be 2 or 3; got 4", id="dim"),
+])
+def test_view_bad_input(rows, dim, match):
+    with pytest.raises(ArgumentError, match=match):
+        View(rows, dim)
+
+
+def test_view_orthonormality_tolerance():
+    # |R R^T - I| <= 1e-9 entrywise: a rotation computed in floating point passes
+    c, s = np.cos(0.3), np.sin(0.3)
+    View([[c, -s, 0], [s, c, 0], [0, 0, 1]], 2)
+    View(np.diag([1 + 4.9e-10, 1, 1]), 2)                    # (1 + e)^2 - 1 = 0.98e-9
+    with pytest.raises(ArgumentError):
+        View(np.diag([1 + 5.1e-10, 1, 1]), 2)                # 1.02e-9

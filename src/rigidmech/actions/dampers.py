@@ -111,6 +111,13 @@ class Damper(Action):
                 _check_solid(s, name)
         self._a, self._b, self._on_a, self._on_b = a, b, on_a, on_b
 
+    a = property(lambda self: self._a, doc="The end point a (on ``on_a``).")
+    b = property(lambda self: self._b, doc="The end point b (on ``on_b``).")
+    on_a = property(lambda self: self._on_a,
+                    doc="The solid that carries a (None: a point fixed in the reference).")
+    on_b = property(lambda self: self._on_b,
+                    doc="The solid that carries b (None: a point fixed in the reference).")
+
     @property
     def damping(self):
         """The coefficient c."""

@@ -194,6 +194,20 @@ def save_animation(anim, path, *, fps=None) -> str:
     ------
     ArgumentError
         If the folder of ``path`` does not exist.
+
+    Examples
+    --------
+    >>> import os, tempfile, matplotlib
+    >>> matplotlib.use("Agg")
+    >>> from rigidmech import models
+    >>> eqs = models.compound_pendulum().system.equations_of_motion()
+    >>> sim = eqs.simulate(t=(0, 1), q0=[1.0], m=1.0, L=1.0, g=9.81)
+    >>> anim = animate(sim, n_frames=2)
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     path = save_animation(anim, os.path.join(folder, "pendulum.gif"))
+    ...     os.path.getsize(path) > 0
+    True
+    >>> import matplotlib.pyplot as plt; plt.close(anim._fig)
     """
     path = os.fspath(path)
     folder = os.path.dirname(os.path.abspath(path))

@@ -58,7 +58,8 @@ class View:
 
     def __init__(self, rows, dim: int):
         rows = np.array(rows, dtype=float)
-        if rows.shape != (3, 3) or not np.allclose(rows @ rows.T, np.eye(3), atol=1e-9):
+        if rows.shape != (3, 3) or not np.allclose(rows @ rows.T, np.eye(3), rtol=0,
+                                                   atol=1e-9):
             raise ArgumentError(f"`rows` must be an orthonormal 3 x 3 basis; got {rows!r}.")
         if dim not in (2, 3):
             raise ArgumentError(f"`dim` must be 2 or 3; got {dim!r}.")
@@ -71,7 +72,17 @@ class View:
     @classmethod
     def of(cls, placement, dim=None) -> View:
         """The view a placement is best seen in: 2D for a planar system (seen along the
-        normal of its plane, gravity down the page), 3D otherwise (gravity down)."""
+        normal of its plane, gravity down the page), 3D otherwise (gravity down); ``dim``
+        forces one.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> from rigidmech.drawing import place
+        >>> p = place(models.heavy_top(), [0.0, 0.5, 0.0], {"l": 1.0})
+        >>> View.of(p).dim, View.of(p, 2).dim
+        (3, 2)
+        """
         plane = placement.placer.plane
         if dim is None:
             dim = 2 if plane is not None else 3
@@ -92,7 +103,13 @@ class View:
         return cls([first, np.cross(up, first), up], 3)
 
     def project(self, xyz) -> np.ndarray:
-        """Coordinates on the axes of points (..., 3) given in the reference."""
+        """Coordinates on the axes of points (..., 3) given in the reference.
+
+        Examples
+        --------
+        >>> View([[0, 1, 0], [-1, 0, 0], [0, 0, 1]], 2).project([[1.0, 2.0, 3.0]]).tolist()
+        [[2.0, -1.0]]
+        """
         return (np.asarray(xyz, dtype=float) @ self._rows.T)[..., :self._dim]
 
 

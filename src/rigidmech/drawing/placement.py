@@ -14,7 +14,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
-from ..actions import Gravity, Joint
+from ..actions import Damper, Gravity, Joint, Spring
 from ..vectors import Frame, Point, Vector, t
 
 __all__ = ["Placer", "Placement", "place", "connection_point"]
@@ -100,6 +100,9 @@ class Placer:
                 pts.append(p)
         for _, _, contact in system.contacts:
             pts.append(contact.contact.point)
+        for action in system.actions:
+            if isinstance(action, Spring | Damper):
+                pts += [action.a, action.b]
         for p in points:
             if not isinstance(p, Point):
                 raise ArgumentTypeError(
@@ -153,6 +156,13 @@ class Placer:
         ------
         ArgumentError
             If symbols without a value remain (named in the message).
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> pendulum = models.compound_pendulum()
+        >>> Placer(pendulum, {"L": 2.0}).number(pendulum.constant("L") ** 2 / 2)
+        2.0
         """
         x = sp.sympify(expr).xreplace(self._values)
         if not x.is_number:
@@ -176,6 +186,13 @@ class Placer:
         ------
         ArgumentError
             For a wrong number of values, an unknown name, or a value that is not finite.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> placer = Placer(models.compound_pendulum(), {"L": 2.0})
+        >>> placer.at({"theta": 0.0}).point("G").tolist()
+        [1.0, 0.0, 0.0]
         """
         qv = _state(q, self._coordinates)
         out = [float(x) for x in self._function(float(t), *qv)]
@@ -356,7 +373,17 @@ class Placement:
         return self.point(frame.origin)
 
     def vector(self, vector: Vector) -> np.ndarray:
-        """The components of a vector in the reference's basis, evaluated at this state."""
+        """The components of a vector in the reference's basis, evaluated at this state.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rigidmech import models
+        >>> dp = models.double_pendulum()
+        >>> p = place(dp, [np.pi / 2, 0.0], {"L": 1.0})
+        >>> p.vector(dp.frame("R1").i).round(12).tolist()
+        [0.0, 1.0, 0.0]
+        """
         if not isinstance(vector, Vector):
             raise ArgumentTypeError(f"`vector` must be a Vector; got {type(vector).__name__}.")
         return self._evaluate(vector.components(self._placer.reference), "the vector")
@@ -367,7 +394,15 @@ class Placement:
         return dict(self._points)
 
     def extent(self):
-        """(low, high): the corners of the box holding every compiled point."""
+        """(low, high): the corners of the box holding every compiled point.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> low, high = place(models.compound_pendulum(), [0.0], {"L": 2.0}).extent()
+        >>> low.tolist(), high.tolist()                # O and the mass centre G
+        ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+        """
         xyz = np.array(list(self._points.values()) or [np.zeros(3)])
         return xyz.min(axis=0), xyz.max(axis=0)
 

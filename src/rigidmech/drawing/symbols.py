@@ -28,7 +28,8 @@ from ..actions.connections import (
 )
 from .placement import connection_point
 
-__all__ = ["ConnectionSymbol", "connection_kind", "draw_connection", "draw_frame"]
+__all__ = ["ConnectionSymbol", "connection_kind", "draw_connection", "draw_frame",
+           "draw_spring"]
 
 _INK = "0.15"
 
@@ -103,8 +104,8 @@ def _plane_2d(ax, at, normal, towards_body, s, ground, zorder):
     if towards_body is not None and n @ towards_body < 0:
         n = -n
     along = np.array([-n[1], n[0]])
-    if ground:
-        return _hatch_2d(ax, at, along, -n, 4 * s, s, zorder)
+    if ground:   # the ground's plane, long enough to read as the ground
+        return _hatch_2d(ax, at, along, -n, 14 * s, s, zorder)
     seg = np.array([at - 2 * s * along, at + 2 * s * along])
     return list(ax.plot(*seg.T, color=_INK, lw=1.6, zorder=zorder))
 
@@ -300,4 +301,55 @@ def draw_frame(ax, frame, placement, view, *, size, zorder=5) -> list:
                                   arrow_length_ratio=0.25))
             arts.append(ax.text(*tip, f"${letter}_{{{frame.name}}}$", fontsize=8,
                                 color=color))
+    return arts
+
+
+def draw_spring(ax, a, b, *, size, damper=False, ground_a=False, zorder=3) -> list:
+    """Draw a spring (a zigzag) or a damper (a dashpot) between the points ``a`` and ``b``
+    given on the axes (2 or 3 coordinates); ``ground_a`` hatches the end ``a`` fixed in the
+    reference. Returns the artists.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = plt.subplots()
+    >>> arts = draw_spring(ax, np.array([0.0, 0.0]), np.array([1.0, 0.0]), size=0.1)
+    >>> line = arts[0]
+    >>> line.get_xdata()[[0, -1]].tolist(), round(float(np.abs(line.get_ydata()).max()), 6)
+    ([0.0, 1.0], 0.05)
+    >>> plt.close(fig)
+    """
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    d = b - a
+    length = float(np.linalg.norm(d))
+    if length < 1e-12:
+        return []
+    e = d / length
+    if len(a) == 2:
+        n = np.array([-e[1], e[0]])
+    else:
+        n = np.cross(e, [0.0, 0.0, 1.0] if abs(e[2]) < 0.9 else [1.0, 0.0, 0.0])
+        n /= np.linalg.norm(n)
+    w = 0.5 * size
+    arts = []
+    if not damper:
+        coils = 8
+        s_ = np.linspace(0.15, 0.85, 2 * coils + 1)
+        side = np.r_[0, np.tile([1.0, -1.0], coils)][: len(s_)]
+        side[-1] = 0
+        pts = np.vstack([a, *(a + t * d + sgn * w * n for t, sgn in zip(s_, side, strict=True)),
+                         b])
+        arts += ax.plot(*pts.T, color=_INK, lw=1.2, zorder=zorder)
+    else:
+        p1, p2 = a + 0.35 * d, a + 0.55 * d
+        cup = np.array([p1 + w * n + 0.3 * d, p1 + w * n, p1 - w * n, p1 - w * n + 0.3 * d])
+        arts += ax.plot(*np.array([a, p1]).T, color=_INK, lw=1.2, zorder=zorder)
+        arts += ax.plot(*cup.T, color=_INK, lw=1.2, zorder=zorder)
+        arts += ax.plot(*np.array([p2, b]).T, color=_INK, lw=1.2, zorder=zorder)
+        arts += ax.plot(*np.array([p2 - 0.7 * w * n, p2 + 0.7 * w * n]).T, color=_INK, lw=2,
+                        zorder=zorder)
+    if ground_a and len(a) == 2:
+        arts += _hatch_2d(ax, a, n, -e, 2.5 * size, size, zorder)
     return arts

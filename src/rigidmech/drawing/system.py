@@ -15,11 +15,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from ..actions import Damper, Spring
 from ..systems import Link
 from ..vectors import Frame
 from .bodies import View, draw_body, is_3d, shape_mesh
 from .placement import Placement, Placer
-from .symbols import draw_connection, draw_frame
+from .symbols import draw_connection, draw_frame, draw_spring
 
 __all__ = ["Drawing", "draw", "FIGURE_FORMATS", "limits_of", "outline_points", "azimuth_of"]
 
@@ -51,6 +52,18 @@ class Drawing(NamedTuple):
         ------
         ArgumentError
             For another extension or a folder that does not exist.
+
+        Examples
+        --------
+        >>> import os, tempfile, matplotlib
+        >>> matplotlib.use("Agg")
+        >>> from rigidmech import models
+        >>> d = draw(models.compound_pendulum(), [0.5], {"L": 1.0})
+        >>> with tempfile.TemporaryDirectory() as folder:
+        ...     path = d.save(os.path.join(folder, "pendulum.svg"))
+        ...     os.path.getsize(path) > 1000
+        True
+        >>> import matplotlib.pyplot as plt; plt.close(d.figure)
         """
         path = os.fspath(path)
         ext = os.path.splitext(path)[1].lower().lstrip(".")
@@ -76,7 +89,16 @@ def _symbol_size(placement, view):
 
 def outline_points(placement, body) -> np.ndarray:
     """Points (N, 3) in the reference that the drawing of a body covers: its shape's mesh
-    or a rod's ends, else its mass centre."""
+    or a rod's ends, else its mass centre.
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import place
+    >>> m = models.compound_pendulum()
+    >>> outline_points(place(m, [0.0], {"L": 2.0}), m.body("bar")).tolist()
+    [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0]]
+    """
     G = placement.point(body.centre)
     shape = body.shape
     if shape is None or shape.kind == "point_mass":
@@ -91,16 +113,37 @@ def outline_points(placement, body) -> np.ndarray:
 
 def limits_of(placements, view, size):
     """(low, high) in the view's coordinates holding every compiled point and every body's
-    outline in the placements, with a margin for the symbols (an animation keeps one box
-    for all its frames)."""
+    outline in the placements, with a margin of 4 ``size`` for the symbols (an animation
+    keeps one box for all its frames).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import View, place
+    >>> p = place(models.compound_pendulum(), [0.0], {"L": 2.0})   # gravity along R0.i
+    >>> low, high = limits_of([p], View.of(p), 0.1)
+    >>> low.round(12).tolist(), high.round(12).tolist()
+    ([-0.4, -2.4], [0.4, 0.4])
+    """
     pts = [view.project(np.array(list(p.points.values()))) for p in placements]
     pts += [view.project(outline_points(p, b)) for p in placements for b in p.system.bodies]
     pts = np.vstack(pts)
-    return pts.min(axis=0) - 3 * size, pts.max(axis=0) + 3 * size
+    return pts.min(axis=0) - 4 * size, pts.max(axis=0) + 4 * size
 
 
 def azimuth_of(placements, view) -> float:
-    """The azimuth (degrees) of a 3D view that shows the spread of the points across."""
+    """The azimuth (degrees) of a 3D view that shows the spread of the points across: 60
+    degrees off the direction of their largest horizontal spread (-60, matplotlib's
+    default, when they have none).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> from rigidmech.drawing import View, place
+    >>> p = place(models.heavy_top(), [0.0, 0.0, 0.0], {"l": 1.0})    # the axis vertical
+    >>> azimuth_of([p], View.of(p))
+    -60.0
+    """
     pts = np.vstack([view.project(np.array(list(p.points.values()))) for p in placements])
     spread = pts[:, :2] - pts[:, :2].mean(axis=0)
     if len(spread) < 2 or np.ptp(spread, axis=0).max() < 1e-9:
@@ -224,6 +267,12 @@ def draw(system, q, params=None, *, t=0.0, ax=None, frames=False, labels=True, d
                               label=labels)
         if sym is not None:
             symbols.append(sym)
+    for action in system.actions:
+        if isinstance(action, Spring | Damper):
+            draw_spring(ax, view.project(placement.point(action.a)),
+                        view.project(placement.point(action.b)), size=size,
+                        damper=isinstance(action, Damper),
+                        ground_a=action.on_a is None)
     bodies = {}
     for n, body in enumerate(system.bodies):
         bodies[body.name] = draw_body(ax, body, placement, view, color=PALETTE[n % 10],
