@@ -117,8 +117,8 @@ def box_on_floor():
 def test_errors_name_the_argument():
     st, box = box_on_floor()
     other = rm.Body("other", frame=st.reference)
-    with pytest.raises(ArgumentTypeError, match="`system` must be a System, a Mechanism or a "
-                                                 "Statics; got str"):
+    with pytest.raises(ArgumentTypeError, match="`system` must be a System .or a Model., a "
+                                                 "Mechanism or a Statics; got str"):
         free_body_diagram("system", box)
     with pytest.raises(ArgumentError, match=r"`bodies` must be bodies of the system \['box'\]"):
         free_body_diagram(st, other)

@@ -75,6 +75,8 @@ class Source:
     reference, its external links and the given actions' contributions on it."""
 
     def __init__(self, system, bodies):
+        inner = getattr(system, "system", None)      # a Model of rigidmech.models
+        system = inner if isinstance(inner, System) else system
         if isinstance(system, System):
             graph, self.dynamics = system.mechanism, system
         elif isinstance(system, Mechanism):
@@ -83,7 +85,7 @@ class Source:
             graph, self.dynamics = None, None
         else:
             raise ArgumentTypeError(
-                "`system` must be a System, a Mechanism or a Statics; got "
+                "`system` must be a System (or a Model), a Mechanism or a Statics; got "
                 f"{type(system).__name__}.")
         self.ground = None if graph is None else graph.ground
         if graph is not None:

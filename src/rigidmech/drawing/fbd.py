@@ -379,7 +379,8 @@ def free_body_diagram(system, bodies, *, q=None, u=None, t=0.0, params=None,
 
     Parameters
     ----------
-    system : System, Mechanism or Statics
+    system : System, Model, Mechanism or Statics
+        A :class:`~rigidmech.models.Model` stands for its system.
     bodies : Body or sequence of Body
         The isolated set; actions between its bodies are internal and not drawn.
     q, u, t, params, equilibrium, values

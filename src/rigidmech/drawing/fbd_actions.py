@@ -175,8 +175,9 @@ def external_actions(system, bodies, *, q=None, u=None, t=0.0, params=None,
 
     Parameters
     ----------
-    system : System, Mechanism or Statics
-        The bodies, their connections and the given actions.
+    system : System, Model, Mechanism or Statics
+        The bodies, their connections and the given actions (a
+        :class:`~rigidmech.models.Model` stands for its system).
     bodies : Body or sequence of Body
         The isolated body or set of bodies.
     q, u : sequence or dict, optional
