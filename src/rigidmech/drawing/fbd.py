@@ -179,8 +179,12 @@ class _Painter:
         self.tips = []
 
     def text(self, at, s, color):
-        t = self.d.ax.text(*at[: self.d.dim], s, color=color, fontsize=9,
-                           ha="left", va="bottom", zorder=5)
+        if self.d.dim == 2:       # beside the tip, a few points off
+            t = self.d.ax.annotate(s, tuple(at[:2]), xytext=(4, 3), textcoords="offset points",
+                                   color=color, fontsize=9, ha="left", va="bottom", zorder=5)
+        else:
+            t = self.d.ax.text(*at, s, color=color, fontsize=9, ha="left", va="bottom",
+                               zorder=5)
         self.d.labels.append(t)
 
     def arrow(self, name, tail, vec, color, label):
