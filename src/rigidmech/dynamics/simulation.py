@@ -19,7 +19,7 @@ import math
 import numpy as np
 import sympy as sp
 
-from .._core.errors import ArgumentTypeError, NumericalError
+from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
 from . import _along, _files
 
 __all__ = ["Simulation", "Event", "load_simulation"]
@@ -31,7 +31,10 @@ _STATUS = {0: "finished", 1: "event", -1: "failed", 2: "interrupted"}
 class Event:
     """An event of a simulation written as an expression of the motion (ch. 27): the times
     where ``expr`` (of t, the coordinates q(t), their rates q'(t), the constants and the inputs)
-    crosses zero are located; ``terminal`` stops the run there.
+    crosses zero are located; ``terminal`` stops the run there. The expression may also hold
+    the accelerations q''(t), the solution of the equations of motion at the state (an event
+    on an acceleration or on a connection action written with q'', such as a normal force
+    that vanishes). The states at the events: :meth:`Simulation.at_events`.
 
     Parameters
     ----------
@@ -115,11 +118,12 @@ class Simulation:
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
-                 "message", "_names", "_t_events", "_method", "_t_stop", "_given")
+                 "message", "_names", "_t_events", "_y_events", "_method", "_t_stop",
+                 "_given")
 
     def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
                  names=None, t=None, y=None, t_events=None, method=None, t_stop=None,
-                 given=None):
+                 given=None, y_events=None):
         self._eqs = eqs
         self.result = result
         self._names = tuple(names) if names is not None else tuple(eqs.names)
@@ -135,6 +139,11 @@ class Simulation:
         self._t_events = (list(t_events) if t_events is not None else
                           [np.asarray(x) for x in result.t_events] if result is not None
                           else [])
+        if y_events is None and t_events is None and result is not None:
+            y_events = [np.asarray(ye, dtype=float).reshape(-1, 2 * n).T
+                        for ye in result.y_events]
+        self._y_events = (None if y_events is None else
+                          [np.asarray(ye, dtype=float).reshape(2 * n, -1) for ye in y_events])
         self._method = method if method is not None else (result.method if result else None)
         self._t_stop = float(t_stop) if t_stop is not None else (
             float(self.t[-1]) if self.t.size else math.nan)
@@ -217,8 +226,55 @@ class Simulation:
 
     @property
     def t_events(self) -> list:
-        """For each event given to ``simulate``, the times where it occurred."""
+        """For each event given to ``simulate``, the times where it occurred (the states
+        there: :meth:`at_events`)."""
         return list(self._t_events)
+
+    def at_events(self, which=0) -> Simulation:
+        """The states at the occurrences of the event ``which`` (its index in the list of
+        ``events`` given to ``simulate``), as a :class:`Simulation` whose samples are those
+        states (ch. 27): its :attr:`t` is :attr:`t_events` ``[which]``, its :attr:`q` and
+        :attr:`u` the coordinates and rates located there, and every computation along a
+        motion (:meth:`evaluate` with q'', :meth:`energy`, :meth:`connection_action`) works
+        on it. The states are the solver's, at the located zeros (the accuracy of the run),
+        not interpolated from the samples.
+
+        Parameters
+        ----------
+        which : int
+            The index of the event, in the order given to ``simulate``.
+
+        Examples
+        --------
+        >>> import numpy as np, sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> sim = eqs.simulate(t=(0, 7), q0=[1.0], events=[x], rtol=1e-10, atol=1e-12)
+        >>> at = sim.at_events(0)               # x = cos t crosses 0 at pi/2 and 3 pi/2
+        >>> at.t.round(8).tolist(), at.u.round(8).tolist()
+        ([1.57079633, 4.71238898], [[-1.0, 1.0]])
+        >>> (at.evaluate(x.diff(rm.t, 2)) + at.q[0]).round(12).tolist()
+        [0.0, 0.0]
+        """
+        if isinstance(which, bool) or not isinstance(which, int | np.integer):
+            raise ArgumentTypeError(f"`which` must be the index (an int) of an event given to "
+                                    f"simulate(); got {type(which).__name__} {which!r}.")
+        if self._y_events is None:
+            raise ArgumentError(
+                "the states at the events are not known: this simulation was loaded from a "
+                "file that does not hold them (a .csv file, or an older .npz file); simulate "
+                "again, or save to .npz.")
+        if not 0 <= which < len(self._t_events):
+            raise ArgumentError(
+                f"`which` must be the index of an event given to simulate(), 0 to "
+                f"{len(self._t_events) - 1}; got {which!r}" + (
+                    " (the run was given no events)." if not self._t_events else "."))
+        return Simulation(self._eqs, None, self._params, 0.0, self.notes, status=self.status,
+                          message=f"The states at the occurrences of event {which}.",
+                          names=self._names, t=self._t_events[which],
+                          y=self._y_events[which], t_events=[], y_events=[],
+                          method=self._method, t_stop=self._t_stop)
 
     def check(self):
         """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status
