@@ -115,7 +115,7 @@ def evaluate(sim, expr, frame=None, along=None):
     return np.broadcast_to(out, sim.t.shape).copy()
 
 
-def connection_action(sim, parent, child, basis, system, label=None):
+def connection_action(sim, parent, child, basis, system, label=None, at=None):
     """The six components of the action of ``parent`` on ``child`` along the motion (see
     :meth:`Simulation.connection_action <rigidmech.dynamics.Simulation.connection_action>`):
     the Lagrange multipliers of a system with linking connections are evaluated at the
@@ -132,6 +132,10 @@ def connection_action(sim, parent, child, basis, system, label=None):
             "`system` has changed since these equations were derived (or is another "
             "system): its connection actions would not match this motion. Simulate the "
             "system's current equations (system.equations_of_motion().simulate(...)).")
+    if at is not None and basis is None:
+        raise ArgumentError(
+            "`at` needs `basis`: the moment at another point than the joint's is given by "
+            "its components in a frame; pass basis=<a Frame> (e.g. the Galilean frame).")
     if basis is None:
         comps = system.connection_components(parent, child, label=label)
         keys = list(comps)
@@ -141,7 +145,7 @@ def connection_action(sim, parent, child, basis, system, label=None):
             raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
                                     f"{type(basis).__name__}.")
         torsor = system.connection_action(parent, child, label=label)
-        moment = torsor.moment_at(torsor.point)   # at the connection's point
+        moment = torsor.moment_at(torsor.point if at is None else at)  # default: the joint's
         keys = ["X", "Y", "Z", "L", "M", "N"]
         exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
     matrix = sp.ImmutableMatrix(len(exprs), 1, exprs)

@@ -331,7 +331,7 @@ class Simulation:
         return _along.evaluate(self, expr, frame)
 
     def connection_action(self, parent, child, *, basis=None, system=None,
-                          label=None) -> dict:
+                          label=None, at=None) -> dict:
         """The action of ``parent`` on ``child`` through their connection (ch. 18.2) along the
         motion: its six components as time series, in one call (compiled once).
 
@@ -350,6 +350,8 @@ class Simulation:
         label : str, optional
             The connection's label, when several connections join the same two solids (as
             :meth:`System.connection_action`).
+        at : Point, optional
+            The point of the moment (L, M, N), with ``basis``; default: the joint's point.
 
         In a system with linking connections (closed loops, rolling, gears) the Lagrange
         multipliers the actions are written with are evaluated at each sample from the
@@ -373,8 +375,16 @@ class Simulation:
         >>> N = sim.connection_action(R0, bob, basis=R0)
         >>> bool(np.allclose(N["X"], -2.0 * 9.81))       # at rest below the pivot: -m g
         True
+
+        The resultant R and the moment M(A) at a point A as vectors in R0, shape (3, n):
+
+        >>> A = R0.point("A", 0, 0.5, 0)
+        >>> N = sim.connection_action(R0, bob, basis=R0, at=A)
+        >>> R, M_A = np.array([N[k] for k in "XYZ"]), np.array([N[k] for k in "LMN"])
+        >>> bool(np.allclose(M_A[2], -0.5 * 2.0 * 9.81))  # M(A) = M(O) + R x OA, OA = 0.5 j
+        True
         """
-        return _along.connection_action(self, parent, child, basis, system, label)
+        return _along.connection_action(self, parent, child, basis, system, label, at)
 
     def energy(self):
         """Total mechanical energy T + V along the motion."""
