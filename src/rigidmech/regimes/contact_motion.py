@@ -95,9 +95,43 @@ class ContactMotion(PhasedMotion):
 
     __slots__ = ("_model",)
 
-    def __init__(self, phases, model, *, status="finished", message=""):
-        super().__init__(phases, status=status, message=message)
+    def __init__(self, phases, model, *, status="finished", message="", regimes=None):
+        super().__init__(phases, status=status, message=message, regimes=regimes)
         self._model = model
+
+    def accelerations(self, time):
+        """The accelerations q'' at ``time`` (a number or an array of times), from the
+        equations of the regime of the phase then (at a switching instant, the phase that
+        ends there, as :meth:`contact_actions`): shape (n,) or (n, len(time)), in the order
+        of the system's coordinates (ch. 21.4, 23). The last half of
+        :meth:`~rigidmech.regimes.PhasedMotion.derivative`.
+
+        Examples
+        --------
+        A block on a plane inclined by alpha (x down the slope), friction f = 0.2, thrown
+        up the slope: it decelerates at g (sin alpha + f cos alpha), stops, then slides back
+        at g (sin alpha - f cos alpha) (tan alpha > f).
+
+        >>> import math, rigidmech as rm
+        >>> from rigidmech.actions import Coulomb, FrictionContact
+        >>> from rigidmech.kinematics import ContactKinematics
+        >>> x, y = rm.coordinates("x y"); alpha, f, g = 0.5, 0.2, 9.81
+        >>> R0 = rm.Frame("R0"); G = R0.point("G", x, y, 0); Rb = R0.translated("Rb", G)
+        >>> s = rm.System(galilean=R0)
+        >>> s.connect(R0, rm.Body("block", frame=Rb, mass=1, centre=G), FrictionContact(
+        ...     ContactKinematics(Rb, R0, at=R0.point("I", x, y, 0), normal=R0.j),
+        ...     friction=Coulomb(f)))
+        >>> s.act(rm.gravity(g * (math.sin(alpha) * R0.i - math.cos(alpha) * R0.j)))
+        >>> m = contact_motion(s, 2.0, {"x": 0.0, "y": 0.0}, {"x": -3.0, "y": 0.0})
+        >>> m.regimes
+        ('slip-', 'slip+')
+        >>> a_up, a_down = m.accelerations([0.1, 1.5])[0]
+        >>> bool(abs(a_up - g * (math.sin(alpha) + f * math.cos(alpha))) < 1e-9)
+        True
+        >>> bool(abs(a_down - g * (math.sin(alpha) - f * math.cos(alpha))) < 1e-9)
+        True
+        """
+        return self.derivative(time)[self._model.n:]
 
     @property
     def contacts(self) -> tuple:
@@ -314,6 +348,7 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         done = getattr(exc, "motion", None)
         if done is not None:
             exc.motion = ContactMotion(done.phases, model, status=done.status,
-                                       message=done.message)
+                                       message=done.message, regimes=done._regimes)
         raise
-    return ContactMotion(motion.phases, model, status=motion.status, message=motion.message)
+    return ContactMotion(motion.phases, model, status=motion.status, message=motion.message,
+                         regimes=motion._regimes)
