@@ -34,7 +34,7 @@ from ._compiled import coordinate_name as _name
 from .energy import energy_terms
 from .energy import time_dependence as decide_time_dependence
 
-__all__ = ["connection_action", "energy", "energy_balance", "energy_drift",
+__all__ = ["at_events", "connection_action", "energy", "energy_balance", "energy_drift",
            "energy_not_conserved", "energy_scale", "evaluate", "need_equations",
            "time_dependence"]
 
@@ -113,6 +113,29 @@ def evaluate(sim, expr, frame=None, along=None):
     if isinstance(e, sp.MatrixBase):
         return np.broadcast_to(out, tuple(e.shape) + sim.t.shape).copy()
     return np.broadcast_to(out, sim.t.shape).copy()
+
+
+def at_events(sim, which):
+    """The states at the occurrences of event ``which`` as a simulation (see
+    :meth:`Simulation.at_events <rigidmech.dynamics.Simulation.at_events>`)."""
+    if isinstance(which, bool) or not isinstance(which, int | np.integer):
+        raise ArgumentTypeError(f"`which` must be the index (an int) of an event given to "
+                                f"simulate(); got {type(which).__name__} {which!r}.")
+    if sim._y_events is None:
+        raise ArgumentError(
+            "the states at the events are not known: this simulation was loaded from a "
+            "file that does not hold them (a .csv file, or an older .npz file); simulate "
+            "again, or save to .npz.")
+    if not 0 <= which < len(sim._t_events):
+        raise ArgumentError(
+            f"`which` must be the index of an event given to simulate(), 0 to "
+            f"{len(sim._t_events) - 1}; got {which!r}" + (
+                " (the run was given no events)." if not sim._t_events else "."))
+    return type(sim)(sim._eqs, None, sim._params, 0.0, sim.notes, status=sim.status,
+                      message=f"The states at the occurrences of event {which}.",
+                      names=sim._names, t=sim._t_events[which],
+                      y=sim._y_events[which], t_events=[], y_events=[],
+                      method=sim._method, t_stop=sim._t_stop)
 
 
 def connection_action(sim, parent, child, basis, system, label=None, at=None):

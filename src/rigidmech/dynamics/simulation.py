@@ -19,7 +19,7 @@ import math
 import numpy as np
 import sympy as sp
 
-from .._core.errors import ArgumentError, ArgumentTypeError, NumericalError
+from .._core.errors import ArgumentTypeError, NumericalError
 from . import _along, _files
 
 __all__ = ["Simulation", "Event", "load_simulation"]
@@ -257,24 +257,7 @@ class Simulation:
         >>> (at.evaluate(x.diff(rm.t, 2)) + at.q[0]).round(12).tolist()
         [0.0, 0.0]
         """
-        if isinstance(which, bool) or not isinstance(which, int | np.integer):
-            raise ArgumentTypeError(f"`which` must be the index (an int) of an event given to "
-                                    f"simulate(); got {type(which).__name__} {which!r}.")
-        if self._y_events is None:
-            raise ArgumentError(
-                "the states at the events are not known: this simulation was loaded from a "
-                "file that does not hold them (a .csv file, or an older .npz file); simulate "
-                "again, or save to .npz.")
-        if not 0 <= which < len(self._t_events):
-            raise ArgumentError(
-                f"`which` must be the index of an event given to simulate(), 0 to "
-                f"{len(self._t_events) - 1}; got {which!r}" + (
-                    " (the run was given no events)." if not self._t_events else "."))
-        return Simulation(self._eqs, None, self._params, 0.0, self.notes, status=self.status,
-                          message=f"The states at the occurrences of event {which}.",
-                          names=self._names, t=self._t_events[which],
-                          y=self._y_events[which], t_events=[], y_events=[],
-                          method=self._method, t_stop=self._t_stop)
+        return _along.at_events(self, which)
 
     def check(self):
         """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status

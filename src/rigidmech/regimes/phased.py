@@ -195,6 +195,8 @@ class PhasedMotion:
         once at the end of a phase and once at the start of the next).
     y : ndarray, shape (n, len(t))
 
+    Keyword ``regimes``: the :class:`Regime` of each name, for :meth:`derivative`.
+
     Examples
     --------
     >>> import numpy as np
@@ -221,7 +223,6 @@ class PhasedMotion:
     def __init__(self, phases, names=None, *, status="finished", message="", regimes=None):
         self._phases = tuple(phases)
         self._names = tuple(names) if names is not None else None
-        #: the Regime of each name (their equations), None for a motion built without them
         self._regimes = None if regimes is None else dict(regimes)
         #: how the run ended: "finished" (the end of the interval, or a regime without
         #: successor), "interrupted" (Ctrl-C, the progress callback) or "failed" (a phase
@@ -493,8 +494,7 @@ def _phases(check, current, t, t1, y, prog, *, method, rtol, atol, max_step, max
         if nxt is None or t_end >= t1:
             break
         if len(phases) >= max_phases:
-            raise _fail(phases, f"more than `max_phases` = {max_phases} phases before "
-                                f"t = {t1}; last regime {regime.name} at t = {t_end}.",
-                        regimes)
+            raise _fail(phases, f"more than `max_phases` = {max_phases} phases before t = "
+                                f"{t1}; last regime {regime.name} at t = {t_end}.", regimes)
         y, t, current = guard.reset(t_end, y_end), t_end, nxt
     return PhasedMotion(phases, regimes=regimes)
