@@ -160,3 +160,21 @@ def test_without_margin_the_bicycle_speeds_are_the_zeros_of_the_real_parts():
         split[0], abs=1e-12)
     assert critical_value(bike, "v", (5.5, 6.5), tol=0.0, xtol=1e-14) == pytest.approx(
         split[1], abs=1e-12)
+
+
+@pytest.mark.slow
+def test_the_derived_bicycle_changes_stability_at_the_paper_speeds():
+    # the catalogue's Whipple bicycle, derived and linearised (roll, steer, rear wheel: the
+    # wheel's exponent 0 stays on the stable side by the margin)
+    from rigidmech import models
+    model = models.whipple_bicycle()
+    rR = models.BENCHMARK_BICYCLE["rR"]
+    v = sp.Symbol("v")
+    lin = linearize(model.system.equations_of_motion(), velocities={"theta_R": v / rR},
+                    parameters={"g": 9.81}, independent=["phi", "delta", "theta_R"],
+                    simplify=False)
+    changes = stability_changes(lin, v, np.arange(0.5, 10.01, 0.5))
+    assert [c.becomes for c in changes] == ["stable", "unstable"]
+    paper = stability_changes(_paper_bicycle(), "v", np.arange(0.5, 10.01, 0.5))
+    for ours, theirs in zip(changes, paper, strict=True):
+        assert ours.value == pytest.approx(theirs.value, abs=1e-8)
