@@ -123,9 +123,9 @@ def at_events(sim, which):
                                 f"simulate(); got {type(which).__name__} {which!r}.")
     if sim._y_events is None:
         raise ArgumentError(
-            "the states at the events are not known: this simulation was loaded from a "
-            "file that does not hold them (a .csv file, or an older .npz file); simulate "
-            "again, or save to .npz.")
+            "the states at the events are not known: this simulation was built without them "
+            "(loaded from a .csv file or an older .npz file); simulate again, and save to "
+            ".npz to keep them.")
     if not 0 <= which < len(sim._t_events):
         raise ArgumentError(
             f"`which` must be the index of an event given to simulate(), 0 to "
