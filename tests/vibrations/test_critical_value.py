@@ -48,6 +48,20 @@ def test_the_critical_spin_of_a_sleeping_top_is_the_closed_form():
         StabilityChange(pytest.approx(closed, rel=1e-9), "stable"),)
 
 
+def test_the_rolling_disc_stands_up_above_the_closed_form_speed():
+    # a thin disc rolling upright at v = r |phi'| is stable iff v^2 > g r / 3 (book, ch. 25;
+    # the closed form of tests/vibrations/test_linearize_constrained.py): |phi'| = sqrt(g/3r)
+    from rigidmech import models
+    eqs = models.rolling_disc().system.equations_of_motion()
+    spin = sp.Symbol("Omega")
+    lin = linearize(eqs, about={"theta": sp.pi / 2}, velocities={"phi": spin})
+    values = dict(m=1.0, g=9.81, r=0.3)
+    closed = math.sqrt(values["g"] / (3 * values["r"]))
+    assert critical_value(lin, spin, (0.1, 20.0), **values) == pytest.approx(closed, rel=1e-8)
+    assert critical_value(lin, spin, (-20.0, -0.1), **values) == pytest.approx(-closed,
+                                                                                rel=1e-8)
+
+
 # Meijaard, Papadopoulos, Ruina, Schwab (2007), Proc. R. Soc. A 463, eq. (A 3)-(A 5)
 M_PAPER = [[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]]
 C1_PAPER = sp.Matrix([[0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]])
