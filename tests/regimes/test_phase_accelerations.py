@@ -73,3 +73,29 @@ def test_the_derivative_needs_the_regimes():
     with pytest.raises(ArgumentError, match=r"derivative\(\) needs the equations of the "
                                             r"regimes"):
         bare.derivative(0.1)
+
+
+def test_an_expression_of_the_motion_along_the_phases():
+    # m x'' - m g sin(alpha) is the friction force T: -f N sliding up... stuck: -m g sin(alpha)
+    alpha, f, mass = 0.3, 0.5, 2.0
+    s = _block(alpha, f, mass)
+    m = contact_motion(s, 2.0, {"x": 0.0, "y": 0.0}, {"x": -3.0, "y": 0.0})
+    x, y = s.coordinates
+    ts = np.array([0.1, 0.3, 1.0, 1.9])
+    friction = m.evaluate(mass * x.diff(rm.t, 2) - mass * G_ * math.sin(alpha), ts)
+    T = [float(m.contact_actions(t)["I"][1][0]) for t in ts]
+    np.testing.assert_allclose(friction, T, rtol=1e-12, atol=1e-12)
+    assert friction[0] == pytest.approx(f * mass * G_ * math.cos(alpha), rel=1e-12)
+    assert friction[-1] == pytest.approx(-mass * G_ * math.sin(alpha), rel=1e-12)
+    assert m.evaluate(x.diff(rm.t) + rm.t, 0.0) == pytest.approx(-3.0)    # a single time
+
+
+def test_evaluate_refuses_what_the_motion_does_not_know():
+    s = _block(0.6, 0.3)
+    m = contact_motion(s, 0.5, {"x": 0.0, "y": 0.0})
+    x, y = s.coordinates
+    k = rm.constants("k")
+    with pytest.raises(ArgumentError, match=r"`expr` depends on \['k'\]"):
+        m.evaluate(k * x, 0.1)
+    with pytest.raises(ArgumentError, match="neither a coordinate of the system"):
+        m.evaluate(x.diff(rm.t, 3), 0.1)
