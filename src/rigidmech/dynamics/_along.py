@@ -34,7 +34,7 @@ from ._compiled import coordinate_name as _name
 from .energy import energy_terms
 from .energy import time_dependence as decide_time_dependence
 
-__all__ = ["connection_action", "energy", "energy_balance", "energy_drift",
+__all__ = ["at_events", "connection_action", "energy", "energy_balance", "energy_drift",
            "energy_not_conserved", "energy_scale", "evaluate", "need_equations",
            "time_dependence"]
 
@@ -115,7 +115,30 @@ def evaluate(sim, expr, frame=None, along=None):
     return np.broadcast_to(out, sim.t.shape).copy()
 
 
-def connection_action(sim, parent, child, basis, system, label=None):
+def at_events(sim, which):
+    """The states at the occurrences of event ``which`` as a simulation (see
+    :meth:`Simulation.at_events <rigidmech.dynamics.Simulation.at_events>`)."""
+    if isinstance(which, bool) or not isinstance(which, int | np.integer):
+        raise ArgumentTypeError(f"`which` must be the index (an int) of an event given to "
+                                f"simulate(); got {type(which).__name__} {which!r}.")
+    if sim._y_events is None:
+        raise ArgumentError(
+            "the states at the events are not known: this simulation was built without them "
+            "(loaded from a .csv file or an older .npz file); simulate again, and save to "
+            ".npz to keep them.")
+    if not 0 <= which < len(sim._t_events):
+        raise ArgumentError(
+            f"`which` must be the index of an event given to simulate(), 0 to "
+            f"{len(sim._t_events) - 1}; got {which!r}" + (
+                " (the run was given no events)." if not sim._t_events else "."))
+    return type(sim)(sim._eqs, None, sim._params, 0.0, sim.notes, status=sim.status,
+                      message=f"The states at the occurrences of event {which}.",
+                      names=sim._names, t=sim._t_events[which],
+                      y=sim._y_events[which], t_events=[], y_events=[],
+                      method=sim._method, t_stop=sim._t_stop)
+
+
+def connection_action(sim, parent, child, basis, system, label=None, at=None):
     """The six components of the action of ``parent`` on ``child`` along the motion (see
     :meth:`Simulation.connection_action <rigidmech.dynamics.Simulation.connection_action>`):
     the Lagrange multipliers of a system with linking connections are evaluated at the
@@ -132,6 +155,10 @@ def connection_action(sim, parent, child, basis, system, label=None):
             "`system` has changed since these equations were derived (or is another "
             "system): its connection actions would not match this motion. Simulate the "
             "system's current equations (system.equations_of_motion().simulate(...)).")
+    if at is not None and basis is None:
+        raise ArgumentError(
+            "`at` needs `basis`: the moment at another point than the joint's is given by "
+            "its components in a frame; pass basis=<a Frame> (e.g. the Galilean frame).")
     if basis is None:
         comps = system.connection_components(parent, child, label=label)
         keys = list(comps)
@@ -141,7 +168,7 @@ def connection_action(sim, parent, child, basis, system, label=None):
             raise ArgumentTypeError(f"`basis` must be a Frame or None; got "
                                     f"{type(basis).__name__}.")
         torsor = system.connection_action(parent, child, label=label)
-        moment = torsor.moment_at(torsor.point)   # at the connection's point
+        moment = torsor.moment_at(torsor.point if at is None else at)  # default: the joint's
         keys = ["X", "Y", "Z", "L", "M", "N"]
         exprs = list(torsor.resultant.components(basis)) + list(moment.components(basis))
     matrix = sp.ImmutableMatrix(len(exprs), 1, exprs)

@@ -1,9 +1,9 @@
 """A :class:`~rigidmech.dynamics.Simulation` saved, loaded and plotted (book, ch. 27).
 
 Functions called by the methods of :class:`~rigidmech.dynamics.Simulation` that carry the
-documentation: ``.npz`` files (arrays, names, parameters, status, event times) and ``.csv``
-files (a header line of comments with the status and the parameters, then the columns with
-their units where known), read back without the equations; plots of the parameters of
+documentation: ``.npz`` files (arrays, names, parameters, status, event times and states)
+and ``.csv`` files (a header line of comments with the status and the parameters, then the
+columns with their units where known), read back without the equations; plots of the parameters of
 situation against time (one panel per coordinate, labelled with its name and unit), of their
 phase portraits and of the energy (matplotlib, imported on use).
 
@@ -80,7 +80,8 @@ def save(sim, path, units):
             "notes": list(sim.notes)}
     if ext == ".npz":
         np.savez(text, t=sim.t, q=sim.q, u=sim.u, meta=np.array(json.dumps(meta)),
-                 **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(sim._t_events)})
+                 **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(sim._t_events)},
+                 **{f"y_events_{i}": np.asarray(ye) for i, ye in enumerate(sim._y_events or ())})
     else:
         unit = units_of(sim, units)
         header = ["t [s]"] + [n + (f" [{unit[n]}]" if unit[n] else "") for n in sim._names]
@@ -107,6 +108,9 @@ def load(cls, path):
             events = [data[k] for k in sorted(
                 (k for k in data.files if k.startswith("t_events_")),
                 key=lambda k: int(k.rsplit("_", 1)[1]))]
+            keys = [f"y_events_{i}" for i in range(len(events))]
+            states = ([data[k] for k in keys] if all(k in data.files for k in keys)
+                      else None)  # None: a file written before the states were saved
     elif ext == ".csv":
         with open(text, newline="") as fh:
             first = fh.readline()
@@ -118,12 +122,13 @@ def load(cls, path):
             rows = list(csv.reader(fh))[1:]
         data = np.array(rows, dtype=float).reshape(len(rows), -1)
         t, y = data[:, 0], data[:, 1:].T
-        events = []
+        events, states = [], None
     else:
         raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
     return cls(None, None, meta["parameters"], meta.get("elapsed", 0.0), meta["notes"],
                status=meta["status"], message=meta["message"], names=meta["names"], t=t,
-               y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"))
+               y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"),
+               y_events=states)
 
 
 #: The kinds of figure of :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`.

@@ -73,13 +73,14 @@ def merge_values(params, values):
 
 def compile_events(eqs, events, values, full=None):
     """Callables g(t, y) from `events`: callables kept, sympy expressions (or
-    :class:`Event`) compiled once (a non-finite value of one is reported by the solver);
+    :class:`Event`) compiled once (a non-finite value of one is reported by the solver; an
+    expression holding q'' gets it from the equations' compiled solver at each call);
     ``full(t, Y)``: the state (q, q') from the run's state (reduced equations)."""
     if events is None:
         return None
     items = list(events) if isinstance(events, list | tuple) else [events]
     out = []
-    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    q_s, u_s, a_s, w_s, rule = eqs._stand_ins()
     n = len(q_s)
     for i, item in enumerate(items):
         if callable(item) and not isinstance(item, sp.Basic):
@@ -91,8 +92,9 @@ def compile_events(eqs, events, values, full=None):
         if functions or derivatives:
             raise CompilationError(
                 f"`events[{i}]` contains {', '.join(sorted(map(str, functions | derivatives)))}"
-                ": an event may hold t, the coordinates, their rates, constants and inputs.")
-        constants = sorted(symbols - set(q_s) - set(u_s) - set(w_s) - {_t},
+                ": an event may hold t, the coordinates, their first two derivatives, "
+                "constants and inputs.")
+        constants = sorted(symbols - set(q_s) - set(u_s) - set(a_s) - set(w_s) - {_t},
                            key=lambda s: s.name)
         missing = [c.name for c in constants if c.name not in values]
         if missing:
@@ -100,14 +102,20 @@ def compile_events(eqs, events, values, full=None):
                                 "give them to simulate().")
         consts = [float(values[c.name]) for c in constants]
         inputs = [values[ws.name] for ws in w_s]
-        f = compile_expressions(expr, [_t, list(q_s), list(u_s), *constants, *w_s],
-                                name=f"event{i}")
+        f = compile_expressions(expr, [_t, list(q_s), list(u_s), list(a_s), *constants,
+                                       *w_s], name=f"event{i}")
+        # q'' from the equations at the event's state, only when the event holds it
+        solve = eqs._solver() if any(expr.has(a) for a in a_s) else None
+        params = ([float(values[p.name]) for p in eqs.parameters] if solve is not None
+                  else [])
 
-        def g(t, y, _f=f, _c=consts, _w=inputs):
+        def g(t, y, _f=f, _c=consts, _w=inputs, _solve=solve, _p=params):
             w = [v(t) if callable(v) else float(v) for v in _w]
             if full is not None:
                 y = full(np.array([t]), np.asarray(y, dtype=float)[:, None])[:, 0]
-            return float(_f(t, y[:n], y[n:], *_c, *w))
+            q, u = y[:n], y[n:]
+            acc = _solve(t, q, u, *_p, *w) if _solve is not None else np.zeros(n)
+            return float(_f(t, q, u, acc, *_c, *w))
 
         g.terminal, g.direction = spec.terminal, spec.direction
         out.append(g)
@@ -406,7 +414,7 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                           f"{t_at!r}; method {method!r} keeps no partial result: only the "
                           "initial state is kept.", t=[t0],
                           y=full(np.array([t0]), np.asarray(y0, dtype=float)[:, None]),
-                          t_events=[], method=method,
+                          t_events=[], y_events=[], method=method,
                           t_stop=t0, given=given)
     finally:
         fun.trouble, trouble = None, fun.trouble
@@ -446,8 +454,11 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                    f"{message} The last state reached (t = {t_stop!r}) is kept as the last "
                    "sample.")
     y_out = full(t_out, y_out)
+    y_events = [full(np.asarray(te, dtype=float), np.asarray(ye, dtype=float).T)
+                if len(te) else np.empty((y_out.shape[0], 0))
+                for te, ye in zip(res.t_events, res.y_events, strict=True)]
     sim = Simulation(eqs, res, values, elapsed, notes, message=message, t=t_out, y=y_out,
-                     t_stop=t_stop, status=status, given=given)
+                     t_stop=t_stop, status=status, given=given, y_events=y_events)
     if (fixed and sim.status == "finished" and eqs.energy is not None and len(t_out) > 1
             and sim.energy_not_conserved() is None):
         drift = sim.energy_drift()
@@ -457,5 +468,5 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                 f"fixed step {step!r}: the step is probably too large for {method!r} (an "
                 "unstable explicit method grows without bound); the motion is not to be "
                 "trusted.")), message=message, t=t_out, y=y_out, t_stop=t_stop, status=status,
-                given=given)
+                given=given, y_events=y_events)
     return sim

@@ -342,9 +342,11 @@ class EquationsOfMotion:
         events : callable, sympy expression, :class:`Event`, or a list of those, optional
             Functions ``g(t, y)`` of the state y = (q, q') (with scipy's attributes
             ``terminal`` and ``direction``, see :func:`rigidmech.ode.event`), or expressions
-            of t, q(t), q'(t), the constants and the inputs, compiled once (an
-            :class:`Event` gives them ``terminal`` and ``direction``). Their zeros are in
-            :attr:`Simulation.t_events`; a terminal one ends the run with status ``"event"``.
+            of t, q(t), q'(t), q''(t) (solved from the equations at the state), the
+            constants and the inputs, compiled once (an :class:`Event` gives them
+            ``terminal`` and ``direction``). Their zeros are in :attr:`Simulation.t_events`,
+            the states there in :meth:`Simulation.at_events`; a terminal one ends the run
+            with status ``"event"``.
         max_steps : int
             Largest number of steps (default 10^6); beyond it the run stops with status
             ``"failed"`` and the samples so far.

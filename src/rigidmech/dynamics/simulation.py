@@ -31,7 +31,10 @@ _STATUS = {0: "finished", 1: "event", -1: "failed", 2: "interrupted"}
 class Event:
     """An event of a simulation written as an expression of the motion (ch. 27): the times
     where ``expr`` (of t, the coordinates q(t), their rates q'(t), the constants and the inputs)
-    crosses zero are located; ``terminal`` stops the run there.
+    crosses zero are located; ``terminal`` stops the run there. The expression may also hold
+    the accelerations q''(t), the solution of the equations of motion at the state (an event
+    on an acceleration or on a connection action written with q'', such as a normal force
+    that vanishes). The states at the events: :meth:`Simulation.at_events`.
 
     Parameters
     ----------
@@ -115,11 +118,12 @@ class Simulation:
     """
 
     __slots__ = ("_eqs", "result", "t", "q", "u", "_params", "elapsed", "notes", "status",
-                 "message", "_names", "_t_events", "_method", "_t_stop", "_given")
+                 "message", "_names", "_t_events", "_y_events", "_method", "_t_stop",
+                 "_given")
 
     def __init__(self, eqs, result, params, elapsed, notes=(), *, status=None, message=None,
                  names=None, t=None, y=None, t_events=None, method=None, t_stop=None,
-                 given=None):
+                 given=None, y_events=None):
         self._eqs = eqs
         self.result = result
         self._names = tuple(names) if names is not None else tuple(eqs.names)
@@ -135,6 +139,11 @@ class Simulation:
         self._t_events = (list(t_events) if t_events is not None else
                           [np.asarray(x) for x in result.t_events] if result is not None
                           else [])
+        if y_events is None and t_events is None and result is not None:
+            y_events = [np.asarray(ye, dtype=float).reshape(-1, 2 * n).T
+                        for ye in result.y_events]
+        self._y_events = (None if y_events is None else
+                          [np.asarray(ye, dtype=float).reshape(2 * n, -1) for ye in y_events])
         self._method = method if method is not None else (result.method if result else None)
         self._t_stop = float(t_stop) if t_stop is not None else (
             float(self.t[-1]) if self.t.size else math.nan)
@@ -217,8 +226,38 @@ class Simulation:
 
     @property
     def t_events(self) -> list:
-        """For each event given to ``simulate``, the times where it occurred."""
+        """For each event given to ``simulate``, the times where it occurred (the states
+        there: :meth:`at_events`)."""
         return list(self._t_events)
+
+    def at_events(self, which=0) -> Simulation:
+        """The states at the occurrences of the event ``which`` (its index in the list of
+        ``events`` given to ``simulate``), as a :class:`Simulation` whose samples are those
+        states (ch. 27): its :attr:`t` is :attr:`t_events` ``[which]``, its :attr:`q` and
+        :attr:`u` the coordinates and rates located there, and every computation along a
+        motion (:meth:`evaluate` with q'', :meth:`energy`, :meth:`connection_action`) works
+        on it. The states are the solver's, at the located zeros (the accuracy of the run),
+        not interpolated from the samples.
+
+        Parameters
+        ----------
+        which : int
+            The index of the event, in the order given to ``simulate``.
+
+        Examples
+        --------
+        >>> import numpy as np, sympy as sp, rigidmech as rm
+        >>> x = rm.coordinates("x")
+        >>> eqs = rm.EquationsOfMotion(coordinates=(x,), mass_matrix=sp.ImmutableMatrix([[1]]),
+        ...                            forcing=sp.ImmutableMatrix([[-x]]))
+        >>> sim = eqs.simulate(t=(0, 7), q0=[1.0], events=[x], rtol=1e-10, atol=1e-12)
+        >>> at = sim.at_events(0)               # x = cos t crosses 0 at pi/2 and 3 pi/2
+        >>> at.t.round(8).tolist(), at.u.round(8).tolist()
+        ([1.57079633, 4.71238898], [[-1.0, 1.0]])
+        >>> (at.evaluate(x.diff(rm.t, 2)) + at.q[0]).round(12).tolist()
+        [0.0, 0.0]
+        """
+        return _along.at_events(self, which)
 
     def check(self):
         """Raise :class:`~rigidmech._core.errors.NumericalError` if the run failed (status
@@ -275,7 +314,7 @@ class Simulation:
         return _along.evaluate(self, expr, frame)
 
     def connection_action(self, parent, child, *, basis=None, system=None,
-                          label=None) -> dict:
+                          label=None, at=None) -> dict:
         """The action of ``parent`` on ``child`` through their connection (ch. 18.2) along the
         motion: its six components as time series, in one call (compiled once).
 
@@ -294,6 +333,8 @@ class Simulation:
         label : str, optional
             The connection's label, when several connections join the same two solids (as
             :meth:`System.connection_action`).
+        at : Point, optional
+            The point of the moment (L, M, N), with ``basis``; default: the joint's point.
 
         In a system with linking connections (closed loops, rolling, gears) the Lagrange
         multipliers the actions are written with are evaluated at each sample from the
@@ -317,8 +358,16 @@ class Simulation:
         >>> N = sim.connection_action(R0, bob, basis=R0)
         >>> bool(np.allclose(N["X"], -2.0 * 9.81))       # at rest below the pivot: -m g
         True
+
+        The resultant R and the moment M(A) at a point A as vectors in R0, shape (3, n):
+
+        >>> A = R0.point("A", 0, 0.5, 0)
+        >>> N = sim.connection_action(R0, bob, basis=R0, at=A)
+        >>> R, M_A = np.array([N[k] for k in "XYZ"]), np.array([N[k] for k in "LMN"])
+        >>> bool(np.allclose(M_A[2], -0.5 * 2.0 * 9.81))  # M(A) = M(O) + R x OA, OA = 0.5 j
+        True
         """
-        return _along.connection_action(self, parent, child, basis, system, label)
+        return _along.connection_action(self, parent, child, basis, system, label, at)
 
     def energy(self):
         """Total mechanical energy T + V along the motion."""

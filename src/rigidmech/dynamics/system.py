@@ -474,6 +474,19 @@ class System(LinkedParameters):
         >>> s.act(rm.gravity(g * R0.i))
         >>> s.connection_action(R0, s.bodies[0]).resultant
         -L*m*Derivative(q(t), t)**2*R1.i + L*m*Derivative(q(t), (t, 2))*R1.j - g*m*R0.i
+
+        The resultant as a vector of R0 and the moment at another point A, in any frame
+        (:meth:`~rigidmech.vectors.Vector.express`, :meth:`~rigidmech.vectors.Vector.components`,
+        :meth:`~rigidmech.torsors.Torsor.moment_at`); along a motion,
+        :meth:`Simulation.connection_action` with ``basis`` and ``at``:
+
+        >>> A = R0.point("A", 0, 1, 0)
+        >>> action = s.connection_action(R0, s.bodies[0])
+        >>> action.resultant.express(R0).components(R0)[0]
+        -L*m*sin(q(t))*Derivative(q(t), (t, 2)) - L*m*cos(q(t))*Derivative(q(t), t)**2 - g*m
+        >>> M_A = action.moment_at(A).components(R0)      # M(A) = M(O) + R x OA
+        >>> M_A[0], M_A[1]
+        (0, 0)
         """
         return _connection_actions.connection_action(self, parent, child, label)
 

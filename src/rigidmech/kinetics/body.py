@@ -23,7 +23,7 @@ from .._core.validation import nonnegative
 from ..inertia import InertiaOperator
 from ..kinematics import Solid
 from ..torsors import Torsor
-from ..vectors import Frame, Point, Vector
+from ..vectors import Curve, Frame, Point, Vector
 from ..vectors.points import check_point
 
 __all__ = ["Body"]
@@ -180,6 +180,75 @@ class Body(Solid):
             raise ArgumentTypeError(f"`basis` must be a Frame; got {type(basis).__name__}.")
         frame = basis.translated("R_" + name if frame_name is None else frame_name, at)
         return cls(name, frame, mass=mass, centre=at)
+
+    @classmethod
+    def particle_on_curve(cls, name: str, curve: Curve, coordinate, *, mass,
+                          point_name: str | None = None,
+                          frame_name: str | None = None) -> Body:
+        """A particle constrained to a curve (a bead on a wire, a point on a given path;
+        book, ch. 17-18, 25): its position is the point of ``curve`` at the parameter value
+        ``coordinate``, a parameter of situation s(t) (or a function of time given in
+        advance).
+
+        The curve is described relative to its frame, which may move (a wire that turns:
+        ``R0.rotated("R1", about=R0.k, angle=omega * t)``). The constraint is perfect: the
+        particle's position is written with s(t) alone, so the wire's reaction, normal to the
+        curve, does no work and does not appear in the equations of motion (Lagrange's way,
+        ch. 25); along a motion it is m a(P) minus the given forces
+        (:meth:`Simulation.evaluate <rigidmech.dynamics.Simulation.evaluate>` of that
+        vector).
+
+        Parameters
+        ----------
+        name : str
+            The body's name.
+        curve : Curve
+            The curve r(s) relative to its frame (:class:`rigidmech.vectors.Curve`).
+        coordinate : sympy expression
+            The parameter of the curve along the motion, usually a coordinate s(t).
+        mass : scalar
+            As for :meth:`particle`.
+        point_name : str, optional
+            Name of the particle's point (its :attr:`centre`); default ``"P_" + name``.
+        frame_name : str, optional
+            As for :meth:`particle`.
+
+        Returns
+        -------
+        Body
+
+        Raises
+        ------
+        ArgumentTypeError
+            If ``curve`` is not a Curve, or ``coordinate`` not a sympy expression.
+
+        Examples
+        --------
+        A bead on a circular hoop of radius R turning at omega about the vertical
+        (ch. 17-18): its kinetic energy is m (R^2 theta'^2 + R^2 omega^2 sin^2 theta) / 2.
+
+        >>> import sympy as sp, rigidmech as rm
+        >>> theta = rm.coordinates("theta"); R, w, m = rm.constants("R omega m", positive=True)
+        >>> phi = sp.Symbol("phi", real=True)
+        >>> R0 = rm.Frame("R0"); R1 = R0.rotated("R1", about=R0.k, angle=w * rm.t)
+        >>> hoop = rm.Curve(R1.vector(R * sp.sin(phi), 0, -R * sp.cos(phi)), phi, R1)
+        >>> bead = Body.particle_on_curve("bead", hoop, theta, mass=m)
+        >>> sp.factor(sp.simplify(bead.kinetic_energy(R0)))
+        R**2*m*(omega**2*sin(theta(t))**2 + Derivative(theta(t), t)**2)/2
+        """
+        if not isinstance(curve, Curve):
+            raise ArgumentTypeError(
+                f"`curve` must be a rigidmech.vectors.Curve; got {type(curve).__name__}.")
+        try:
+            value = sp.sympify(coordinate)
+        except (sp.SympifyError, TypeError):
+            raise ArgumentTypeError(
+                f"`coordinate` must be a sympy expression (a coordinate s(t)); got "
+                f"{coordinate!r}.") from None
+        comps = curve.position().components(curve.frame).subs(curve.parameter, value)
+        at = curve.frame.origin.moved("P_" + str(name) if point_name is None else point_name,
+                                      Vector.from_components(curve.frame, list(comps)))
+        return cls.particle(name, at, mass=mass, frame_name=frame_name)
 
     @property
     def mass(self):

@@ -86,6 +86,7 @@ class _Model:
 
     def __init__(self, system, params, stabilization=(0.0, 0.0)):
         self.alpha, self.beta = stabilization
+        self.system, self.params = system, dict(params)   # for ContactMotion.evaluate
         eqs = system.equations_of_motion(open_contacts=True)
         qs = system.coordinates
         n = len(qs)

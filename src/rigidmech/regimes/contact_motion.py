@@ -95,9 +95,101 @@ class ContactMotion(PhasedMotion):
 
     __slots__ = ("_model",)
 
-    def __init__(self, phases, model, *, status="finished", message=""):
-        super().__init__(phases, status=status, message=message)
+    def __init__(self, phases, model, *, status="finished", message="", regimes=None):
+        super().__init__(phases, status=status, message=message, regimes=regimes)
         self._model = model
+
+    def accelerations(self, time):
+        """The accelerations q'' at ``time`` (a number or an array of times), from the
+        equations of the regime of the phase then (at a switching instant, the phase that
+        ends there, as :meth:`contact_actions`): shape (n,) or (n, len(time)), in the order
+        of the system's coordinates (ch. 21.4, 23). The last half of
+        :meth:`~rigidmech.regimes.PhasedMotion.derivative`.
+
+        Examples
+        --------
+        A block on a plane inclined by alpha (x down the slope), friction f = 0.2, thrown
+        up the slope: it decelerates at g (sin alpha + f cos alpha), stops, then slides back
+        at g (sin alpha - f cos alpha) (tan alpha > f).
+
+        >>> import math, rigidmech as rm
+        >>> from rigidmech.actions import Coulomb, FrictionContact
+        >>> from rigidmech.kinematics import ContactKinematics
+        >>> x, y = rm.coordinates("x y"); alpha, f, g = 0.5, 0.2, 9.81
+        >>> R0 = rm.Frame("R0"); G = R0.point("G", x, y, 0); Rb = R0.translated("Rb", G)
+        >>> s = rm.System(galilean=R0)
+        >>> s.connect(R0, rm.Body("block", frame=Rb, mass=1, centre=G), FrictionContact(
+        ...     ContactKinematics(Rb, R0, at=R0.point("I", x, y, 0), normal=R0.j),
+        ...     friction=Coulomb(f)))
+        >>> s.act(rm.gravity(g * (math.sin(alpha) * R0.i - math.cos(alpha) * R0.j)))
+        >>> m = contact_motion(s, 2.0, {"x": 0.0, "y": 0.0}, {"x": -3.0, "y": 0.0})
+        >>> m.regimes
+        ('slip-', 'slip+')
+        >>> a_up, a_down = m.accelerations([0.1, 1.5])[0]
+        >>> bool(abs(a_up - g * (math.sin(alpha) + f * math.cos(alpha))) < 1e-9)
+        True
+        >>> bool(abs(a_down - g * (math.sin(alpha) - f * math.cos(alpha))) < 1e-9)
+        True
+        """
+        return self.derivative(time)[self._model.n:]
+
+    def evaluate(self, expr, time):
+        """An expression of the motion at ``time`` (a number or an array of times): of t,
+        the coordinates q(t), their rates and their accelerations q''(t) (those of the
+        regime of the phase then, :meth:`accelerations`) and the constants given to
+        :func:`contact_motion` (ch. 21.4, 23). The forces of the contacts are not symbols
+        of the system: :meth:`contact_actions` gives them.
+
+        Examples
+        --------
+        A block pushed along a rough floor (f = 0.25) slows down at f g: m x'' is the
+        friction force, -f m g while it slides.
+
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import Coulomb, FrictionContact
+        >>> from rigidmech.kinematics import ContactKinematics
+        >>> x, y = rm.coordinates("x y"); m = rm.constants("m", positive=True)
+        >>> R0 = rm.Frame("R0"); G = R0.point("G", x, y, 0); Rb = R0.translated("Rb", G)
+        >>> s = rm.System(galilean=R0)
+        >>> s.connect(R0, rm.Body("block", frame=Rb, mass=m, centre=G), FrictionContact(
+        ...     ContactKinematics(Rb, R0, at=R0.point("I", x, y, 0), normal=R0.j),
+        ...     friction=Coulomb(0.25)))
+        >>> s.act(rm.gravity(-9.81 * R0.j))
+        >>> motion = contact_motion(s, 1.0, {"x": 0, "y": 0}, {"x": 2.0, "y": 0}, m=2.0)
+        >>> motion.evaluate(m * x.diff(rm.t, 2), [0.1, 0.5]).round(9).tolist()
+        [-4.905, -4.905]
+        """
+        import sympy as sp
+
+        from ..vectors import t as time_symbol
+
+        model = self._model
+        q_s, u_s, a_s, rule = model.system.symbols()
+        try:
+            e = sp.sympify(expr).xreplace(rule)
+        except (sp.SympifyError, TypeError):
+            raise ArgumentTypeError(f"`expr` must be a sympy expression of the motion; got "
+                                    f"{type(expr).__name__}.") from None
+        left = e.atoms(sp.Derivative) | e.atoms(sp.core.function.AppliedUndef)
+        if left:
+            raise ArgumentError(
+                f"`expr` contains {', '.join(sorted(map(str, left)))}, which is neither a "
+                "coordinate of the system nor one of its first two derivatives.")
+        constants = sorted(e.free_symbols - set(q_s) - set(u_s) - set(a_s) - {time_symbol},
+                           key=lambda c: c.name)
+        missing = [c.name for c in constants if c.name not in model.params]
+        if missing:
+            raise ArgumentError(f"`expr` depends on {missing}, which the motion has no value "
+                                "for; give them to contact_motion().")
+        f = sp.lambdify([time_symbol, list(q_s), list(u_s), list(a_s), *constants], e,
+                        "numpy")
+        values = [float(model.params[c.name]) for c in constants]
+        ts = np.atleast_1d(np.asarray(time, dtype=float))
+        y, acc, n = self(ts).reshape(-1, ts.size), self.accelerations(ts), model.n
+        acc = acc.reshape(n, ts.size)
+        out = np.array([float(f(t, y[:n, i], y[n:, i], acc[:, i], *values))
+                        for i, t in enumerate(ts)])
+        return out[0] if np.ndim(time) == 0 else out
 
     @property
     def contacts(self) -> tuple:
@@ -314,6 +406,7 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
         done = getattr(exc, "motion", None)
         if done is not None:
             exc.motion = ContactMotion(done.phases, model, status=done.status,
-                                       message=done.message)
+                                       message=done.message, regimes=done._regimes)
         raise
-    return ContactMotion(motion.phases, model, status=motion.status, message=motion.message)
+    return ContactMotion(motion.phases, model, status=motion.status, message=motion.message,
+                         regimes=motion._regimes)

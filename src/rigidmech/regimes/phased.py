@@ -195,6 +195,8 @@ class PhasedMotion:
         once at the end of a phase and once at the start of the next).
     y : ndarray, shape (n, len(t))
 
+    Keyword ``regimes``: the :class:`Regime` of each name, for :meth:`derivative`.
+
     Examples
     --------
     >>> import numpy as np
@@ -216,11 +218,12 @@ class PhasedMotion:
     2      rest    1      2    -
     """
 
-    __slots__ = ("_phases", "_names", "status", "message")
+    __slots__ = ("_phases", "_names", "_regimes", "status", "message")
 
-    def __init__(self, phases, names=None, *, status="finished", message=""):
+    def __init__(self, phases, names=None, *, status="finished", message="", regimes=None):
         self._phases = tuple(phases)
         self._names = tuple(names) if names is not None else None
+        self._regimes = None if regimes is None else dict(regimes)
         #: how the run ended: "finished" (the end of the interval, or a regime without
         #: successor), "interrupted" (Ctrl-C, the progress callback) or "failed" (a phase
         #: failed, too many phases, chattering: see :func:`integrate_phases`); the last
@@ -254,10 +257,40 @@ class PhasedMotion:
         """The state at time(s) ``t`` from the phases' dense outputs (n,) or (n, len(t))."""
         ts = np.atleast_1d(np.asarray(t, dtype=float))
         out = np.empty((len(self._phases[0].y_start), ts.size))
-        ends = np.array([p.end for p in self._phases])
         for i, s in enumerate(ts):
-            k = min(int(np.searchsorted(ends, s, side="left")), len(self._phases) - 1)
-            out[:, i] = self._phases[k].solution.sol(s)
+            out[:, i] = self._phases[self._phase_at(s)].solution.sol(s)
+        return out[:, 0] if np.ndim(t) == 0 else out
+
+    def _phase_at(self, s):
+        """The index of the phase at time ``s`` (at a switch, the phase that ends there)."""
+        ends = np.array([p.end for p in self._phases])
+        return min(int(np.searchsorted(ends, s, side="left")), len(self._phases) - 1)
+
+    def derivative(self, t):
+        """dy/dt at time(s) ``t`` from the equations of the regime of the phase then (at a
+        switching instant, the phase that ends there), evaluated on the state of the
+        phases' dense outputs; shape (n,) or (n, len(t)). For a state y = (q, q') its last
+        half is q'', the accelerations along each phase (ch. 21.4, 23).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> fall = Regime("fall", lambda t, y: np.array([y[1], -10.0]),
+        ...               [Guard("lands", lambda t, y: y[0], target="rest", direction=-1,
+        ...                      reset=lambda t, y: [0.0, 0.0])])
+        >>> m = integrate_phases([fall, Regime("rest")], "fall", (0.0, 2.0), [5.0, 0.0])
+        >>> m.derivative([0.5, 1.0, 1.5]).round(9).tolist()     # the switch at 1: falling
+        [[-5.0, -10.0, 0.0], [-10.0, -10.0, 0.0]]
+        """
+        if self._regimes is None:
+            raise ArgumentError(
+                "derivative() needs the equations of the regimes, which this motion was not "
+                "given; build it with integrate_phases() (or pass regimes= to PhasedMotion).")
+        ts = np.atleast_1d(np.asarray(t, dtype=float))
+        out = np.empty((len(self._phases[0].y_start), ts.size))
+        for i, s in enumerate(ts):
+            phase = self._phases[self._phase_at(s)]
+            out[:, i] = self._regimes[phase.regime].rhs(s, phase.solution.sol(s))
         return out[:, 0] if np.ndim(t) == 0 else out
 
     def table(self) -> str:
@@ -395,7 +428,7 @@ def integrate_phases(regimes, start, t_span, y0, *, method: str = "dop853",
     try:
         return _phases(check, current, t0, t1, y, prog, method=method, rtol=rtol, atol=atol,
                        max_step=max_step, max_phases=max_phases,
-                       max_instant_switches=max_instant_switches)
+                       max_instant_switches=max_instant_switches, regimes=by_name)
     finally:
         if prog is not None and prog is not progress:
             prog.close()
@@ -411,14 +444,14 @@ def _stopped(phases, name, t, y, res, how):
     return phases
 
 
-def _fail(phases, message):
+def _fail(phases, message, regimes=None):
     exc = NumericalError(message)
-    exc.motion = PhasedMotion(phases, status="failed", message=message)
+    exc.motion = PhasedMotion(phases, status="failed", message=message, regimes=regimes)
     return exc
 
 
 def _phases(check, current, t, t1, y, prog, *, method, rtol, atol, max_step, max_phases,
-            max_instant_switches):
+            max_instant_switches, regimes=None):
     phases, instant = [], 0
     while True:
         regime = check(current)
@@ -433,11 +466,12 @@ def _phases(check, current, t, t1, y, prog, *, method, rtol, atol, max_step, max
                    else "Ctrl-C (KeyboardInterrupt)")
             return PhasedMotion(phases, status="interrupted", message=(
                 f"The integration was stopped by {who} at t = {res.t_stop!r}, in phase "
-                f"{len(phases)} ({regime.name}); the phases up to there are kept."))
+                f"{len(phases)} ({regime.name}); the phases up to there are kept."),
+                regimes=regimes)
         if not res.success:
             message = (f"phase {len(phases) + 1} ({regime.name}) failed at t = "
                        f"{res.t[-1] if len(res.t) else t}: {res.message}")
-            raise _fail(_stopped(phases, regime.name, t, y, res, "failed"), message)
+            raise _fail(_stopped(phases, regime.name, t, y, res, "failed"), message, regimes)
         t_end, y_end = float(res.t[-1]), res.y[:, -1].copy()
         fired = None
         if res.status == 1:
@@ -455,11 +489,12 @@ def _phases(check, current, t, t1, y, prog, *, method, rtol, atol, max_step, max
             raise _fail(phases,
                 f"chattering: {instant} switches at t = {t_end} without the time advancing "
                 f"(last: {regime.name} -> {nxt} by '{guard.name}'); the transition rules "
-                "must leave the state where the new regime's guards do not fire at once.")
+                "must leave the state where the new regime's guards do not fire at once.",
+                regimes)
         if nxt is None or t_end >= t1:
             break
         if len(phases) >= max_phases:
-            raise _fail(phases, f"more than `max_phases` = {max_phases} phases before "
-                                f"t = {t1}; last regime {regime.name} at t = {t_end}.")
+            raise _fail(phases, f"more than `max_phases` = {max_phases} phases before t = "
+                                f"{t1}; last regime {regime.name} at t = {t_end}.", regimes)
         y, t, current = guard.reset(t_end, y_end), t_end, nxt
-    return PhasedMotion(phases)
+    return PhasedMotion(phases, regimes=regimes)

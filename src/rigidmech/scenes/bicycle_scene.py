@@ -146,8 +146,9 @@ def _state_matrix(M, C1, K0, K2, g, v):
 def critical_speeds(M, C1, K0, K2, g, v_max=20.0):
     """The weave and capsize speeds of M q'' + v C1 q' + (g K0 + v^2 K2) q = 0: the lower and
     upper ends of the first interval of speeds where every eigenvalue has a negative real
-    part (:func:`scipy.optimize.brentq` on the largest real part, bracketed on a grid of
-    step 0.1 m/s from 0.1 to ``v_max``); None where no crossing is found.
+    part (:func:`rigidmech.vibrations.stability_changes` without margin, ``tol=0``: Brent's
+    method on the largest real part, bracketed on a grid of step 0.1 m/s from 0.1 to
+    ``v_max``); None where no crossing is found.
 
     Examples
     --------
@@ -157,20 +158,16 @@ def critical_speeds(M, C1, K0, K2, g, v_max=20.0):
     >>> round(w, 10), c
     (2.0, None)
     """
-    from scipy.optimize import brentq  # imported on use
+    from ..vibrations import stability_changes  # the library's finder, without margin
 
-    def growth(v):
-        return np.linalg.eigvals(_state_matrix(M, C1, K0, K2, g, v)).real.max()
+    def exponents(v):
+        return np.linalg.eigvals(_state_matrix(M, C1, K0, K2, g, v))
 
     grid = np.arange(0.1, v_max + 1e-9, 0.1)
-    values = [growth(v) for v in grid]
-    weave = capsize = None
-    for a, b, fa, fb in zip(grid[:-1], grid[1:], values[:-1], values[1:], strict=True):
-        if weave is None and fa > 0 >= fb:
-            weave = brentq(growth, a, b, xtol=1e-12)
-        elif weave is not None and fa < 0 <= fb:
-            capsize = brentq(growth, a, b, xtol=1e-12)
-            break
+    changes = stability_changes(exponents, None, grid, tol=0.0)
+    weave = next((c.value for c in changes if c.becomes == "stable"), None)
+    capsize = None if weave is None else next(
+        (c.value for c in changes if c.value > weave and c.becomes == "unstable"), None)
     return weave, capsize
 
 

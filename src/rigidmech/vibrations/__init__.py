@@ -4,10 +4,12 @@ One degree of freedom in closed form (:mod:`~rigidmech.vibrations.one_dof`), nat
 several degrees of freedom (:mod:`~rigidmech.vibrations.modes`), the linearisation of
 equations of motion about an equilibrium or a steady motion
 (:mod:`~rigidmech.vibrations.linearize`), equilibria, their stability and bifurcations
-(:mod:`~rigidmech.vibrations.equilibria`), rotors and pendulums
+(:mod:`~rigidmech.vibrations.equilibria`), the critical value of a parameter where a
+linearised motion changes stability (:mod:`~rigidmech.vibrations.critical`), rotors and pendulums
 (:mod:`~rigidmech.vibrations.rotors`).
 """
 
+from .critical import StabilityChange, critical_value, stability_changes
 from .equilibria import Bifurcation, bifurcation, equilibria, potential_stability, stability
 from .linearize import LinearSystem, linearize
 from .modes import Modes, harmonic_response_direct, natural_modes, plot_frequency_response
@@ -54,7 +56,7 @@ __all__ = [
     "dry_friction_equivalent_damping", "structural_equivalent_damping", "duhamel_response",
     "Modes", "natural_modes", "harmonic_response_direct", "plot_frequency_response",
     "LinearSystem", "linearize", "equilibria", "stability", "potential_stability",
-    "Bifurcation", "bifurcation",
+    "Bifurcation", "bifurcation", "critical_value", "stability_changes", "StabilityChange",
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
     "torsion_pendulum_period",

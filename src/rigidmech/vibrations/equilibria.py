@@ -32,6 +32,7 @@ from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
 from .._core.validation import as_declared
 from ._symbols import normalise
+from .critical import growth
 from .linearize import _ROUNDING, _residual_vanishes, _values, linearize, rounding_allowance
 from .modes import is_symmetric
 
@@ -318,7 +319,7 @@ def _classify(M, C, K, tol=1e-9):
         return "undecided"
     s = np.linalg.eigvals(A)
     scale = max(np.max(np.abs(s)), 1e-300)
-    if np.max(s.real) > tol * scale:
+    if growth(s, tol) > 0:   # the rule of critical_value
         return "unstable"
     if np.max(s.real) < -tol * scale:
         return "asymptotically stable"
