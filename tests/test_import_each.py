@@ -7,9 +7,11 @@ test process proves nothing about that, so the imports run in fresh interpreters
 * one subprocess walks the package with :func:`pkgutil.walk_packages` and imports every module
   in sequence (a quick check that everything imports at all, with warnings as errors);
 * one subprocess per layer package imports that layer first, then its modules, with no other
-  rigidmech layer imported beforehand.
+  rigidmech layer imported beforehand (marked slow: twenty fresh interpreters, each importing
+  sympy and most of rigidmech; CI runs it in its slow stage).
 
-CI additionally imports each module in its own interpreter (``.ci/import_each.py``).
+CI additionally imports each module in its own interpreter (``.ci/import_each.py``), which
+contains the per-layer check: the default run keeps the walk in one interpreter.
 """
 
 import json
@@ -94,6 +96,7 @@ def test_every_module_imports_in_sequence():
     assert not report["walk_errors"] and not report["failures"], format_failures(report)
 
 
+@pytest.mark.slow  # one interpreter per layer; also contained in CI's .ci/import_each.py stage
 @pytest.mark.parametrize("layer", layer_packages())
 def test_layer_imports_on_its_own(layer):
     report = import_in_fresh_interpreter(layer)

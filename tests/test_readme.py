@@ -28,5 +28,12 @@ def test_readme_keeps_exactly_two_setup_commands():
     lines = [ln for ln in block.splitlines() if ln.strip()]
     assert lines == [
         'python -m pip install -e . && python -m rigidmech run double-pendulum',
-        'python -m pip install -e ".[test]" && python -m pytest',
+        'python -m pip install -e ".[test]" && python -m pytest -n auto',
     ]
+
+
+def test_ci_runs_the_readmes_test_command():
+    # .ci/run installs and tests the way the README says (kept in sync by hand, checked here)
+    ci = (README.parent / ".ci" / "run").read_text()
+    assert 'python -m pip install -e ".[test]"\n' in ci
+    assert 'run_stage check "pytest" python -m pytest -n auto\n' in ci

@@ -142,3 +142,26 @@ def test_multipliers_need_a_state_on_the_constraints():
                                pin_force(0.3, 1.0), rtol=1e-7)
     with pytest.raises(ArgumentError, match=r"not on the constraints"):
         s.multipliers(q, u + [0, 1.001e-9, 0], params=consts)
+
+
+def test_multipliers_decide_the_time_dependence_once_per_equations(monkeypatch):
+    """Whether the equations depend on t explicitly is a property of the equations: decided at
+    the first multipliers() call, not re-derived (symbolically) at every state of a motion."""
+    import rigidmech.dynamics.linked as linked
+
+    calls = []
+
+    def counting(*args, **kwargs):
+        calls.append(1)
+        return rm.dynamics.assembly.explicit_time(*args, **kwargs)
+
+    monkeypatch.setattr(linked, "explicit_time", counting)
+    s = pinned_rod()
+    consts = {"u": U, "q": M, "g": G_}
+    for theta in (0.3, 0.5):
+        q0, u0 = s.assemble({"theta": theta, "x": 0.0, "y": -1.0}, independent=["theta"],
+                            rates={"theta": 1.0}, params={"u": U})
+        np.testing.assert_allclose(
+            s.multipliers(list(q0.values()), list(u0.values()), params=consts),
+            pin_force(theta, 1.0), rtol=1e-10)
+    assert len(calls) == 1

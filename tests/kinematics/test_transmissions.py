@@ -8,7 +8,7 @@ import math
 
 import pytest
 import sympy as sp
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from rigidmech.kinematics import BeltDrive, EpicyclicTrain, Gear, GearPair, GearTrain
@@ -54,11 +54,16 @@ def test_open_belt_with_equal_pulleys_and_limits():
 
 
 @given(r1=st.floats(0.1, 5), r2=st.floats(0.1, 5), extra=st.floats(0.01, 10))
+# radii 1 ulp apart: w2 - w1 = 4 beta = -5.6e-17 is below half an ulp of pi, so float(w1) and
+# float(w2) are both the double nearest pi; the order is read from w2 - w1 itself (the wrap
+# angles are pi -+ 2 beta: sympy cancels pi exactly and the sign of beta is that of r2 - r1)
+@example(r1=math.nextafter(0.1, 1.0), r2=0.1, extra=1.0)
 def test_open_belt_wrap_angles_sum_to_two_pi(r1, r2, extra):
     belt = BeltDrive(r1, r2, abs(r2 - r1) + extra)
     w1, w2 = belt.wrap_angles
     assert math.isclose(float(w1 + w2), 2 * math.pi, rel_tol=1e-12)
-    assert (float(w1) <= float(w2)) == (r1 <= r2)  # the larger pulley is wrapped more
+    # the larger pulley is wrapped more, equal pulleys equally
+    assert sp.sign(w2 - w1) == sp.sign(r2 - r1)
 
 
 def test_bad_input_is_refused():

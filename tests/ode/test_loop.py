@@ -128,6 +128,7 @@ def test_t_eval_samples_equal_the_dense_output_at_those_times(method):
     np.testing.assert_array_equal(r.y, dense.sol(t_eval))
 
 
+@pytest.mark.slow  # 20,000 steps under tracemalloc: run by CI's slow stage, like test_issue10_gaps'
 def test_t_eval_memory_is_proportional_to_the_samples():
     # 10,000 steps (max_step), 100 samples: the peak stays far below what keeping the steps
     # costs (measured: 2.2 MB for the steps, under 0.1 MB for the samples)

@@ -70,23 +70,28 @@ def test_torsor_of_sliders_errors():
 
 
 # -- domains and their measure ---------------------------------------------------------------
+# the domains are built by the test (a lambda each), not at collection: deriving a measure
+# costs about 0.3 s, paid otherwise by every process that collects this module
 @pytest.mark.parametrize(
     ("domain", "measure", "total"),
     [
-        pytest.param(Domain(R0, [R * sp.cos(u), R * sp.sin(u), 0], (u, 0, 2 * sp.pi)), R,
+        pytest.param(lambda: Domain(R0, [R * sp.cos(u), R * sp.sin(u), 0], (u, 0, 2 * sp.pi)), R,
                      2 * sp.pi * R, id="circle-length"),
-        pytest.param(Domain(R0, [u, 2 * u, 2 * u], (u, 0, L)), 3, 3 * L, id="segment-length"),
-        pytest.param(Domain(R0, [R * sp.sin(th) * sp.cos(ph), R * sp.sin(th) * sp.sin(ph),
-                                 R * sp.cos(th)], (th, 0, sp.pi), (ph, 0, 2 * sp.pi)),
+        pytest.param(lambda: Domain(R0, [u, 2 * u, 2 * u], (u, 0, L)), 3, 3 * L,
+                     id="segment-length"),
+        pytest.param(lambda: Domain(R0, [R * sp.sin(th) * sp.cos(ph), R * sp.sin(th) * sp.sin(ph),
+                                         R * sp.cos(th)], (th, 0, sp.pi), (ph, 0, 2 * sp.pi)),
                      R**2 * sp.sin(th), 4 * sp.pi * R**2, id="sphere-area"),
-        pytest.param(Domain(R0, [r * sp.sin(th) * sp.cos(ph), r * sp.sin(th) * sp.sin(ph),
-                                 r * sp.cos(th)], (r, 0, R), (th, 0, sp.pi), (ph, 0, 2 * sp.pi)),
+        pytest.param(lambda: Domain(R0, [r * sp.sin(th) * sp.cos(ph), r * sp.sin(th) * sp.sin(ph),
+                                         r * sp.cos(th)], (r, 0, R), (th, 0, sp.pi),
+                                         (ph, 0, 2 * sp.pi)),
                      r**2 * sp.sin(th), 4 * sp.pi * R**3 / 3, id="ball-volume"),
-        pytest.param(Domain(R0, [u, v, 0], (v, 0, h * (1 - u / L)), (u, 0, L)), 1, L * h / 2,
-                     id="triangle-area"),
+        pytest.param(lambda: Domain(R0, [u, v, 0], (v, 0, h * (1 - u / L)), (u, 0, L)), 1,
+                     L * h / 2, id="triangle-area"),
     ],
 )
 def test_measure_element_and_total(domain, measure, total):
+    domain = domain()
     assert sp.simplify(domain.measure - measure) == 0
     assert sp.simplify(total_measure(1, domain) - total) == 0
 

@@ -215,10 +215,12 @@ class LinkedParameters:
             raise ConnectionError_("the system has no linking connection: no multiplier.")
         c = eqs.constraints
         given = merge_values(params, constants)
+        if "multipliers_explicit_time" not in eqs._cache:   # decided once for the equations
+            eqs._cache["multipliers_explicit_time"] = explicit_time(
+                [eqs.mass_matrix, eqs.forcing, *c.velocity, *c.bias,
+                 *[p for p in c.position if p is not None]], eqs.coordinates, eqs.inputs)
         depends = any(callable(given.get(w.func.__name__)) for w in eqs.inputs) \
-            or explicit_time([eqs.mass_matrix, eqs.forcing, *c.velocity, *c.bias,
-                              *[p for p in c.position if p is not None]],
-                             eqs.coordinates, eqs.inputs)
+            or eqs._cache["multipliers_explicit_time"]
         t = time_of(t, depends, "the equations or the constraints (or an input given as a "
                     "function of t)")
         values, inputs, _ = eqs._values(given)

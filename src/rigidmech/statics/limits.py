@@ -206,16 +206,28 @@ def limiting_equilibrium(statics, parameter, interval, *, values=None,
     def margin(p, mask):
         return _lp_margin(*data(p, mask))
 
+    grid = np.linspace(p0, p1, samples + 1)
+    # The margin of all the laws at the scan's points, as far as its scan went. A subset of
+    # the laws drops inequalities from the same linear program, so its margin is at least
+    # this one: where all the laws hold with a positive margin, so does every subset, and the
+    # subsets' scans start at the first point not known positive (the same brackets as a scan
+    # from the start, without solving again the programs before them).
+    held = []
+
     def first_root(mask):
-        grid = np.linspace(p0, p1, samples + 1)
-        m_prev = margin(grid[0], mask)
-        if m_prev <= 0:
+        start = 0
+        if mask is not everything:
+            while start < len(held) and held[start] > 0:    # held[k]: at grid[k + 1]
+                start += 1
+        elif margin(grid[0], mask) <= 0:
             return "start"
-        for a, c in zip(grid[:-1], grid[1:], strict=True):
-            m = margin(c, mask)
+        for k in range(start, samples):
+            m = margin(grid[k + 1], mask)
+            if mask is everything:
+                held.append(m)
             if m <= 0:
-                return brentq(lambda p: margin(p, mask), a, c, xtol=1e-15, rtol=1e-14)
-            m_prev = m
+                return brentq(lambda p: margin(p, mask), grid[k], grid[k + 1], xtol=1e-15,
+                              rtol=1e-14)
         return None
 
     everything = np.ones(len(conds), dtype=bool)
