@@ -1,7 +1,7 @@
 """Per-trajectory step sizes over a batch, in vectorised form (book, ch. 26.2).
 
 A batch ``y0`` of shape ``(n, batch)`` integrated by an embedded pair (``dopri5``, ``dop853``,
-``bs32``) with ``batch_steps="each"``: every trajectory has its own time, step size, error norm
+``bs32``) with ``stepping="each"``: every trajectory has its own time, step size, error norm
 and accept/reject decision (the same controller as one trajectory alone, column by column),
 while the stages of all the trajectories still running are evaluated in ONE call of the
 right-hand side on the active columns. A trajectory that reaches the end of ``t_span`` (or
@@ -13,7 +13,7 @@ trajectories still running, in their order in the batch) and ``t`` a float64 arr
 ``(m,)``, the time of each column (an autonomous ``fun`` ignores it; a non-autonomous one
 must broadcast it over the last axis). A ``fun`` that binds data to the batch's columns
 (parameters of shape ``(batch,)``) cannot follow the compaction: use
-``batch_steps="shared"``.
+``stepping="shared"``.
 
 The samples: at ``t_eval`` (each trajectory's interpolant of the step that covers a sample
 time; DOP853's seventh-order one costs three more evaluations, made only on the columns that
@@ -37,13 +37,13 @@ from ._driver import flat_tolerance
 from ._loop import MAX_FACTOR, MIN_FACTOR, PI_ERR_FLOOR, PI_KI, PI_KP, SAFETY
 from ._result import OdeResult
 
-__all__ = ["BATCH_STEPS", "integrate_each", "choose_batch_steps"]
+__all__ = ["STEPPING", "integrate_each", "choose_stepping"]
 
-#: The values of the option ``batch_steps`` of the embedded pairs.
-BATCH_STEPS = ("auto", "each", "shared")
+#: The values of the option ``stepping`` of the embedded pairs.
+STEPPING = ("auto", "each", "shared")
 
 
-def choose_batch_steps(batch_steps, *, batch, t_eval, dense_output, events, project):
+def choose_stepping(stepping, *, batch, t_eval, dense_output, events, project):
     """``"each"`` or ``"shared"``: how the steps of a run are chosen (the one rule).
 
     ``"auto"`` (the default) is ``"each"`` for a batch sampled at `t_eval` without dense
@@ -53,30 +53,30 @@ def choose_batch_steps(batch_steps, *, batch, t_eval, dense_output, events, proj
 
     Examples
     --------
-    >>> choose_batch_steps("auto", batch=True, t_eval=[1.0], dense_output=False, events=None,
+    >>> choose_stepping("auto", batch=True, t_eval=[1.0], dense_output=False, events=None,
     ...                    project=None)
     'each'
-    >>> choose_batch_steps("auto", batch=True, t_eval=None, dense_output=False, events=None,
+    >>> choose_stepping("auto", batch=True, t_eval=None, dense_output=False, events=None,
     ...                    project=None)
     'shared'
     """
-    if not isinstance(batch_steps, str) or batch_steps not in BATCH_STEPS:
+    if not isinstance(stepping, str) or stepping not in STEPPING:
         raise ArgumentError(
-            f"`batch_steps` must be one of {BATCH_STEPS} (\"each\": a step size per "
-            f"trajectory, \"shared\": one step for the whole batch); got {batch_steps!r}.")
+            f"`stepping` must be one of {STEPPING} (\"each\": a step size per "
+            f"trajectory, \"shared\": one step for the whole batch); got {stepping!r}.")
     if not batch:
         return "shared"
     blockers = [name for name, on in (("dense_output=True", dense_output),
                                       ("events", events is not None),
                                       ("project", project is not None)) if on]
-    if batch_steps == "each" and blockers:
+    if stepping == "each" and blockers:
         raise ArgumentError(
-            f"`batch_steps`=\"each\" gives samples at `t_eval` per trajectory; got "
+            f"`stepping`=\"each\" gives samples at `t_eval` per trajectory; got "
             f"{' and '.join(blockers)}, which need one step grid for the whole batch: pass "
-            f"batch_steps=\"shared\" (or drop {blockers[0]}).")
-    if batch_steps == "auto":
+            f"stepping=\"shared\" (or drop {blockers[0]}).")
+    if stepping == "auto":
         return "each" if t_eval is not None and not blockers else "shared"
-    return batch_steps
+    return stepping
 
 
 def _initial_steps(fun, t0, y0, f0, direction, order, rtol, atol, t_end, max_step):
@@ -100,23 +100,30 @@ def _initial_steps(fun, t0, y0, f0, direction, order, rtol, atol, t_end, max_ste
 class _Columns:
     """``fun`` on the active columns: counts the calls and checks the shape once."""
 
-    __slots__ = ("fun", "n", "calls", "columns")
+    __slots__ = ("fun", "batch", "calls", "columns")
 
-    def __init__(self, fun, n):
-        self.fun, self.n, self.calls, self.columns = fun, n, 0, 0
+    def __init__(self, fun, batch):
+        self.fun, self.batch, self.calls, self.columns = fun, batch, 0, 0
 
     def __call__(self, t, y):
         self.calls += 1
         self.columns += y.shape[1]
-        out = self.fun(t, y)
+        try:
+            out = self.fun(t, y)
+        except ValueError as exc:  # a broadcast against data bound to the batch's columns
+            if y.shape[1] == self.batch:
+                raise
+            raise ArgumentError(self._hint(y, f"it raised {type(exc).__name__}: {exc}")) from exc
         if np.shape(out) != y.shape:
-            raise ArgumentError(
-                f"`fun(t, y)` must return an array of the shape of its `y`, {y.shape}; got "
-                f"shape {np.shape(out)}. With `batch_steps`=\"each\" fun receives the "
-                f"{y.shape[1]} trajectories still running and their times `t` (shape "
-                f"({y.shape[1]},)): a fun that binds data to the batch's columns needs "
-                "batch_steps=\"shared\".")
+            raise ArgumentError(self._hint(y, f"got shape {np.shape(out)}"))
         return out
+
+    def _hint(self, y, what):
+        m = y.shape[1]
+        return (f"`fun(t, y)` must return an array of the shape of its `y`, {y.shape}; {what}."
+                f" With `stepping`=\"each\" fun receives the {m} of {self.batch} "
+                f"trajectories still running and their times `t` (shape ({m},)): a fun that "
+                "binds data to the batch's columns needs stepping=\"shared\".")
 
 
 def _error_norms(pair, K, scale, h_abs, n):
@@ -183,9 +190,9 @@ def integrate_each(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, m
     --------
     >>> from rigidmech import ode
     >>> y0 = np.array([[1.0, 2.0]])
-    >>> r = ode.solve(lambda t, y: -y, (0.0, 1.0), y0, t_eval=[1.0], batch_steps="each",
+    >>> r = ode.solve(lambda t, y: -y, (0.0, 1.0), y0, t_eval=[1.0], stepping="each",
     ...               rtol=1e-10)
-    >>> np.round(r.y[0, -1], 8).tolist(), r.stats["batch_steps"]
+    >>> np.round(r.y[0, -1], 8).tolist(), r.stats["stepping"]
     ([0.36787944, 0.73575888], 'each')
     """
     n, batch = y0.shape
@@ -194,7 +201,7 @@ def integrate_each(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, m
     t_out = np.array([t0, t_end]) if t_eval is None else np.asarray(t_eval, dtype=float)
     n_out = len(t_out)
     Y = np.full((n, n_out, batch), np.nan)
-    cols = _Columns(fun, n)
+    cols = _Columns(fun, batch)
     atol_all = flat_tolerance(atol, (n, batch)).reshape(n, batch)
     exponent = -1.0 / (pair.capabilities.error_order + 1)
     k_pi = pair.capabilities.error_order + 1
@@ -248,7 +255,7 @@ def integrate_each(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, m
         message = (f"{len(failures)} of {batch} trajectories failed (their samples after the "
                    f"failure are nan; the others are complete). Batch member {first} "
                    f"(y0[:, {first}]): {failures[first]}.")
-    stats = {"batch_steps": "each", "nsteps_each": nacc, "nrejected_each": nrej,
+    stats = {"stepping": "each", "nsteps_each": nacc, "nrejected_each": nrej,
              "t_stop_each": t_stop, "nfev_columns": cols.columns}
     if failures:
         stats["failed_members"] = sorted(failures)

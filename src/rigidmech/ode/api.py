@@ -318,7 +318,7 @@ def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | No
     y0 : array_like, shape (n,) or (n, batch)
         Initial state; a 2-D `y0` integrates ``batch`` trajectories at once (``fun`` gets
         ``(n, batch)`` arrays). The embedded pairs (``dopri5``, ``dop853``, ``bs32``) take
-        ``batch_steps``: ``"each"`` gives every trajectory its own step size, the stages of
+        ``stepping``: ``"each"`` gives every trajectory its own step size, the stages of
         the trajectories still running evaluated in one call ``fun(t, y)`` with ``y`` of
         shape ``(n, m)`` and ``t`` an array of their ``m`` times; ``"shared"`` steps the whole
         batch by its largest error norm (the other adaptive methods always do);
