@@ -245,6 +245,8 @@ def integrate_each(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, m
                 break
     except KeyboardInterrupt:  # everything computed so far is kept
         status, message = 2, "The integration was interrupted (KeyboardInterrupt)"
+    t_stop[st.ids] = st.t  # the columns still running (a run stopped early)
+    y_stop[:, st.ids] = st.y
     if status == 2:
         message += (f" at t = {float(t_stop.min() if direction > 0 else t_stop.max())!r} "
                     f"(the earliest of the batch); {int(np.sum(t_stop != t_end))} of "
@@ -284,13 +286,13 @@ def _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps, exponent,
         h_abs = np.abs(h)
         K = np.empty((s + 1,) + y.shape)
         K[0] = st.f
-        tensordot = np.tensordot
+        K2, dot, shape = K.reshape(s + 1, -1), np.dot, y.shape  # the stages as rows
         for i in range(1, s):
-            ys = tensordot(Ab[i, :i], K[:i], axes=1)
+            ys = dot(Ab[i, :i], K2[:i]).reshape(shape)
             ys *= h
             ys += y
             K[i] = cols(t + c_nodes[i] * h, ys)
-        y_new = tensordot(Ab[s, :s], K[:s], axes=1)
+        y_new = dot(Ab[s, :s], K2[:s]).reshape(shape)
         y_new *= h
         y_new += y
         K[s] = cols(t_new, y_new)
@@ -308,40 +310,49 @@ def _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps, exponent,
         h_next = h_abs * np.where(accepted, grow, shrink)
         if pi:
             st.err_old = np.where(accepted, np.maximum(err, PI_ERR_FLOOR), st.err_old)
-    finite = np.isfinite(y_new).all(axis=0) & np.isfinite(K[s]).all(axis=0)
+    with np.errstate(over="ignore", invalid="ignore"):  # one reduction: finite iff its sum is
+        finite = np.isfinite(y_new.sum(axis=0) + K[s].sum(axis=0))
     ok = accepted & finite
-    gone = np.zeros(ids.size, bool)
-    for j in np.flatnonzero(accepted & ~finite):
-        failures[int(ids[j])] = (f"the state or the right-hand side became non-finite at "
-                                 f"t = {float(t_new[j])!r}")
-        gone[j] = True
-    rej = ~accepted
-    nrej[ids[rej]] += 1
-    under = rej & ~(h_next >= min_step)  # also a nan step
-    for j in np.flatnonzero(under):
-        failures[int(ids[j])] = (f"the step size fell below the resolution of t (step size "
-                                 f"underflow) at t = {float(t[j])!r}")
-        gone[j] = True
+    gone = None
+    if not ok.all():
+        gone = np.zeros(ids.size, bool)
+        for j in np.flatnonzero(accepted & ~finite):
+            failures[int(ids[j])] = (f"the state or the right-hand side became non-finite at "
+                                     f"t = {float(t_new[j])!r}")
+            gone[j] = True
+        rej = ~accepted
+        nrej[ids[rej]] += 1
+        under = rej & ~(h_next >= min_step)  # also a nan step
+        for j in np.flatnonzero(under):
+            failures[int(ids[j])] = (f"the step size fell below the resolution of t (step "
+                                     f"size underflow) at t = {float(t[j])!r}")
+            gone[j] = True
+        st.rejected = rej
+    elif st.rejected.any():
+        st.rejected = ~accepted
     if ok.any():
         _samples(pair, cols, ok, ids, t, y, y_new, h, t_new, K, t_out, n_out, Y, next_k,
                  direction)
-        acc_ids = ids[ok]
-        nacc[acc_ids] += 1
-        t_stop[acc_ids] = t_new[ok]
-        y_stop[:, acc_ids] = y_new[:, ok]
-        st.t = np.where(ok, t_new, t)
-        st.y = np.where(ok, y_new, y)
-        st.f = np.where(ok, K[s], st.f)
-        done = ok & (t_new == t_end)
-        gone |= done
+        nacc[ids[ok]] += 1
+        if gone is None:  # every column accepted (the common case): no masking
+            st.t, st.y, st.f = t_new, y_new, K[s]
+            done = t_new == t_end
+        else:
+            st.t = np.where(ok, t_new, t)
+            st.y = np.where(ok, y_new, y)
+            st.f = np.where(ok, K[s], st.f)
+            done = ok & (t_new == t_end)
         over = ok & ~done & (nacc[ids] >= max_steps)
         for j in np.flatnonzero(over):
             failures[int(ids[j])] = (f"the maximum number of steps `max_steps` = {max_steps} "
                                      f"was reached at t = {float(t_new[j])!r}")
-            gone[j] = True
+        done |= over
+        gone = done if gone is None else gone | done
     st.h = h_next
-    st.rejected = rej
-    if gone.any():
+    if gone is not None and gone.any():
+        leaving = ids[gone]
+        t_stop[leaving] = st.t[gone]
+        y_stop[:, leaving] = st.y[:, gone]
         st.keep(~gone, _NAMES)
     return st, False
 
@@ -355,6 +366,14 @@ def _samples(pair, cols, ok, ids, t, y, y_new, h, t_new, K, t_out, n_out, Y, nex
     if not has.any():
         return
     J = np.flatnonzero(has)
+    landed = t_out[kk[J]] == t_new[J]  # the step ends on its only sample: no interpolant
+    if landed.any():
+        L = J[landed]
+        Y[:, kk[L], ids[L]] = y_new[:, L]
+        next_k[ids[L]] += 1
+        J = J[~landed]
+        if not J.size:
+            return
     coeffs, form = _dense(pair, cols, t[J], y[:, J], y_new[:, J], h[J], K[:, :, J])
     y0T, ynT = y[:, J].T, y_new[:, J].T
     members = ids[J]
