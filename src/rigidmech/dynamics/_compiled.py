@@ -34,7 +34,7 @@ import logging
 import numpy as np
 import sympy as sp
 
-from .._core.compile import compile_expressions, compile_linear_solve
+from .._core.compile import CompiledLinearSolve, compile_expressions, compile_linear_solve
 from .._core.errors import (
     ArgumentError,
     ArgumentTypeError,
@@ -261,8 +261,26 @@ def rhs(eqs, params):
     n = len(eqs._q)
     if not any(callable(w) for w in inputs):
         values = values + inputs
+        # one state of float64 (what the integrators pass, call after call): the generated
+        # single-state code called directly on Python floats, without the argument parsing
+        # of solve(...) (a quarter of an integration's time at n = 6); anything else, or a
+        # failure there, takes the general path below
+        single = solve._single if isinstance(solve, CompiledLinearSolve) else None
+        tail = tuple(float(v) for v in values)
+        size, f64 = 2 * n, np.float64
 
         def fun(t, y):
+            if (single is not None and type(y) is np.ndarray and y.shape == (size,)
+                    and y.dtype == f64 and type(t) in (float, f64)):
+                try:
+                    acc = single(t, *y.tolist(), *tail)
+                except (ArithmeticError, ValueError, TypeError):
+                    acc = None
+                if acc is not None and type(acc) is not tuple:
+                    out = np.empty(size)
+                    out[:n] = y[n:]
+                    out[n:] = acc
+                    return out
             try:  # free unless raised
                 acc = solve(t, y[:n], y[n:], *values)
             except (ArithmeticError, ValueError, TypeError) as exc:

@@ -1,0 +1,35 @@
+"""The compiled first-order right-hand side on one state (the integrators' calls) gives the
+numbers of the general (batched) path, whatever the form of its arguments."""
+
+import numpy as np
+import pytest
+
+from rigidmech import models
+
+
+@pytest.fixture(scope="module")
+def fun():
+    eqs = models.n_link_pendulum(3).system.equations_of_motion()
+    return eqs.rhs(g=9.81, m1=1.0, m2=2.0, m3=0.5, l1=1.0, l2=0.7, l3=1.3)
+
+
+def test_one_float64_state_equals_the_batch_column(fun):
+    rng = np.random.default_rng(5)
+    Y = rng.uniform(-2.0, 2.0, (6, 4))
+    batch = fun(0.3, Y)
+    for j in range(4):
+        one = fun(0.3, Y[:, j].copy())
+        assert one.shape == (6,) and one.dtype == np.float64
+        np.testing.assert_allclose(one, batch[:, j], rtol=1e-13, atol=1e-13)
+        np.testing.assert_array_equal(one[:3], Y[3:, j])
+    # other forms of the same state take the general path: same numbers
+    y = Y[:, 0]
+    np.testing.assert_allclose(fun(np.float64(0.3), y), fun(0.3, y), rtol=1e-13)
+    np.testing.assert_allclose(fun(0.3, y[:, None])[:, 0], fun(0.3, y), rtol=1e-13)
+    np.testing.assert_allclose(fun(0, list(y)), fun(0.0, y), rtol=1e-13)
+
+
+def test_a_fresh_array_each_call(fun):
+    y = np.linspace(0.1, 0.6, 6)
+    a, b = fun(0.0, y), fun(0.0, y)
+    assert a is not b and a is not y
