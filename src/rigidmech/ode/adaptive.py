@@ -46,15 +46,15 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
-from ._floatpath import FLOAT_PATH_MAX_N, error_norm, make_pair_step
 from ._ensemble import choose_stepping, integrate_each
+from ._floatpath import FLOAT_PATH_MAX_N, error_norm, make_pair_step
 from ._loop import (
-    PROJECT,
     MAX_FACTOR,
     MIN_FACTOR,
     PI_ERR_FLOOR,
     PI_KI,
     PI_KP,
+    PROJECT,
     SAFETY,
     Capabilities,
     Run,
