@@ -5,8 +5,8 @@ integration reaching a final error <= 1e-6 over 10 s, rigidmech against sympy.ph
 The system: the planar n-link pendulum of ``derive.py`` (uniform rods m_i = 1, l_i = 1, relative
 joint angles q_i, gravity g = 9.81), released at rest with the first link 1 rad from hanging
 straight down and the others aligned with it (``initial_state``; released near the horizontal
-the chain is chaotic and no tolerance reaches 1e-6 over 10 s), n = 4 and 6, over 10 s. Both sides use the same
-coordinates and speeds (u = q'), so their states compare directly.
+the chain is chaotic and no tolerance reaches 1e-6 over 10 s), n = 4 and 6, over 10 s. Both
+sides use the same coordinates and speeds (u = q'), so their states compare directly.
 
 * ours: ``models.n_link_pendulum(n).system`` (build), ``.equations_of_motion()`` (derive),
   ``eqs.rhs(**params)`` (compile: cse, code generation), ``ode.solve`` (integrate);
@@ -19,8 +19,9 @@ Each side runs in a fresh process (sympy's cache cold; imports not timed), the s
 kept per phase. "The cheapest integration": in each child, every candidate method over rtol =
 3e-5, 1e-5, 3e-6 ... 1e-12 (atol = rtol * 1e-2), loosest first, until the final state is within
 1e-6 (max abs over the state) of the reference; the fastest (best of 3) of those is the one
-charged. The search itself is not charged (a user tunes once). The reference: rigidmech dop853 at rtol 1e-13
-cross-checked against scipy DOP853 at rtol 1e-13 on the Kane right-hand side (printed).
+charged. The search itself is not charged (a user tunes once). The reference: rigidmech dop853
+at rtol 1e-13 cross-checked against scipy DOP853 at rtol 1e-13 on the Kane right-hand side
+(printed).
 
     python benchmarks/whole_run.py                 # n = 4 and 6, 2 rounds (~5 min loaded)
     python benchmarks/whole_run.py --sizes 4 --rounds 1
