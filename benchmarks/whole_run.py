@@ -28,7 +28,10 @@ at rtol 1e-13 cross-checked against scipy DOP853 at rtol 1e-13 on the Kane right
     python benchmarks/whole_run.py --profile ours 6      # cProfile of one of our whole runs
 
 Prints per n and side: build+derive, compile, integrate (method, rtol, steps, evaluations,
-per-evaluation cost), total, and the ratio anchor / ours (> 1: we are faster), the load.
+per-evaluation cost of f(t, y), of the generated code alone -- ours: the single-state
+solution of M q'' = f; Kane: the two lambdified functions M and f -- and evaluations x cost:
+the share of the integration spent in f, the rest being the integrator's own), total, and the
+ratio anchor / ours (> 1: we are faster), the load.
 """
 
 from __future__ import annotations
@@ -117,6 +120,11 @@ def case_ours(n, ref):
     fun(0.0, y0)  # the first call (code generation finishes lazily, if at all)
     t2 = time.perf_counter()
     per_call = _best(lambda: [fun(0.0, y0) for _ in range(1000)])[0] / 1000
+    # the generated single-state code alone (the rest of per_call is the wrapper's)
+    solver = next(c.cell_contents for c in fun.__closure__
+                  if type(c.cell_contents).__name__ == "CompiledLinearSolve")
+    flat = [0.0, *y0.tolist(), *(float(v) for v in (params(n)[p.name] for p in eqs.parameters))]
+    generated = _best(lambda: [solver._single(*flat) for _ in range(1000)])[0] / 1000
 
     def solve_with(method, rtol):
         r = ode.solve(fun, (0.0, T_END), y0, method=method, rtol=rtol, atol=rtol * 1e-2,
@@ -130,7 +138,8 @@ def case_ours(n, ref):
                       t_eval=[T_END])
         return {"ref": r.y[:, -1].tolist()}
     best = _cheapest(solve_with, OURS_METHODS, np.array(ref))
-    return dict(derive=t1 - t0, compile=t2 - t1, per_call=per_call, **best)
+    return dict(derive=t1 - t0, compile=t2 - t1, per_call=per_call, generated=generated,
+                **best)
 
 
 def case_kane(n, ref):
@@ -159,6 +168,8 @@ def case_kane(n, ref):
     fun(0.0, y0)
     t2 = time.perf_counter()
     per_call = _best(lambda: [fun(0.0, y0) for _ in range(1000)])[0] / 1000
+    qv, uv = y0[:n], y0[n:]
+    generated = _best(lambda: [(M_f(qv, uv, pv), f_f(qv, uv, pv)) for _ in range(1000)])[0] / 1000
 
     def solve_with(method, rtol):
         s = solve_ivp(fun, (0.0, T_END), y0, method=method, rtol=rtol, atol=rtol * 1e-2)
@@ -171,7 +182,8 @@ def case_kane(n, ref):
                       t_eval=[T_END])
         return {"ref": s.y[:, -1].tolist()}
     best = _cheapest(solve_with, SCIPY_METHODS, np.array(ref))
-    return dict(derive=t1 - t0, compile=t2 - t1, per_call=per_call, **best)
+    return dict(derive=t1 - t0, compile=t2 - t1, per_call=per_call, generated=generated,
+                **best)
 
 
 def run_child(side, n, ref, timeout=900):
@@ -227,18 +239,20 @@ def main(argv=None):
                 if prev is None:
                     best[(side, n)] = r
                 else:  # best of the rounds, phase by phase
-                    for key in ("derive", "compile", "time", "total", "per_call"):
+                    for key in ("derive", "compile", "time", "total", "per_call", "generated"):
                         prev[key] = min(prev[key], r[key])
     print(f"load (uptime) at end: {os.getloadavg()}\n")
     head = (f"{'n':>2} {'side':<6} {'derive':>8} {'compile':>8} {'integrate':>10} {'total':>8}"
-            f"  {'method':<7} {'rtol':>6} {'steps':>6} {'nfev':>6} {'us/call':>8} {'error':>8}")
+            f"  {'method':<7} {'rtol':>6} {'steps':>6} {'nfev':>6} {'us/call':>8} {'us gen':>7} "
+            f"{'nfev*call':>9} {'error':>8}")
     print(head)
     for n in args.sizes:
         for side in ("ours", "kane"):
             r = best[(side, n)]
             print(f"{n:>2} {side:<6} {r['derive']:>8.3f} {r['compile']:>8.3f} {r['time']:>10.3f} "
                   f"{r['total']:>8.3f}  {r['method']:<7} {r['rtol']:>6.0e} {r['nsteps']:>6} "
-                  f"{r['nfev']:>6} {r['per_call'] * 1e6:>8.1f} {r['err']:>8.1e}")
+                  f"{r['nfev']:>6} {r['per_call'] * 1e6:>8.1f} {r['generated'] * 1e6:>7.1f} "
+                  f"{r['nfev'] * r['per_call']:>9.3f} {r['err']:>8.1e}")
         o, k = best[("ours", n)], best[("kane", n)]
         ratio = k["total"] / o["total"]
         print(f"   ratio kane/ours: derive {k['derive'] / o['derive']:.1f}x, compile "
