@@ -21,8 +21,8 @@ The sides are timed alternately in one process (ours, anchor, ours, ...; the bes
 ``--repeats`` rounds for each), in CPU time of the process (on a machine shared with other
 jobs the wall time measures the sharing). Final error: each side's final states against a
 tight reference (ours, per trajectory, rtol 1e-13), the median and the largest over the
-ensemble; on the chaotic one the largest errors are those of trajectories that amplify any error (both sides alike), so the
-median is the fair figure. Prints ratios anchor / ours (> 1: we are faster) and the load.
+ensemble; on the chaotic one the largest errors are those of trajectories that amplify any
+error (both sides alike), so the median is the fair figure. Prints ratios anchor / ours (> 1: we are faster) and the load.
 
     python benchmarks/ensemble.py                       # ~5-10 min on a loaded 2-core machine
     python benchmarks/ensemble.py --size 200 --anchor-every 4 --repeats 1   # quick look
