@@ -22,7 +22,8 @@ The sides are timed alternately in one process (ours, anchor, ours, ...; the bes
 jobs the wall time measures the sharing). Final error: each side's final states against a
 tight reference (ours, per trajectory, rtol 1e-13), the median and the largest over the
 ensemble; on the chaotic one the largest errors are those of trajectories that amplify any
-error (both sides alike), so the median is the fair figure. Prints ratios anchor / ours (> 1: we are faster) and the load.
+error (both sides alike), so the median is the fair figure. Prints ratios anchor / ours
+(> 1: we are faster) and the load.
 
     python benchmarks/ensemble.py                       # ~5-10 min on a loaded 2-core machine
     python benchmarks/ensemble.py --size 200 --anchor-every 4 --repeats 1   # quick look
@@ -103,7 +104,8 @@ def run(label, amplitude, fun, args):
     for _ in range(args.repeats):
         for side in sides:
             if side == "anchor":
-                dt, (outs[side], nfev) = timed(lambda: anchor(fun, y0, t_end, rtol, every))  # noqa: B023
+                dt, (outs[side], nfev) = timed(
+                    lambda: anchor(fun, y0, t_end, rtol, every))  # noqa: B023
                 dt *= every
             else:
                 group = args.group if side == "groups" else None
