@@ -16,13 +16,13 @@ sides use the same coordinates and speeds (u = q'), so their states compare dire
 
 Each side runs in a fresh process (sympy's cache cold; imports not timed), the sides alternated
 (ours n=4, anchor n=4, ours n=6, anchor n=6, then again: ``--rounds``), the best of the rounds
-kept per phase, in CPU time of the child (``time.process_time``: on a machine shared with
-other jobs the wall time measures the sharing). "The cheapest integration": in each child,
-every candidate method over rtol = 3e-5, 1e-5, 3e-6 ... 1e-12 (atol = rtol * 1e-2), loosest first, until the final state is within
-1e-6 (max abs over the state) of the reference; the fastest (best of 3) of those is the one
-charged. The search itself is not charged (a user tunes once). The reference: rigidmech dop853
-at rtol 1e-13 cross-checked against scipy DOP853 at rtol 1e-13 on the Kane right-hand side
-(printed).
+kept per phase, in CPU time of the child (``time.process_time``: on a machine shared with other
+jobs the wall time measures the sharing). "The cheapest integration": in each child, every
+candidate method over rtol = 3e-5, 1e-5, 3e-6 ... 1e-12 (atol = rtol * 1e-2), loosest first,
+until the final state is within 1e-6 (max abs over the state) of the reference; the fastest
+(best of 3) of those is the one charged. The search itself is not charged (a user tunes once).
+The reference: rigidmech dop853 at rtol 1e-13 cross-checked against scipy DOP853 at rtol 1e-13
+on the Kane right-hand side (printed).
 
     python benchmarks/whole_run.py                 # n = 4 and 6, 2 rounds (~5 min loaded)
     python benchmarks/whole_run.py --sizes 4 --rounds 1
