@@ -29,6 +29,17 @@ def test_one_float64_state_equals_the_batch_column(fun):
     np.testing.assert_allclose(fun(0, list(y)), fun(0.0, y), rtol=1e-13)
 
 
+def test_a_float64_batch_equals_the_general_path(fun):
+    # a batch of float64 (the integrators' calls) against the same batch as nested lists (the
+    # general path, with its argument checks), one time and a time per column
+    rng = np.random.default_rng(6)
+    Y = rng.uniform(-2.0, 2.0, (6, 5))
+    np.testing.assert_allclose(fun(0.3, Y), fun(0.3, Y.tolist()), rtol=1e-13, atol=1e-13)
+    t = np.linspace(0.0, 1.0, 5)
+    np.testing.assert_allclose(fun(t, Y), fun(t.tolist(), Y.tolist()), rtol=1e-13, atol=1e-13)
+    assert fun(0.3, Y).shape == (6, 5)
+
+
 def test_a_fresh_array_each_call(fun):
     y = np.linspace(0.1, 0.6, 6)
     a, b = fun(0.0, y), fun(0.0, y)

@@ -265,22 +265,36 @@ def rhs(eqs, params):
         # single-state code called directly on Python floats, without the argument parsing
         # of solve(...) (a quarter of an integration's time at n = 6); anything else, or a
         # failure there, takes the general path below
-        single = solve._single if isinstance(solve, CompiledLinearSolve) else None
+        # likewise a batch (2n, m) of float64 with one time or a time per column (the
+        # integrators' batches): the generated batched code without the argument checks
+        compiled = isinstance(solve, CompiledLinearSolve)
+        single = solve._single if compiled else None
+        batched = solve._batched if compiled else None
         tail = tuple(float(v) for v in values)
-        size, f64 = 2 * n, np.float64
+        size, f64, ndarray, scalar = 2 * n, np.float64, np.ndarray, (float, np.float64)
+        errstate = np.errstate
 
         def fun(t, y):
-            if (single is not None and type(y) is np.ndarray and y.shape == (size,)
-                    and y.dtype == f64 and type(t) in (float, f64)):
-                try:
-                    acc = single(t, *y.tolist(), *tail)
-                except (ArithmeticError, ValueError, TypeError):
-                    acc = None
-                if acc is not None and type(acc) is not tuple:
-                    out = np.empty(size)
-                    out[:n] = y[n:]
-                    out[n:] = acc
-                    return out
+            if single is not None and type(y) is ndarray and y.dtype == f64:
+                if y.shape == (size,) and type(t) in scalar:
+                    try:
+                        acc = single(t, *y.tolist(), *tail)
+                    except (ArithmeticError, ValueError, TypeError):
+                        acc = None
+                    if acc is not None and type(acc) is not tuple:
+                        out = np.empty(size)
+                        out[:n] = y[n:]
+                        out[n:] = acc
+                        return out
+                elif y.ndim == 2 and y.shape[0] == size and (type(t) in scalar or (
+                        type(t) is ndarray and t.shape == y.shape[1:] and t.dtype == f64)):
+                    try:
+                        with errstate(all="ignore"):
+                            acc = batched(t, y[:n], y[n:], *tail, y.shape[1:])
+                    except (ArithmeticError, ValueError, TypeError):
+                        acc = None
+                    if acc is not None and type(acc) is not tuple:
+                        return np.concatenate((y[n:], acc), axis=0)
             try:  # free unless raised
                 acc = solve(t, y[:n], y[n:], *values)
             except (ArithmeticError, ValueError, TypeError) as exc:
