@@ -234,11 +234,9 @@ def integrate_each(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, m
     Ab, c_nodes = pair.Ab, pair.c
     try:
         while st.ids.size:
-            st, stop = _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps,
-                             exponent, alpha, beta, pi, s, Ab, c_nodes, t_out, n_out, Y,
-                             next_k, nacc, nrej, t_stop, y_stop, failures)
-            if stop:
-                break
+            st = _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps, exponent,
+                       alpha, beta, pi, s, Ab, c_nodes, t_out, n_out, Y, next_k, nacc, nrej,
+                       t_stop, y_stop, failures)
             if progress is not None and st.ids.size and progress(float(
                     st.t.min() if direction > 0 else st.t.max())) is False:
                 status, message = 2, "The integration was stopped by the `progress` callback"
@@ -273,8 +271,8 @@ _NAMES = ("ids", "t", "y", "f", "h", "atol", "rejected", "err_old")
 
 def _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps, exponent, alpha, beta,
           pi, s, Ab, c_nodes, t_out, n_out, Y, next_k, nacc, nrej, t_stop, y_stop, failures):
-    """One attempted step of every active column; returns the compacted state and whether
-    to stop (never: failures only remove their column)."""
+    """One attempted step of every active column; returns the state, compacted if columns
+    finished or failed (a failure removes its column only)."""
     t, y, ids = st.t, st.y, st.ids
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         min_step = 10.0 * np.abs(np.nextafter(t, direction * math.inf) - t)
@@ -354,7 +352,7 @@ def _pass(pair, cols, st, t_end, direction, rtol, max_step, max_steps, exponent,
         t_stop[leaving] = st.t[gone]
         y_stop[:, leaving] = st.y[:, gone]
         st.keep(~gone, _NAMES)
-    return st, False
+    return st
 
 
 def _samples(pair, cols, ok, ids, t, y, y_new, h, t_new, K, t_out, n_out, Y, next_k,
