@@ -61,7 +61,8 @@ def trouble(fun, exc, t, shape):
     ``fun.trouble`` with its time, and nan returned so that the solver stops there and keeps
     the motion computed so far (the error is named in the simulation's message)."""
     if not fun.trouble:
-        fun.trouble.append((f"{type(exc).__name__}: {exc}", float(t)))
+        when = float(np.min(t)) if np.ndim(t) else float(t)  # a time per column: the first
+        fun.trouble.append((f"{type(exc).__name__}: {exc}", when))
     return np.full(shape, np.nan)
 
 
