@@ -44,3 +44,15 @@ def test_a_fresh_array_each_call(fun):
     y = np.linspace(0.1, 0.6, 6)
     a, b = fun(0.0, y), fun(0.0, y)
     assert a is not b and a is not y
+
+
+def test_an_error_with_a_time_per_column_is_kept_with_the_earliest(fun):
+    # in a simulation the rhs keeps its first error and returns nan; with one time per column
+    # (per-trajectory steps) the earliest time is kept (t of 3 columns for 2 states: refused)
+    fun.trouble = []
+    try:
+        out = fun(np.array([0.5, 0.2, 0.9]), np.zeros((6, 2)))
+        assert out.shape == (6, 2) and np.isnan(out).all()
+        assert fun.trouble[0][1] == 0.2
+    finally:
+        fun.trouble = None
