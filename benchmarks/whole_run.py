@@ -27,6 +27,7 @@ on the Kane right-hand side (printed).
     python benchmarks/whole_run.py                 # n = 4 and 6, 2 rounds (~5 min loaded)
     python benchmarks/whole_run.py --sizes 4 --rounds 1
     python benchmarks/whole_run.py --profile ours 6      # cProfile of one of our whole runs
+    python benchmarks/whole_run.py --per-call            # our f(t, y): fast path vs general
 
 Prints per n and side: build+derive, compile, integrate (method, rtol, steps, evaluations,
 per-evaluation cost of f(t, y), of the generated code alone -- ours: the single-state
@@ -187,6 +188,34 @@ def case_kane(n, ref):
                 **best)
 
 
+def per_call(n, calls=20000, rounds=3):
+    """Our f(t, y) on one float64 state against the general call it short-cuts (the compiled
+    solve with its argument checks, then the concatenation), alternated; CPU us per call."""
+    import numpy as np
+
+    from rigidmech import models
+
+    eqs = models.n_link_pendulum(n).system.equations_of_motion()
+    fun = eqs.rhs(**params(n))
+    y0 = initial_state(n)
+    solver = next(c.cell_contents for c in fun.__closure__
+                  if type(c.cell_contents).__name__ == "CompiledLinearSolve")
+    values = [params(n)[p.name] for p in eqs.parameters]
+
+    def general():
+        return np.concatenate((y0[n:], solver(0.0, y0[:n], y0[n:], *values)))
+
+    assert np.allclose(general(), fun(0.0, y0), rtol=1e-13, atol=1e-13)
+    best = {"f(t, y)": float("inf"), "general call": float("inf")}
+    for _ in range(rounds):
+        for name, f in (("f(t, y)", lambda: fun(0.0, y0)), ("general call", general)):
+            t0 = time.process_time()
+            for _ in range(calls):
+                f()
+            best[name] = min(best[name], (time.process_time() - t0) / calls * 1e6)
+    print(f"n = {n}: " + ", ".join(f"{k} {v:.1f} us" for k, v in best.items()))
+
+
 def run_child(side, n, ref, timeout=900):
     cmd = [sys.executable, __file__, "--case", side, str(n)]
     out = subprocess.run(cmd, input=json.dumps(ref), capture_output=True, text=True,
@@ -202,7 +231,13 @@ def main(argv=None):
     ap.add_argument("--rounds", type=int, default=2)
     ap.add_argument("--case", nargs=2, default=None, help=argparse.SUPPRESS)
     ap.add_argument("--profile", nargs=2, default=None, metavar=("SIDE", "N"))
+    ap.add_argument("--per-call", action="store_true",
+                    help="only our f(t, y) against the general call it short-cuts")
     args = ap.parse_args(argv)
+    if args.per_call:
+        for n in args.sizes:
+            per_call(n)
+        return
     if args.case is not None:
         side, n = args.case[0], int(args.case[1])
         ref = json.loads(sys.stdin.read())
