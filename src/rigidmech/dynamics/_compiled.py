@@ -34,7 +34,7 @@ import logging
 import numpy as np
 import sympy as sp
 
-from .._core.compile import compile_expressions, compile_linear_solve
+from .._core.compile import CompiledLinearSolve, compile_expressions, compile_linear_solve
 from .._core.errors import (
     ArgumentError,
     ArgumentTypeError,
@@ -61,7 +61,8 @@ def trouble(fun, exc, t, shape):
     ``fun.trouble`` with its time, and nan returned so that the solver stops there and keeps
     the motion computed so far (the error is named in the simulation's message)."""
     if not fun.trouble:
-        fun.trouble.append((f"{type(exc).__name__}: {exc}", float(t)))
+        when = float(np.min(t)) if np.ndim(t) else float(t)  # a time per column: the first
+        fun.trouble.append((f"{type(exc).__name__}: {exc}", when))
     return np.full(shape, np.nan)
 
 
@@ -261,8 +262,40 @@ def rhs(eqs, params):
     n = len(eqs._q)
     if not any(callable(w) for w in inputs):
         values = values + inputs
+        # one state of float64 (what the integrators pass, call after call): the generated
+        # single-state code called directly on Python floats, without the argument parsing
+        # of solve(...) (a quarter of an integration's time at n = 6); anything else, or a
+        # failure there, takes the general path below
+        # likewise a batch (2n, m) of float64 with one time or a time per column (the
+        # integrators' batches): the generated batched code without the argument checks
+        compiled = isinstance(solve, CompiledLinearSolve)
+        single = solve._single if compiled else None
+        batched = solve._batched if compiled else None
+        tail = tuple(float(v) for v in values)
+        size, f64, ndarray, scalar = 2 * n, np.float64, np.ndarray, (float, np.float64)
+        errstate = np.errstate
 
         def fun(t, y):
+            if single is not None and type(y) is ndarray and y.dtype == f64:
+                if y.shape == (size,) and type(t) in scalar:
+                    try:
+                        acc = single(t, *y.tolist(), *tail)
+                    except (ArithmeticError, ValueError, TypeError):
+                        acc = None
+                    if acc is not None and type(acc) is not tuple:
+                        out = np.empty(size)
+                        out[:n] = y[n:]
+                        out[n:] = acc
+                        return out
+                elif y.ndim == 2 and y.shape[0] == size and (type(t) in scalar or (
+                        type(t) is ndarray and t.shape == y.shape[1:] and t.dtype == f64)):
+                    try:
+                        with errstate(all="ignore"):
+                            acc = batched(t, y[:n], y[n:], *tail, y.shape[1:])
+                    except (ArithmeticError, ValueError, TypeError):
+                        acc = None
+                    if acc is not None and type(acc) is not tuple:
+                        return np.concatenate((y[n:], acc), axis=0)
             try:  # free unless raised
                 acc = solve(t, y[:n], y[n:], *values)
             except (ArithmeticError, ValueError, TypeError) as exc:

@@ -15,6 +15,10 @@ rigidmech layer but ``rigidmech._core``. Everything goes through one function,
 * multistep (Adams) and geometric (symplectic, for ``q'' = a(t, q)``) methods of
   :mod:`rigidmech.ode.multistep` and :mod:`rigidmech.ode.geometric`.
 
+A batch of initial states ``y0`` of shape ``(n, batch)`` is integrated in one call; the
+embedded pairs give each trajectory its own step size (option ``stepping``, see
+:mod:`rigidmech.ode._ensemble`).
+
 The stability function of a Runge-Kutta tableau, its real stability interval and the order a
 method shows on a problem with an exact solution are in :mod:`rigidmech.ode.stability`.
 

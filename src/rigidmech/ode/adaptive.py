@@ -26,8 +26,15 @@ stability domain (3.25 for DOPRI5, 6.1 for DOP853) for 15 consecutive checks, a
 :class:`~rigidmech.ode.StiffnessWarning` advises ``method="radau"``. Checks are made every
 `nstiff` accepted steps (1000 by default) and at every step once the estimate is high.
 
-Batches: with ``y0`` of shape ``(n, batch)``, every trajectory is advanced with the same step,
-chosen from the largest error norm over the batch.
+Batches: with ``y0`` of shape ``(n, batch)``, the option ``stepping`` chooses how the steps
+are chosen across the batch: ``"each"``, a step size, error norm and accept/reject per
+trajectory, the stages of the trajectories still running evaluated in one call
+(:mod:`rigidmech.ode._ensemble`); ``"shared"``, every trajectory advanced with the same step,
+chosen from the largest error norm over the batch (the steps are the output, dense output and
+projection available); ``"auto"`` (default), ``"each"`` for a batch sampled at ``t_eval``
+without dense output or projection, else ``"shared"``. Measured on 1,000 double pendulums
+(``benchmarks/ensemble.py``), per-trajectory steps are the faster on both a regular and a
+chaotic ensemble; the measurement is in the performance pages (runs).
 """
 
 from __future__ import annotations
@@ -39,6 +46,7 @@ import numpy as np
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry, tableaux
+from ._ensemble import choose_stepping, integrate_each
 from ._floatpath import FLOAT_PATH_MAX_N, error_norm, make_pair_step
 from ._loop import (
     MAX_FACTOR,
@@ -46,6 +54,7 @@ from ._loop import (
     PI_ERR_FLOOR,
     PI_KI,
     PI_KP,
+    PROJECT,
     SAFETY,
     Capabilities,
     Run,
@@ -301,10 +310,19 @@ def _stepper(pair, fun, t0, y0, rtol, atol):
 
 
 def _solve_pair(pair, fun, t_span, y0, *, rtol, atol, first_step, max_step, max_steps,
-                dense_output, events, nstiff, step_control, progress, t_eval):
+                dense_output, events, nstiff, step_control, progress, t_eval, stepping):
     nstiff = _check_nstiff(nstiff)
     step_control = _check_step_control(step_control)
     progress = check_progress(progress)
+    box = PROJECT.get()
+    if choose_stepping(stepping, batch=y0.ndim == 2, t_eval=t_eval,
+                          dense_output=dense_output, events=events,
+                          project=None if box is None else box[0]) == "each":
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return integrate_each(pair, fun, t_span, y0, rtol=rtol, atol=atol,
+                                  first_step=first_step, max_step=max_step,
+                                  max_steps=max_steps, step_control=step_control,
+                                  progress=progress, t_eval=t_eval)
     run = Run(fun, t_span, y0, rtol, atol, first_step, max_step, max_steps, dense_output,
               events, nstiff, step_control, progress, None, t_eval)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # failures -> status
@@ -330,7 +348,8 @@ def _check_nstiff(nstiff):
 
 def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i", progress=None, t_eval=None):
+           nstiff=1000, step_control="i", progress=None, t_eval=None,
+         stepping="auto"):
     """Dormand-Prince 5(4) with error control, dense output and stiffness detection.
 
     Called through :func:`rigidmech.ode.solve` (``method="dopri5"`` or ``"rk45"``), which
@@ -356,12 +375,13 @@ def dopri5(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(DOPRI5, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress, t_eval=t_eval)
+                       progress=progress, t_eval=t_eval, stepping=stepping)
 
 
 def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
            max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-           nstiff=1000, step_control="i", progress=None, t_eval=None):
+           nstiff=1000, step_control="i", progress=None, t_eval=None,
+         stepping="auto"):
     """Dormand-Prince 8(5,3) (Hairer's DOP853) with error control, 7th-order dense output and
     stiffness detection.
 
@@ -388,12 +408,13 @@ def dop853(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(DOP853, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress, t_eval=t_eval)
+                       progress=progress, t_eval=t_eval, stepping=stepping)
 
 
 def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
          max_step=math.inf, max_steps=1_000_000, dense_output=False, events=None,
-         nstiff=1000, step_control="i", progress=None, t_eval=None):
+         nstiff=1000, step_control="i", progress=None, t_eval=None,
+         stepping="auto"):
     """Bogacki-Shampine 3(2) with error control and cubic Hermite dense output.
 
     Called through :func:`rigidmech.ode.solve` (``method="bs32"``, scipy's ``RK23``): four
@@ -419,7 +440,7 @@ def bs32(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
     return _solve_pair(BS32, fun, t_span, y0, rtol=rtol, atol=atol, first_step=first_step,
                        max_step=max_step, max_steps=max_steps, dense_output=dense_output,
                        events=events, nstiff=nstiff, step_control=step_control,
-                       progress=progress, t_eval=t_eval)
+                       progress=progress, t_eval=t_eval, stepping=stepping)
 
 
 _registry.register("bs32", bs32, kind="adaptive", capabilities=("t_eval",))

@@ -317,7 +317,13 @@ def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | No
         Initial and final times; ``t1 < t0`` integrates backwards.
     y0 : array_like, shape (n,) or (n, batch)
         Initial state; a 2-D `y0` integrates ``batch`` trajectories at once (``fun`` gets
-        ``(n, batch)`` arrays; adaptive methods step by the largest error norm of the batch).
+        ``(n, batch)`` arrays). The embedded pairs (``dopri5``, ``dop853``, ``bs32``) take
+        ``stepping``: ``"each"`` gives every trajectory its own step size, the stages of
+        the trajectories still running evaluated in one call ``fun(t, y)`` with ``y`` of
+        shape ``(n, m)`` and ``t`` an array of their ``m`` times; ``"shared"`` steps the whole
+        batch by its largest error norm (the other adaptive methods always do);
+        ``"auto"`` (default) is ``"each"`` for a batch sampled at `t_eval` without dense
+        output, events or projection (:mod:`rigidmech.ode._ensemble`).
     method : str or ButcherTableau
         One of :func:`methods` (default ``"dop853"``); ``methods("fixed")`` need `step`. A
         :class:`~rigidmech.ode.tableaux.ButcherTableau` runs as a fixed-step method.
@@ -428,8 +434,8 @@ def _projection(project, run):
 
 def _finish(res, run):
     """The failed member of a batch named; an event function's failure reported."""
-    if res.status < 0 and run.y.ndim == 2:
-        res = name_failed_member(res, run)
+    if res.status < 0 and run.y.ndim == 2 and "failed_members" not in res.stats:
+        res = name_failed_member(res, run)  # per-trajectory steps name their own
     failure = run.tracker.failure() if run.tracker is not None else None
     if failure is not None:  # the motion is kept; the events are not to be trusted
         res = dataclasses.replace(res, status=min(res.status, -1) if res.status != 2 else 2,

@@ -32,6 +32,9 @@ from ..dynamics import _compiled
 from ..ode import solve
 from ..vibrations._numeric import compiled_matrices, state_matrix
 
+#: The embedded pairs, which take the option ``stepping`` (:mod:`rigidmech.ode._ensemble`).
+_PAIRS = ("dopri5", "rk45", "dop853", "bs32")
+
 __all__ = ["OdeTask", "EigenTask", "CallableTask"]
 
 
@@ -71,9 +74,12 @@ class OdeTask:
         def fun(t, y):
             return np.concatenate((y[n:], solve_(t, y[:n], y[n:], *values)), axis=0)
 
+        # the members' parameter values are bound to the batch's columns (`values`), which
+        # per-trajectory steps would compact: one step for the whole batch
+        shared = {"stepping": "shared"} if self.options["method"] in _PAIRS else {}
         res = solve(fun, self.t_span, y0, self.options["method"], t_eval=self.t_eval,
                     rtol=self.options["rtol"], atol=self.options["atol"],
-                    max_steps=self.options["max_steps"], step=self.options["step"])
+                    max_steps=self.options["max_steps"], step=self.options["step"], **shared)
         if res.status != 0:
             raise NumericalError(f"the integration of the chunk failed: {res.message}")
         if callable(self.quantity):
