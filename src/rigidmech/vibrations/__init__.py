@@ -4,7 +4,8 @@ One degree of freedom in closed form (:mod:`~rigidmech.vibrations.one_dof`), nat
 several degrees of freedom (:mod:`~rigidmech.vibrations.modes`), the linearisation of
 equations of motion about an equilibrium or a steady motion
 (:mod:`~rigidmech.vibrations.linearize`), equilibria, their stability and bifurcations
-(:mod:`~rigidmech.vibrations.equilibria`), rotors and pendulums
+(:mod:`~rigidmech.vibrations.equilibria`), steady motions with q' ≠ 0
+(:mod:`~rigidmech.vibrations.steady`), rotors and pendulums
 (:mod:`~rigidmech.vibrations.rotors`).
 """
 
@@ -44,6 +45,7 @@ from .rotors import (
     rotor_bearing_action,
     torsion_pendulum_period,
 )
+from .steady import SteadyMotion, steady_motions, steady_stability
 
 __all__ = [
     "natural_frequency", "critical_damping", "damping_ratio", "damping_coefficient",
@@ -54,7 +56,7 @@ __all__ = [
     "dry_friction_equivalent_damping", "structural_equivalent_damping", "duhamel_response",
     "Modes", "natural_modes", "harmonic_response_direct", "plot_frequency_response",
     "LinearSystem", "linearize", "equilibria", "stability", "potential_stability",
-    "Bifurcation", "bifurcation",
+    "Bifurcation", "bifurcation", "SteadyMotion", "steady_motions", "steady_stability",
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
     "torsion_pendulum_period",

@@ -90,7 +90,7 @@ def _form(eqs):
         red = eqs.reduced()
         q, uI, _, _, _, fr = red.plain
         names = tuple(eqs.names)
-        speed_names = tuple(names[j] for j in red.independent)
+        speed_names = tuple(_name(c) for c in red.independent)
         return names, tuple(q), speed_names, tuple(uI), list(fr)
     norm = normalise(eqs)
     return norm.names, norm.q, norm.names, norm.u, list(norm.f)
@@ -218,10 +218,17 @@ def steady_motions(eqs, *, fixed, cyclic, within=None, samples=None, xtol=1e-12,
                 f"the equations depend on the position of a coordinate that is not `fixed` "
                 f"({[n for n in names if n not in fixed]}): a steady rate is possible only "
                 "on a coordinate absent from them (cyclic); make it `fixed` instead.")
-        positions = {n: full[q_of[n]] for n in names}
-        rates = {n: full[u_of[n]] for n in speed_names}
+        numeric = within is not None or bool(params)
+        positions = {n: _plain(full[q_of[n]], numeric) for n in names}
+        rates = {n: _plain(full[u_of[n]], numeric) for n in speed_names}
         out.append(SteadyMotion(positions, rates, tuple(cyclic)))
     return out
+
+
+def _plain(value, numeric):
+    """A float for a number of a numeric search, the sympy value otherwise."""
+    value = sp.sympify(value)
+    return float(value) if numeric and value.is_number else value
 
 
 def _solve_symbolic(rows, xs):
