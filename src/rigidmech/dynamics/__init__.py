@@ -18,3 +18,6 @@ __all__ += ["ReducedEquations", "reduce_equations"]
 from .inverse import inverse_dynamics  # noqa: E402
 
 __all__ += ["inverse_dynamics"]
+from .interop import from_sympy_mechanics, kane_form  # noqa: E402
+
+__all__ += ["from_sympy_mechanics", "kane_form"]
