@@ -172,3 +172,37 @@ def test_errors_name_the_argument():
                        m=1, g=1, L=1)
     with pytest.raises(ArgumentError, match="`motion` must be a SteadyMotion"):
         steady_stability(eqs, {"theta": 1})
+
+
+def _fd_exponents(eqs, motion, h=1e-6):
+    # an independent route: central differences of the nonlinear right-hand side in
+    # (theta, theta', phi') about the steady state (phi does not enter)
+    rhs = eqs.rhs()
+    y0 = np.array([motion.positions["theta"], 0.0, 0.0, motion.rates["phi"]])
+    keep = [0, 2, 3]
+    J = np.empty((3, 3))
+    for col, j in enumerate(keep):
+        e = np.zeros(4)
+        e[j] = h
+        J[:, col] = ((rhs(0.0, y0 + e) - rhs(0.0, y0 - e)) / (2 * h))[keep]
+    return np.linalg.eigvals(J)
+
+
+@pytest.mark.parametrize("d", [0.5, 0.0, -0.2, -1.0])
+def test_driven_conical_pendulum_with_a_motor_characteristic(d):
+    # the azimuth driven by a motor whose torque c (W - phi') holds the rate at W: the cyclic
+    # row has damping (C_cc = c), so it is not a momentum: decided on (theta, theta', phi');
+    # the polar angle damped by d
+    c, W = 2.0, 3.0
+    eqs = EquationsOfMotion(
+        coordinates=(th, ph), q=(th, ph), u=(thd, phd),
+        mass_matrix=sp.diag(1, sp.sin(th)**2),
+        forcing=sp.Matrix([sp.sin(th) * sp.cos(th) * phd**2 - sp.sin(th) - d * thd,
+                           -2 * sp.sin(th) * sp.cos(th) * thd * phd + c * (W - phd)]))
+    (motion,) = steady_motions(eqs, fixed={"theta": None}, cyclic={"phi": W},
+                               within=(0.1, 1.5))
+    assert np.cos(motion.positions["theta"]) == pytest.approx(1 / W**2, rel=1e-12)
+    s = _fd_exponents(eqs, motion)
+    assert abs(np.max(s.real)) > 1e-3            # not a borderline case
+    expected = "asymptotically stable" if np.max(s.real) < 0 else "unstable"
+    assert steady_stability(eqs, motion) == expected
