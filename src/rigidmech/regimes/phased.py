@@ -206,8 +206,8 @@ class PhasedMotion:
     (('fall', 'rest'), (1.0,))
     >>> m.phases[0].ended_by, m(0.5).round(6)        # state at t = 0.5 from dense output
     ('lands', array([ 3.75, -5.  ]))
-    >>> m.t[0], m.y.shape[0]
-    (np.float64(0.0), 2)
+    >>> m.t[0], m.y.shape[0], m.names
+    (np.float64(0.0), 2, ('y[0]', 'y[1]'))
     >>> axes = m.plot(components=[0], names=("height", "rate"))   # a tuple of Axes
     >>> import matplotlib.pyplot as plt; plt.close("all")
     >>> print(m.table())
