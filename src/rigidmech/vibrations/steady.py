@@ -55,9 +55,9 @@ class SteadyMotion:
     Attributes
     ----------
     positions : dict
-        Coordinate name -> q* (the cyclic coordinates at 0: they do not enter the equations).
+        Coordinate name -> ``q*`` (the cyclic coordinates at 0: they do not enter the equations).
     rates : dict
-        Coordinate name -> q'* (zero for the fixed ones); with constraints, the independent
+        Coordinate name -> ``q'*`` (zero for the fixed ones); with constraints, the independent
         rates (the dependent ones follow from the constraints).
     cyclic : tuple of str
         The names of the cyclic coordinates.
@@ -139,7 +139,7 @@ def _param_values(f, q, u, params):
 def steady_motions(eqs, *, fixed, cyclic, within=None, samples=None, xtol=1e-12,
                    **params) -> list:
     """The steady motions of ``eqs`` with the given fixed coordinates and cyclic rates:
-    the solutions of f(q*, q'*) = 0 for the unknowns (ch. 20, 25.4).
+    the solutions of ``f(q*, q'*) = 0`` for the unknowns (ch. 20, 25.4).
 
     Parameters
     ----------
