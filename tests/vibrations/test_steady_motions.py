@@ -68,6 +68,21 @@ def test_heavy_top_steady_precession_obeys_the_closed_form():
         assert steady_stability(eqs, s, **p) == "stable"
 
 
+def test_heavy_top_steady_precession_symbolic_closed_form():
+    # the same relation with symbols: nutation alpha, spin rate p, both roots psi'
+    top = models.heavy_top()
+    eqs = top.system.equations_of_motion()
+    m_, g_, l_, A, C = top.constants
+    alpha, p = sp.symbols("alpha p", positive=True)
+    found = steady_motions(eqs, fixed={"theta": alpha}, cyclic={"psi": None, "phi": p})
+    assert len(found) == 2
+    AO = A + m_ * l_**2
+    for s in found:
+        w = s.rates["psi"]
+        assert sp.simplify(AO * w**2 * sp.cos(alpha) - C * (p + w * sp.cos(alpha)) * w
+                           + m_ * g_ * l_) == 0
+
+
 def _cardan_top():
     # the heavy top oriented by tilts a (about R0.i), b (about the next j) and its spin phi:
     # regular at the vertical, where the Euler angles are singular
