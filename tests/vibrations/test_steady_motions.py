@@ -168,6 +168,21 @@ def test_rolling_disc_in_a_circle_stays_steady_in_a_simulation():
     assert np.max(np.abs(sim.q[3] - theta0)) > 1e-4
 
 
+@pytest.mark.parametrize(("gap", "count"), [(0.0, 1), (2e-9 * (1 - 1e-3), 1),
+                                             (2e-9 * (1 + 1e-3), 0), (1e-6, 0)])
+def test_more_equations_than_unknowns_least_squares_root_within_tol(gap, count):
+    # rows x - 1 and x - 1 - gap: the least-squares root x = 1 + gap/2 leaves gap/2 in each
+    # row, a steady motion while gap/2 <= 1e-9 (the boundary at gap = 2e-9)
+    x, y, vx, vy = sp.symbols("x y v_x v_y")
+    eqs = EquationsOfMotion(coordinates=(x, y), q=(x, y), u=(vx, vy),
+                            mass_matrix=sp.eye(2),
+                            forcing=sp.Matrix([x - 1, x - 1 - sp.Float(gap, 30)]))
+    found = steady_motions(eqs, fixed={x: None}, cyclic={y: 0.5}, within=(0.0, 2.0))
+    assert len(found) == count
+    if count:
+        assert found[0].positions["x"] == pytest.approx(1 + gap / 2, abs=1e-12)
+
+
 def test_errors_name_the_argument():
     eqs = _spherical_pendulum()
     with pytest.raises(ArgumentError, match="`fixed` names an unknown coordinate"):

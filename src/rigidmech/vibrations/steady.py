@@ -47,6 +47,12 @@ from .modes import is_symmetric
 
 __all__ = ["SteadyMotion", "steady_motions", "steady_stability"]
 
+#: Absolute tolerance on f(q*, q'*) where a root is not polished by the rule of
+#: :func:`~rigidmech.vibrations.equilibria` (more equations than unknowns: a least-squares
+#: root is a steady motion when every residual is within it, boundary included), and on the
+#: dependence of f on a coordinate that is not fixed; the default of linearize's ``tol``.
+_TOL = 1e-9
+
 
 class SteadyMotion:
     """A steady motion: constant positions of the fixed coordinates, constant rates of the
@@ -160,6 +166,10 @@ def steady_motions(eqs, *, fixed, cyclic, within=None, samples=None, xtol=1e-12,
     Returns
     -------
     list of SteadyMotion
+        Numerically, the roots found from a grid of the box: as many equations that do not
+        vanish as unknowns, polished and accepted by the rule of
+        :func:`~rigidmech.vibrations.equilibria`; more equations, a least-squares root kept
+        when every residual is within 1e-9.
 
     Raises
     ------
@@ -213,7 +223,7 @@ def steady_motions(eqs, *, fixed, cyclic, within=None, samples=None, xtol=1e-12,
     for sol in found:
         full = point | sol
         if not all(_residual_vanishes(sp.sympify(e).diff(c).xreplace(full).xreplace(values),
-                                      1e-9) for e in f for c in moving):
+                                      _TOL) for e in f for c in moving):
             raise ArgumentError(
                 f"the equations depend on the position of a coordinate that is not `fixed` "
                 f"({[n for n in names if n not in fixed]}): a steady rate is possible only "
@@ -297,7 +307,7 @@ def _solve_numeric(rows, xs, unknowns, within, samples, xtol):
         if len(rows) == len(xs):
             x, ok = _accepted(fun, x)
         else:
-            ok = bool(np.all(np.abs(fun(x)) <= 1e-9))
+            ok = bool(np.all(np.abs(fun(x)) <= _TOL))
         if ok:
             points.append(x)
     merged = []
