@@ -46,7 +46,7 @@ def test_motion_evaluates_prints_and_plots():
     x = m([0.0, math.pi / 2, 11.0])
     np.testing.assert_allclose(x[0], [1.0, 0.15, -0.1], atol=1e-10)   # 0.15 + 0.85 cos(pi/2)
     assert m.t.shape[0] == m.y.shape[1]
-    ax = m.plot(component=0, label="x")
+    (ax,) = m.plot(component=0, label="x")
     assert ax.get_ylabel() == "x" and len(ax.get_lines()) >= 4
     matplotlib.pyplot.close("all")
 

@@ -15,3 +15,9 @@ __all__ += ["Constraints", "assemble"]
 from .reduced import ReducedEquations, reduce_equations  # noqa: E402
 
 __all__ += ["ReducedEquations", "reduce_equations"]
+from .inverse import inverse_dynamics  # noqa: E402
+
+__all__ += ["inverse_dynamics"]
+from .interop import from_sympy_mechanics, kane_form  # noqa: E402
+
+__all__ += ["from_sympy_mechanics", "kane_form"]

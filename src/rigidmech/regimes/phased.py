@@ -208,9 +208,9 @@ class PhasedMotion:
     (('fall', 'rest'), (1.0,))
     >>> m.phases[0].ended_by, m(0.5).round(6)        # state at t = 0.5 from dense output
     ('lands', array([ 3.75, -5.  ]))
-    >>> m.t[0], m.y.shape[0]
-    (np.float64(0.0), 2)
-    >>> ax = m.plot(component=0, label="height")     # matplotlib axes
+    >>> m.t[0], m.y.shape[0], m.names
+    (np.float64(0.0), 2, ('y[0]', 'y[1]'))
+    >>> axes = m.plot(components=[0], names=("height", "rate"))   # a tuple of Axes
     >>> import matplotlib.pyplot as plt; plt.close("all")
     >>> print(m.table())
     phase  regime  start  end  ended by
@@ -309,27 +309,62 @@ class PhasedMotion:
     def __repr__(self):
         return f"PhasedMotion({len(self._phases)} phases: {' -> '.join(self.regimes)})"
 
-    def plot(self, ax=None, *, component: int = 0, label: str | None = None, samples: int = 200):
-        """Plot one state component against time, each phase in its regime's colour, the
-        switching instants as dotted lines; returns the axes."""
-        import matplotlib.pyplot as plt  # the plotting backend only on demand
+    @property
+    def names(self) -> tuple:
+        """The names of the state components: those given, else ``y[0]``, ``y[1]``, ..."""
+        if self._names is not None:
+            return self._names
+        return tuple(f"y[{i}]" for i in range(len(self._phases[0].y_start)))
 
-        if ax is None:
-            _, ax = plt.subplots()
-        colours = {}
-        cycle = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-        for p in self._phases:
-            c = colours.setdefault(p.regime, cycle[len(colours) % len(cycle)])
-            ts = np.linspace(p.start, p.end, samples) if p.end > p.start else np.array([p.start])
-            ys = p.solution.sol(ts)[component]
-            first = sum(q.regime == p.regime for q in self._phases[: self._phases.index(p)]) == 0
-            ax.plot(ts, ys, color=c, label=p.regime if first else None)
-        for s in self.switch_times:
-            ax.axvline(s, color="0.6", linestyle=":", linewidth=0.8)
-        ax.set_xlabel("t")
-        ax.set_ylabel(label or f"y[{component}]")
-        ax.legend(title="regime")
-        return ax
+    def plot(self, ax=None, *, components=None, names=None, units=None, degrees=False,
+             path=None, samples: int = 200, component=None, label=None):
+        """Plot the motion, one panel per state component, on the conventions of
+        :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>` (ch. 21.4, 23, 24).
+
+        Each panel is labelled with its component's name and unit; each phase is drawn and
+        shaded in its regime's colour, the switching instants dotted, the regimes named in a
+        legend above the panels (off the data); a new figure has a constrained layout, so no
+        label is cut.
+
+        Parameters
+        ----------
+        ax : Axes or sequence of Axes, optional
+            One per panel; default a new figure.
+        components : sequence of int or str, optional
+            The components drawn (indices or names), default all.
+        names : sequence of str, optional
+            A name for every state component (default :attr:`names`).
+        units : dict, optional
+            Name -> unit (``{"x": "m", "x'": "m/s"}``).
+        degrees : bool
+            Components in rad (rad/s) drawn in degrees (deg/s).
+        path : str or path, optional
+            Save the figure there.
+        samples : int
+            Points per phase (from its dense output).
+        component, label : one component and its axis label verbatim (the former interface)
+
+        Returns
+        -------
+        tuple of Axes
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> fall = Regime("fall", lambda t, y: np.array([y[1], -10.0]),
+        ...               [Guard("lands", lambda t, y: y[0], target="rest", direction=-1,
+        ...                      reset=lambda t, y: [0.0, 0.0])])
+        >>> m = integrate_phases([fall, Regime("rest")], "fall", (0.0, 2.0), [5.0, 0.0])
+        >>> axes = m.plot(names=("z", "z'"), units={"z": "m", "z'": "m/s"})
+        >>> [a.get_ylabel() for a in axes], axes[-1].get_xlabel()
+        (['$z$ [m]', "$z'$ [m/s]"], 't [s]')
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
+        from ._phase_plot import plot_phases
+
+        return plot_phases(self, ax, components=components, names=names, units=units,
+                           degrees=degrees, path=path, samples=samples, component=component,
+                           label=label)
 
 
 def _terminal(fn, direction):

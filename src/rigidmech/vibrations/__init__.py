@@ -5,7 +5,8 @@ several degrees of freedom (:mod:`~rigidmech.vibrations.modes`), the linearisati
 equations of motion about an equilibrium or a steady motion
 (:mod:`~rigidmech.vibrations.linearize`), equilibria, their stability and bifurcations
 (:mod:`~rigidmech.vibrations.equilibria`), the critical value of a parameter where a
-linearised motion changes stability (:mod:`~rigidmech.vibrations.critical`), rotors and pendulums
+linearised motion changes stability (:mod:`~rigidmech.vibrations.critical`), steady motions
+with q' ≠ 0 (:mod:`~rigidmech.vibrations.steady`), rotors and pendulums
 (:mod:`~rigidmech.vibrations.rotors`).
 """
 
@@ -46,6 +47,7 @@ from .rotors import (
     rotor_bearing_action,
     torsion_pendulum_period,
 )
+from .steady import SteadyMotion, steady_motions, steady_stability
 
 __all__ = [
     "natural_frequency", "critical_damping", "damping_ratio", "damping_coefficient",
@@ -57,6 +59,7 @@ __all__ = [
     "Modes", "natural_modes", "harmonic_response_direct", "plot_frequency_response",
     "LinearSystem", "linearize", "equilibria", "stability", "potential_stability",
     "Bifurcation", "bifurcation", "critical_value", "stability_changes", "StabilityChange",
+    "SteadyMotion", "steady_motions", "steady_stability",
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
     "torsion_pendulum_period",
