@@ -12,7 +12,7 @@ from matplotlib.patches import Circle
 from numpy.testing import assert_allclose
 
 from rigidmech import models
-from rigidmech.drawing import draw
+from rigidmech.drawing import draw, shape_mesh
 from rigidmech.errors import ArgumentError
 
 
@@ -90,14 +90,20 @@ def test_heavy_top_in_3d_ball_joint_at_the_fixed_point():
     (ball,) = d.connections
     assert ball.kind == "ball" and ball.point == "O"
     assert_allclose(ball.at, [0, 0, 0], atol=1e-12)
-    # the top has no catalogue shape: a line from O to G, the principal axes, G's marker
+    # the top is drawn as its shape, a cone with its apex at O (no principal axes)
     arts = d.bodies["top"]
-    kinds = [type(a).__name__ for a in arts]
-    assert kinds.count("Line3D") == 1 and kinds.count("Line3DCollection") == 3
-    k = [np.sin(psi) * np.sin(theta), -np.cos(psi) * np.sin(theta), np.cos(theta)]
-    G = d.view.project(l * np.array(k))
-    xs, ys, zs = arts[0].get_data_3d()
-    assert_allclose(np.c_[xs, ys, zs], [[0, 0, 0], G], atol=1e-12)
+    assert [type(a).__name__ for a in arts] == ["Poly3DCollection", "Text3D"]
+    k = np.array([np.sin(psi) * np.sin(theta), -np.cos(psi) * np.sin(theta), np.cos(theta)])
+    G = d.view.project(l * k)
+    shape = models.heavy_top().bodies[0].shape
+    vertices, _ = shape_mesh(shape, {"radius": l / 2, "height": 4 * l / 3})
+    world = vertices @ d.placement.rotation(shape.frame).T + l * k
+    along = world @ k            # the cone's extent along its axis, from O
+    assert_allclose([along.min(), along.max()], [0, 4 * l / 3], atol=1e-12)
+    apex = world[np.argmin(along)]
+    assert_allclose(apex, [0, 0, 0], atol=1e-12)                  # the apex on the ball joint
+    radial = np.linalg.norm(world - np.outer(along, k), axis=1)
+    assert_allclose(radial.max(), l / 2, rtol=1e-12)              # the base, radius l/2
     # gravity -R0.k: the view's vertical is R0.k
     assert_allclose(G[2], np.cos(theta))
 
