@@ -13,6 +13,7 @@ from numpy.testing import assert_allclose
 
 from rigidmech import models
 from rigidmech.drawing import draw, shape_mesh
+from rigidmech.drawing.symbols import MEETS_GAP, meets_apart
 from rigidmech.errors import ArgumentError
 
 
@@ -81,6 +82,38 @@ def test_four_bar_artists_and_joint_positions():
     assert sorted(d.frames) == ["R0", "R1", "R2", "R3"]
     assert all(len(arts) == 4 for arts in d.frames.values())
     assert {"$i_{R1}$", "$j_{R3}$"} <= set(texts(d))
+
+
+def test_loop_closing_joint_shows_its_meets_point_when_apart():
+    # the four-bar closes its loop at the pivot C (coupler's end) meeting C3 (rocker's end)
+    (q1, q2, q3), B, C, D = four_bar_closed(1.2)
+    l3 = models.FOUR_BAR_LENGTHS[3]
+    opened = q3 + 0.3                           # the rocker turned: the loop is open
+    C3 = D + l3 * np.array([np.cos(opened), np.sin(opened)])
+    d = draw(models.four_bar(), [q1, q2, opened])
+    (closing,) = [c for c in d.connections if c.point == "C"]
+    assert_allclose(closing.at, C, atol=1e-12)
+    assert_allclose(closing.meets, C3, atol=1e-12)
+    dashed = [a for a in closing.artists if getattr(a, "get_linestyle", lambda: "")() == "--"]
+    (gap,) = dashed
+    assert_allclose(np.c_[gap.get_xdata(), gap.get_ydata()], [C, C3], atol=1e-12)
+    assert "C3" in texts(d)
+    assert [c.meets for c in d.connections if c.point != "C"] == [None] * 3
+    # closed: one symbol, no meeting point drawn
+    closed = draw(models.four_bar(), [q1, q2, q3])
+    assert all(c.meets is None for c in closed.connections)
+    assert "C3" not in texts(closed)
+
+
+@pytest.mark.parametrize("gap, shown", [
+    pytest.param(0.1 - 1e-12, False, id="just-below"),
+    pytest.param(0.1, False, id="at"),
+    pytest.param(0.1 + 1e-12, True, id="just-above"),
+])
+def test_meets_point_shown_beyond_a_tenth_of_the_symbol(gap, shown):
+    # one rule: the meeting point is drawn apart when the gap exceeds MEETS_GAP * size
+    assert MEETS_GAP == 0.1
+    assert meets_apart(np.zeros(3), np.array([gap, 0.0, 0.0]), size=1.0) is shown
 
 
 def test_heavy_top_in_3d_ball_joint_at_the_fixed_point():
