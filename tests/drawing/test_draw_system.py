@@ -105,6 +105,28 @@ def test_loop_closing_joint_shows_its_meets_point_when_apart():
     assert "C3" not in texts(closed)
 
 
+def test_a_contact_closing_a_loop_counts_its_gap_along_the_normal_only():
+    # a bar on a pivot at O whose tip T touches the plane y = -0.5 (a point contact at A):
+    # the contact point slides on the plane, so only the distance to the plane is a gap
+    import rigidmech as rm
+    from rigidmech.actions import PointContact
+
+    q = rm.coordinates("q")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    bar = rm.Body("bar", frame=R1, mass=1, centre=R0.origin.moved("G", R1.i / 2),
+                  inertia=rm.inertia.rod(1, 1, axis=R1.i))
+    s = rm.System(galilean=R0)
+    s.connect(R0, bar, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(R0, bar, PointContact(at=R0.point("A", 0, -0.5, 0), normal=R0.j),
+              meets=R0.origin.moved("T", R1.i))
+    touching = draw(s, [-np.pi / 6])            # T = (cos, sin)(-pi/6): on the plane
+    assert [c.meets for c in touching.connections] == [None, None]
+    lifted = draw(s, [0.0])                     # T = (1, 0): 0.5 above the plane
+    (contact,) = [c for c in lifted.connections if c.kind == "contact"]
+    assert_allclose(contact.meets, lifted.view.project([1.0, 0.0, 0.0]), atol=1e-12)
+
+
 @pytest.mark.parametrize("gap, shown", [
     pytest.param(0.1 - 1e-12, False, id="just-below"),
     pytest.param(0.1, False, id="at"),

@@ -10,8 +10,11 @@ hatched side of a plane). A frame is drawn as a small trihedron of its basis vec
 A joint that closes a loop (ch. 25.3) joins its point ``at`` (of the first solid) to the point
 ``meets`` of the second: at a state that does not close the loop the two are apart, and the
 symbol is drawn at ``at`` with ``meets`` as a small open circle, named, joined to it by a
-dashed line (the gap the closure conditions remove); a gap of at most :data:`MEETS_GAP` times
-the symbol's size is not drawn (invisible at that scale).
+dashed line (the gap the closure conditions remove). The gap counted is what the joint does not
+allow: along the normal for a contact or a planar support (its point moves on its plane),
+across the axis for a slide, a cylindrical joint or a sphere in a cylinder, the whole distance
+otherwise; a gap of at most :data:`MEETS_GAP` times the symbol's size is not drawn (invisible at
+that scale).
 """
 
 from __future__ import annotations
@@ -285,12 +288,27 @@ def draw_connection(ax, link, placement, view, *, size, ground=False, label=True
     if meets is not None:
         other = getattr(meets, "origin", meets)          # a frame: its origin
         xyz2 = placement.point(other)
-        if meets_apart(xyz, xyz2, size):
+        if meets_apart(xyz, xyz + _blocked(conn, kind, placement, xyz2 - xyz), size):
             where = view.project(xyz2)
             arts += _draw_meets(ax, view, at, where, size, zorder)
             if label:
                 arts.append(_label(ax, view, where, other.name, size, zorder))
     return ConnectionSymbol(kind, link.label, name, at, tuple(arts), where)
+
+
+def _blocked(conn, kind, placement, gap):
+    """The part of the gap between a joint's point and its ``meets`` point that the joint
+    does not allow: along the normal for a contact or a planar support (its point moves on
+    its plane), across the axis for a slide, a cylindrical joint or a sphere in a cylinder,
+    the whole gap otherwise."""
+    normal = _normal_of(conn)
+    if normal is not None:
+        n = _unit(placement.vector(normal))
+        return gap if n is None else (gap @ n) * n
+    if kind in ("slide", "cylindrical") or isinstance(conn, LinearAnnular):
+        a = _unit(placement.vector(conn.axis))
+        return gap if a is None else gap - (gap @ a) * a
+    return gap
 
 
 def _label(ax, view, at, name, size, zorder):
