@@ -12,7 +12,8 @@ from matplotlib.patches import Circle
 from numpy.testing import assert_allclose
 
 from rigidmech import models
-from rigidmech.drawing import draw
+from rigidmech.drawing import draw, shape_mesh
+from rigidmech.drawing.symbols import MEETS_GAP, meets_apart
 from rigidmech.errors import ArgumentError
 
 
@@ -83,6 +84,60 @@ def test_four_bar_artists_and_joint_positions():
     assert {"$i_{R1}$", "$j_{R3}$"} <= set(texts(d))
 
 
+def test_loop_closing_joint_shows_its_meets_point_when_apart():
+    # the four-bar closes its loop at the pivot C (coupler's end) meeting C3 (rocker's end)
+    (q1, q2, q3), B, C, D = four_bar_closed(1.2)
+    l3 = models.FOUR_BAR_LENGTHS[3]
+    opened = q3 + 0.3                           # the rocker turned: the loop is open
+    C3 = D + l3 * np.array([np.cos(opened), np.sin(opened)])
+    d = draw(models.four_bar(), [q1, q2, opened])
+    (closing,) = [c for c in d.connections if c.point == "C"]
+    assert_allclose(closing.at, C, atol=1e-12)
+    assert_allclose(closing.meets, C3, atol=1e-12)
+    dashed = [a for a in closing.artists if getattr(a, "get_linestyle", lambda: "")() == "--"]
+    (gap,) = dashed
+    assert_allclose(np.c_[gap.get_xdata(), gap.get_ydata()], [C, C3], atol=1e-12)
+    assert "C3" in texts(d)
+    assert [c.meets for c in d.connections if c.point != "C"] == [None] * 3
+    # closed: one symbol, no meeting point drawn
+    closed = draw(models.four_bar(), [q1, q2, q3])
+    assert all(c.meets is None for c in closed.connections)
+    assert "C3" not in texts(closed)
+
+
+def test_a_contact_closing_a_loop_counts_its_gap_along_the_normal_only():
+    # a bar on a pivot at O whose tip T touches the plane y = -0.5 (a point contact at A):
+    # the contact point slides on the plane, so only the distance to the plane is a gap
+    import rigidmech as rm
+    from rigidmech.actions import PointContact
+
+    q = rm.coordinates("q")
+    R0 = rm.Frame("R0")
+    R1 = R0.rotated("R1", about=R0.k, angle=q)
+    bar = rm.Body("bar", frame=R1, mass=1, centre=R0.origin.moved("G", R1.i / 2),
+                  inertia=rm.inertia.rod(1, 1, axis=R1.i))
+    s = rm.System(galilean=R0)
+    s.connect(R0, bar, rm.joints.Pivot(at=R0.origin, axis=R0.k))
+    s.connect(R0, bar, PointContact(at=R0.point("A", 0, -0.5, 0), normal=R0.j),
+              meets=R0.origin.moved("T", R1.i))
+    touching = draw(s, [-np.pi / 6])            # T = (cos, sin)(-pi/6): on the plane
+    assert [c.meets for c in touching.connections] == [None, None]
+    lifted = draw(s, [0.0])                     # T = (1, 0): 0.5 above the plane
+    (contact,) = [c for c in lifted.connections if c.kind == "contact"]
+    assert_allclose(contact.meets, lifted.view.project([1.0, 0.0, 0.0]), atol=1e-12)
+
+
+@pytest.mark.parametrize("gap, shown", [
+    pytest.param(0.1 - 1e-12, False, id="just-below"),
+    pytest.param(0.1, False, id="at"),
+    pytest.param(0.1 + 1e-12, True, id="just-above"),
+])
+def test_meets_point_shown_beyond_a_tenth_of_the_symbol(gap, shown):
+    # one rule: the meeting point is drawn apart when the gap exceeds MEETS_GAP * size
+    assert MEETS_GAP == 0.1
+    assert meets_apart(np.zeros(3), np.array([gap, 0.0, 0.0]), size=1.0) is shown
+
+
 def test_heavy_top_in_3d_ball_joint_at_the_fixed_point():
     psi, theta, phi, l = 0.4, 0.5, 0.0, 1.0
     d = draw(models.heavy_top(), [psi, theta, phi], {"l": l, "A": 1.0, "C": 0.5})
@@ -90,14 +145,20 @@ def test_heavy_top_in_3d_ball_joint_at_the_fixed_point():
     (ball,) = d.connections
     assert ball.kind == "ball" and ball.point == "O"
     assert_allclose(ball.at, [0, 0, 0], atol=1e-12)
-    # the top has no catalogue shape: a line from O to G, the principal axes, G's marker
+    # the top is drawn as its shape, a cone with its apex at O (no principal axes)
     arts = d.bodies["top"]
-    kinds = [type(a).__name__ for a in arts]
-    assert kinds.count("Line3D") == 1 and kinds.count("Line3DCollection") == 3
-    k = [np.sin(psi) * np.sin(theta), -np.cos(psi) * np.sin(theta), np.cos(theta)]
-    G = d.view.project(l * np.array(k))
-    xs, ys, zs = arts[0].get_data_3d()
-    assert_allclose(np.c_[xs, ys, zs], [[0, 0, 0], G], atol=1e-12)
+    assert [type(a).__name__ for a in arts] == ["Poly3DCollection", "Text3D"]
+    k = np.array([np.sin(psi) * np.sin(theta), -np.cos(psi) * np.sin(theta), np.cos(theta)])
+    G = d.view.project(l * k)
+    shape = models.heavy_top().bodies[0].shape
+    vertices, _ = shape_mesh(shape, {"radius": l / 2, "height": 4 * l / 3})
+    world = vertices @ d.placement.rotation(shape.frame).T + l * k
+    along = world @ k            # the cone's extent along its axis, from O
+    assert_allclose([along.min(), along.max()], [0, 4 * l / 3], atol=1e-12)
+    apex = world[np.argmin(along)]
+    assert_allclose(apex, [0, 0, 0], atol=1e-12)                  # the apex on the ball joint
+    radial = np.linalg.norm(world - np.outer(along, k), axis=1)
+    assert_allclose(radial.max(), l / 2, rtol=1e-12)              # the base, radius l/2
     # gravity -R0.k: the view's vertical is R0.k
     assert_allclose(G[2], np.cos(theta))
 

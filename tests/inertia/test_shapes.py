@@ -102,3 +102,39 @@ def test_shape_bad_input(kwargs, match):
 def test_unknown_dimension_name():
     with pytest.raises(ArgumentError, match=r"`name` must be a dimension of a rod \(length\)"):
         Shape("rod", [L], axis=R1.i).dimension("radius")
+
+
+# --- a shape given to a body whose inertia is given by its moments (drawing only) ---
+
+def test_body_given_a_shape_with_an_operator_by_moments():
+    J = InertiaOperator.from_products(a, a, c, frame=R1)
+    cone = Shape("cone", [R, h], axis=-R1.k)
+    top = rm.Body("top", frame=R1, mass=m, inertia=J, shape=cone)
+    assert top.shape == cone
+    # the shape is for drawing only: the operator keeps the given moments
+    assert top.inertia.matrix == sp.diag(a, a, c)
+
+
+def test_massless_link_and_particle_may_be_given_a_shape():
+    rod = Shape("rod", [L], axis=R1.i)
+    assert rm.Body("link", frame=R1, shape=rod).shape == rod
+    assert rm.Body("p", frame=R1, mass=m, shape=rod).shape == rod
+
+
+def test_shape_given_in_a_frame_fixed_in_the_body():
+    R2 = R1.rotated("R2", about=R1.i, angle=sp.pi / 2)
+    disk = Shape("disk", [R], axis=R2.k)
+    assert rm.Body("w", frame=R1, mass=m, shape=disk).shape == disk
+
+
+def test_shape_bad_input_on_a_body():
+    with pytest.raises(rm.errors.ArgumentTypeError, match=r"`shape` must be a "
+                       r"rigidmech.inertia.Shape \(such as .*\); got str"):
+        rm.Body("b", frame=R1, mass=m, shape="cone")
+    R2 = R0.rotated("R2", about=R0.i, angle=rm.coordinates("p"))
+    with pytest.raises(ArgumentError, match="`shape` must be given in a basis fixed in the "
+                       "body: its frame R2 turns"):
+        rm.Body("b", frame=R1, mass=m, shape=Shape("disk", [R], axis=R2.k))
+    with pytest.raises(ArgumentError, match="`shape` given with a catalogue operator"):
+        rm.Body("b", frame=R1, mass=m, inertia=rm.inertia.rod(m, L, axis=R1.i),
+                shape=Shape("rod", [L], axis=R1.i))

@@ -69,3 +69,15 @@ def test_unknown_parameter_is_named():
 
 def test_the_paper_has_25_parameters():
     assert len(P) == 25
+
+
+def test_wheels_are_drawn_as_discs_of_the_papers_radii(bike):
+    # drawing only: a disc about the axle (the wheel's j), of radius rR / rF
+    for name, frame, radius in [("rear_wheel", "RW", P["rR"]), ("front_wheel", "FW", P["rF"])]:
+        shape = bike.body(name).shape
+        assert (shape.kind, shape.dimension("radius")) == ("disk", radius)
+        assert shape.axis == bike.frame(frame).j
+    # the wheel's edge touches the ground at the contact: centre - radius along R0.k upright
+    assert _at_rest(bike, "Cr") == [0, 0, P["rR"]]
+    # the moments stay the paper's (not the thin disc's m r^2 / 2)
+    assert bike.body("rear_wheel").inertia.matrix == sp.diag(P["IRxx"], P["IRyy"], P["IRxx"])

@@ -97,12 +97,12 @@ class Source:
             solids = list(graph.solids)
             loads = [(None, a) for a in graph.actions]
         else:
-            # Statics keeps its connections and loads to itself (no public view): read them
+            # a Statics: its connections and loads as given (its public views)
             self.reference = system.reference
             self.all_bodies = tuple(system.bodies)
-            links = [_Link(*c) for c in system._connections]
+            links = [_Link(*c) for c in system.connections]
             solids = list(system.bodies)
-            loads = list(system._loads)
+            loads = list(system.loads)
         self.bodies = _isolated(bodies, self.all_bodies)
         self.links = [k for k in links if self.inside(k.first) != self.inside(k.second)]
         self.loads = self._external_loads(loads, solids)

@@ -23,7 +23,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 from .._core.validation import substitutions
 from ..statics import Limit, Statics
-from ..statics.limits import _lp_margin  # the limit's own program (no public equivalent)
+from ..statics.limits import largest_margin  # the limit's own program
 from ._fbd_sources import Source, plan, state_numbers
 
 __all__ = ["Component", "Cone", "ExternalAction", "external_actions", "limiting_values",
@@ -292,7 +292,7 @@ def _limiting_values(statics, limit, values) -> dict:
     An, bn, Gn = (np.array(M.tolist(), dtype=float) for M in (A, b, G))
     norms = np.linalg.norm(Gn, axis=1)
     Gn = Gn / np.where(norms > 0, norms, 1.0)[:, None]
-    _, x = _lp_margin(An, bn.reshape(-1), Gn, want_x=True)
+    _, x = largest_margin(An, bn.reshape(-1), Gn)
     if x is None:
         raise ArgumentError("`limit`: the equations of statics have no solution at "
                             f"{limit.parameter} = {limit.value}.")

@@ -94,10 +94,14 @@ class Placer:
             if body.shape is not None:
                 frames.append(body.shape.frame)
             pts.append(body.centre)
+        meets = getattr(system, "meets", None)     # a loop's closing point (dynamics)
         for link in system.mechanism.links:
             p = connection_point(link.connection)
             if p is not None:
                 pts.append(p)
+            other = None if meets is None else meets(link)
+            if other is not None:
+                pts.append(getattr(other, "origin", other))
         for _, _, contact in system.contacts:
             pts.append(contact.contact.point)
         for action in system.actions:

@@ -6,6 +6,15 @@ ball in its socket, a planar support or a point contact as the tangent plane, a 
 as the tangent plane under the contact point, an embedding as a welded square; a connection to
 the ground gets the hatching of the ground (a support under a pivot or a ball joint, the
 hatched side of a plane). A frame is drawn as a small trihedron of its basis vectors.
+
+A joint that closes a loop (ch. 25.3) joins its point ``at`` (of the first solid) to the point
+``meets`` of the second: at a state that does not close the loop the two are apart, and the
+symbol is drawn at ``at`` with ``meets`` as a small open circle, named, joined to it by a
+dashed line (the gap the closure conditions remove). The gap counted is what the joint does not
+allow: along the normal for a contact or a planar support (its point moves on its plane),
+across the axis for a slide, a cylindrical joint or a sphere in a cylinder, the whole distance
+otherwise; a gap of at most :data:`MEETS_GAP` times the symbol's size is not drawn (invisible at
+that scale).
 """
 
 from __future__ import annotations
@@ -29,20 +38,39 @@ from ..actions.connections import (
 from .placement import connection_point
 
 __all__ = ["ConnectionSymbol", "connection_kind", "draw_connection", "draw_frame",
-           "draw_spring"]
+           "draw_spring", "MEETS_GAP", "meets_apart"]
 
 _INK = "0.15"
+
+#: A loop-closing joint's ``meets`` point is drawn apart from its ``at`` point when their
+#: distance exceeds this fraction of the symbol's size (smaller gaps are invisible).
+MEETS_GAP = 0.1
+
+
+def meets_apart(at, meets, size) -> bool:
+    """True when the point ``meets`` (3 numbers in the reference) is drawn apart from the
+    joint's point ``at``: their distance exceeds ``MEETS_GAP * size`` (the one rule).
+
+    Examples
+    --------
+    >>> meets_apart([0, 0, 0], [0.1, 0, 0], size=1.0), meets_apart([0, 0, 0], [0.2, 0, 0], 1.0)
+    (False, True)
+    """
+    gap = np.asarray(meets, dtype=float) - np.asarray(at, dtype=float)
+    return bool(np.linalg.norm(gap) > MEETS_GAP * size)
 
 
 class ConnectionSymbol(NamedTuple):
     """A connection as drawn: its kind, the label of its link, the name of its point, where
-    the symbol is (on the axes: 2 or 3 numbers) and its artists."""
+    the symbol is (on the axes: 2 or 3 numbers) and its artists; for a joint closing a loop
+    at a state that leaves it open, where its ``meets`` point is drawn (None otherwise)."""
 
     kind: str
     label: str
     point: str
     at: np.ndarray
     artists: tuple
+    meets: np.ndarray | None = None
 
 
 def connection_kind(connection) -> str:
@@ -203,12 +231,15 @@ def _draw_3d(ax, kind, at, axis, normal, up, s, ground):
 
 
 def draw_connection(ax, link, placement, view, *, size, ground=False, label=True,
-                    zorder=4) -> ConnectionSymbol | None:
+                    zorder=4, meets=None) -> ConnectionSymbol | None:
     """Draw the symbol of one connection (a :class:`~rigidmech.systems.Link` of the system's
     mechanism) at its point; None for a connection without a point.
 
     ``size`` is the symbol's scale in the units of the drawing; ``ground`` adds the hatching
     of the ground (a connection to the reference); ``label`` writes the point's name.
+    ``meets`` (a Point or Frame of the placement, for a joint that closes a loop:
+    :meth:`System.meets <rigidmech.dynamics.System.meets>`) is drawn too when it is apart
+    from the joint's point (:func:`meets_apart`).
 
     Examples
     --------
@@ -252,13 +283,52 @@ def draw_connection(ax, link, placement, view, *, size, ground=False, label=True
                         ground)
     name = "O" if point.name.startswith("O_") else point.name   # a frame's origin
     if label:
-        if view.dim == 2:
-            arts.append(ax.annotate(name, at, xytext=(-12, 6), textcoords="offset points",
-                                    fontsize=10, color=_INK, zorder=zorder + 4, ha="right"))
-        else:
-            arts.append(ax.text(*(at + 0.8 * size * np.array([0, 0, 1])), name, fontsize=10,
-                                color=_INK))
-    return ConnectionSymbol(kind, link.label, name, at, tuple(arts))
+        arts.append(_label(ax, view, at, name, size, zorder))
+    where = None
+    if meets is not None:
+        other = getattr(meets, "origin", meets)          # a frame: its origin
+        xyz2 = placement.point(other)
+        if meets_apart(xyz, xyz + _blocked(conn, kind, placement, xyz2 - xyz), size):
+            where = view.project(xyz2)
+            arts += _draw_meets(ax, view, at, where, size, zorder)
+            if label:
+                arts.append(_label(ax, view, where, other.name, size, zorder))
+    return ConnectionSymbol(kind, link.label, name, at, tuple(arts), where)
+
+
+def _blocked(conn, kind, placement, gap):
+    """The part of the gap between a joint's point and its ``meets`` point that the joint
+    does not allow: along the normal for a contact or a planar support (its point moves on
+    its plane), across the axis for a slide, a cylindrical joint or a sphere in a cylinder,
+    the whole gap otherwise."""
+    normal = _normal_of(conn)
+    if normal is not None:
+        n = _unit(placement.vector(normal))
+        return gap if n is None else (gap @ n) * n
+    if kind in ("slide", "cylindrical") or isinstance(conn, LinearAnnular):
+        a = _unit(placement.vector(conn.axis))
+        return gap if a is None else gap - (gap @ a) * a
+    return gap
+
+
+def _label(ax, view, at, name, size, zorder):
+    if view.dim == 2:
+        return ax.annotate(name, at, xytext=(-12, 6), textcoords="offset points",
+                           fontsize=10, color=_INK, zorder=zorder + 4, ha="right")
+    return ax.text(*(at + 0.8 * size * np.array([0, 0, 1])), name, fontsize=10, color=_INK)
+
+
+def _draw_meets(ax, view, at, where, s, zorder):
+    """The point ``meets`` of a loop left open: a small open circle joined to the joint's
+    point by a dashed line."""
+    line, = ax.plot(*np.array([at, where]).T, color=_INK, lw=1.0, ls="--", zorder=zorder)
+    if view.dim == 2:
+        ring = Circle(where, 0.25 * s, facecolor="white", edgecolor=_INK, lw=1.2,
+                      zorder=zorder + 1)
+        ax.add_patch(ring)
+        return [line, ring]
+    return [line, ax.scatter(*where, s=30, facecolor="white", edgecolors=_INK,
+                             depthshade=False)]
 
 
 def draw_frame(ax, frame, placement, view, *, size, zorder=5) -> list:

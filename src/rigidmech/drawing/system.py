@@ -254,10 +254,11 @@ def draw(system, q, params=None, *, t=0.0, ax=None, frames=False, labels=True, d
     system = placer.system
     ground = system.mechanism.ground
     symbols = []
+    meets = getattr(system, "meets", None)
     for link in system.mechanism.links:
         sym = draw_connection(ax, link, placement, view, size=size,
                               ground=link.first is ground or link.second is ground,
-                              label=labels)
+                              label=labels, meets=None if meets is None else meets(link))
         if sym is not None:
             symbols.append(sym)
     for n, (parent, child, contact) in enumerate(system.contacts):

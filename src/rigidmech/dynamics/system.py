@@ -47,6 +47,7 @@ from ..kinetics import Body
 from ..systems import Mechanism
 from ..torsors import Torsor
 from ..vectors import Frame
+from ..vectors.points import check_point
 from ..vectors.symbols import is_coordinate
 from . import _connection_actions, _derivation, _tree
 from ._singularities import orientation_singularities
@@ -355,6 +356,65 @@ class System(LinkedParameters):
         """Partial kinematic torsor elements (Omega_i, V_i(point)) of ``solid`` for each
         parameter q_i (ch. 25.1.2; cached)."""
         return _derivation.partials(self, solid, point)
+
+    def action_contributions(self) -> tuple:
+        """The given actions' torsors on the bodies, as the equations of motion use them:
+        ``(body, torsor, action)`` for each body an action is exerted on (the ground left
+        out; ch. 11, 25.1.3). Read-only (a tuple).
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> [(b.name, type(a).__name__, T.resultant) for b, T, a in
+        ...  models.compound_pendulum().system.action_contributions()]
+        [('bar', 'Gravity', g*m*R0.i)]
+        """
+        return tuple(self._contributions())
+
+    def partial_kinematic_torsors(self, body, point=None) -> tuple:
+        """The partial kinematic torsors {V_i(S/R)} = {Omega_i ; V_i(P)} of ``body``, one per
+        parameter q_i in the order of :attr:`coordinates`, reduced at ``point`` (default the
+        body's mass centre): the derivatives of its kinematic torsor with respect to q_i'
+        (ch. 25.1.2), as the equations of motion use them.
+
+        Raises
+        ------
+        ArgumentError
+            If ``body`` is not a body of the system.
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> pendulum = models.compound_pendulum()
+        >>> (V,) = pendulum.system.partial_kinematic_torsors(pendulum.body("bar"))
+        >>> V.resultant, V.moment
+        (R0.k, L/2*R1.j)
+        """
+        if not isinstance(body, Body) or body not in self._bodies:
+            raise ArgumentError(
+                f"`body` must be a body of this system "
+                f"({', '.join(b.name for b in self._bodies) or 'none'}); got {body!r}.")
+        point = body.centre if point is None else point
+        check_point(point, "point")
+        return tuple(Torsor(W, V, point) for W, V in self._partials(body, point))
+
+    def meets(self, link):
+        """The point (or frame) of the second solid given as ``meets`` when ``link`` (one of
+        :attr:`mechanism`'s links) was connected to close a loop (ch. 25.3); None when it
+        was not given (the joint's own point then closes the loop).
+
+        Examples
+        --------
+        >>> from rigidmech import models
+        >>> s = models.four_bar().system
+        >>> [(k.label, getattr(s.meets(k), "name", None)) for k in s.mechanism.links]
+        [('1', None), ('2', None), ('3', None), ('4', 'C3')]
+        """
+        if not any(link is k for k in self._graph.links):
+            raise ArgumentError(
+                f"`link` must be one of this system's links (system.mechanism.links); got "
+                f"{link!r}.")
+        return self._meets.get(id(link))
 
     def equations_of_motion(self, *, open_contacts: bool = False) -> EquationsOfMotion:
         """The equations of motion M(q) q'' = f(q, q', t), free of connection unknowns,

@@ -20,7 +20,7 @@ import sympy as sp
 from .._core.errors import ArgumentError, ArgumentTypeError
 from .._core.symbolic import zero_decision
 from .._core.validation import nonnegative
-from ..inertia import InertiaOperator
+from ..inertia import InertiaOperator, Shape
 from ..kinematics import Solid
 from ..torsors import Torsor
 from ..vectors import Curve, Frame, Point, Vector
@@ -53,6 +53,12 @@ class Body(Solid):
         ``centre=``, that centre must be G), or an operator given at any point of the body,
         moved to G by the relations of Huygens.
         Defaults to zero (a particle).
+    shape : Shape, optional
+        The body's shape **for drawing only** (:class:`~rigidmech.inertia.Shape`, centred on
+        the mass centre, in a frame fixed in the body), when its operator of inertia does not
+        carry one: an operator given by its moments, a particle, a massless link. It plays
+        no part in the mass, the inertia or the equations. A catalogue operator already
+        carries its shape (then omit ``shape``).
 
     Raises
     ------
@@ -61,7 +67,8 @@ class Body(Solid):
     ArgumentError
         For a mass that is not a finite real number >= 0, an inertia given without a mass
         (or with ``mass=0``), in a basis that turns relative to the body, or central at
-        another point than ``centre``.
+        another point than ``centre``; for a ``shape`` in a frame that turns relative to the
+        body, or given with a catalogue operator (which has its own).
 
     Examples
     --------
@@ -74,12 +81,21 @@ class Body(Solid):
     ...            inertia=rm.inertia.rod(m, L, axis=R1.i, centre=G))
     >>> sp.factor(bar.kinetic_energy(R0))
     L**2*m*Derivative(q(t), t)**2/6
+
+    A body whose inertia is given by its moments, drawn as a cone (its shape is for drawing
+    only):
+
+    >>> J = rm.inertia.InertiaOperator.from_products(1, 1, 2, frame=R1, at=G)
+    >>> top = Body("top", frame=R1, mass=m, centre=G, inertia=J,
+    ...            shape=rm.inertia.Shape("cone", [L / 2, 4 * L / 3], axis=-R1.k))
+    >>> top.shape.kind, top.inertia.matrix[2, 2]
+    ('cone', 2)
     """
 
-    __slots__ = ("_mass", "_centre", "_inertia")
+    __slots__ = ("_mass", "_centre", "_inertia", "_shape")
 
     def __init__(self, name: str, frame: Frame, *, mass=None, centre: Point | None = None,
-                 inertia: InertiaOperator | None = None):
+                 inertia: InertiaOperator | None = None, shape: Shape | None = None):
         super().__init__(name, frame)
         if mass is not None:
             mass = nonnegative(mass, "mass")
@@ -112,11 +128,22 @@ class Body(Solid):
                 inertia = (inertia.placed_at(centre) if inertia.is_central
                            else inertia.moved(centre, mass=mass, centre=centre))
             if inertia.frame != frame:
-                _check_fixed_in_body(inertia.frame, frame)
+                _check_fixed_in_body(inertia.frame, frame, "inertia", "the matrix")
                 inertia = inertia.in_basis(frame)
+        if shape is not None:
+            if not isinstance(shape, Shape):
+                raise ArgumentTypeError(
+                    f"`shape` must be a rigidmech.inertia.Shape (such as Shape('cone', [R, h], "
+                    f"axis=R1.k)); got {type(shape).__name__}.")
+            if inertia is not None and inertia.shape is not None:
+                raise ArgumentError(
+                    f"`shape` given with a catalogue operator, which carries its own shape "
+                    f"({inertia.shape!r}); omit `shape`.")
+            _check_fixed_in_body(shape.frame, frame, "shape", "its shape")
         self._mass = mass
         self._centre = centre
         self._inertia = inertia
+        self._shape = shape
 
     @classmethod
     def particle(cls, name: str, at: Point, *, mass, basis: Frame | None = None,
@@ -272,10 +299,11 @@ class Body(Solid):
 
     @property
     def shape(self):
-        """The :class:`~rigidmech.inertia.Shape` of the body when its operator of inertia
-        comes from the catalogue (a rod, a disk, a block...: ch. 15.5), centred on its mass
-        centre; None otherwise (an operator given by its moments, a particle, a massless
-        link). :mod:`rigidmech.drawing` draws a body by its shape.
+        """The :class:`~rigidmech.inertia.Shape` of the body, centred on its mass centre: the
+        one given as ``shape=``, else its operator's when that comes from the catalogue (a
+        rod, a disk, a block...: ch. 15.5); None otherwise (an operator given by its moments,
+        a particle, a massless link, without ``shape=``). :mod:`rigidmech.drawing` draws a
+        body by its shape.
 
         Examples
         --------
@@ -286,6 +314,8 @@ class Body(Solid):
         >>> Body("b", frame=R1, mass=1).shape is None
         True
         """
+        if self._shape is not None:
+            return self._shape
         return None if self._inertia is None else self._inertia.shape
 
     def _angular_momentum_at_centre(self, w: Vector) -> Vector:
@@ -356,7 +386,7 @@ class Body(Solid):
                 f"centre={self._centre.name})")
 
 
-def _check_fixed_in_body(basis_frame, frame):
+def _check_fixed_in_body(basis_frame, frame, argument, what):
     """Raise unless the basis of ``basis_frame`` is fixed relative to ``frame``: the rotation
     vector of one relative to the other is zero (ch. 9.2.3), so their direction cosines are
     constant and the matrix of inertia keeps its values in the body."""
@@ -364,6 +394,6 @@ def _check_fixed_in_body(basis_frame, frame):
     if w.is_zero or all(zero_decision(c) is True for c in w._comps(frame)):
         return
     raise ArgumentError(
-        f"`inertia` must be given in a basis fixed in the body: its frame {basis_frame.name} "
-        f"turns relative to the body's frame {frame.name} (rotation vector {w}). Give the "
-        f"matrix in {frame.name} or in a frame fixed in it.")
+        f"`{argument}` must be given in a basis fixed in the body: its frame {basis_frame.name} "
+        f"turns relative to the body's frame {frame.name} (rotation vector {w}). Give "
+        f"{what} in {frame.name} or in a frame fixed in it.")

@@ -17,7 +17,7 @@ import sympy as sp
 from .._core.errors import ArgumentError
 from ..actions import Pivot, PointContact, RollingContact, gravity
 from ..dynamics import System
-from ..inertia import InertiaOperator
+from ..inertia import InertiaOperator, Shape
 from ..kinematics import ContactKinematics
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates
@@ -76,7 +76,8 @@ def whipple_bicycle(**parameters) -> Model:
         frames (R0, A, Bf, E, RW, E2, H, HE, FW), bodies (rear_wheel, rear_frame,
         front_frame, front_wheel), points (P, Cr, S0, Cf, GB, GH, PF): P and PF the rear and
         front contacts, Cr and Cf the wheels' centres, S0 where the steer axis meets the
-        ground.
+        ground. The wheels are drawn as discs of radii ``rR`` and ``rF`` (their ``shape``,
+        for drawing only: their moments are the paper's).
 
     Raises
     ------
@@ -121,10 +122,14 @@ def whipple_bicycle(**parameters) -> Model:
     down = axle.cross(R0.k.cross(axle))
     PF = Cf.moved("PF", -rF * down / sp.sqrt(1 - axle.dot(R0.k) ** 2))   # front contact
     op = InertiaOperator.from_products
+    # the wheels' moments are the paper's; their shapes (discs of radii rR, rF about the
+    # axles) are for drawing only
     rear = Body("rear_wheel", frame=RW, mass=p["mR"], centre=Cr,
-                inertia=op(p["IRxx"], p["IRyy"], p["IRxx"], frame=RW))
+                inertia=op(p["IRxx"], p["IRyy"], p["IRxx"], frame=RW),
+                shape=Shape("disk", [rR], axis=RW.j))
     front = Body("front_wheel", frame=FW, mass=p["mF"], centre=Cf,
-                 inertia=op(p["IFxx"], p["IFyy"], p["IFxx"], frame=FW))
+                 inertia=op(p["IFxx"], p["IFyy"], p["IFxx"], frame=FW),
+                 shape=Shape("disk", [rF], axis=FW.j))
     # products: the paper's I_xz in (x, y right, z down) is -int x z; z up flips its sign
     body = Body("rear_frame", frame=E, mass=p["mB"], centre=GB,
                 inertia=op(p["IBxx"], p["IByy"], p["IBzz"], 0, p["IBxz"], 0, frame=E, at=GB))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from ..actions import Spherical, gravity
 from ..dynamics import System
-from ..inertia import InertiaOperator
+from ..inertia import InertiaOperator, Shape
 from ..kinetics import Body
 from ..vectors import Frame, constants, coordinates
 from ._model import Model
@@ -23,6 +23,11 @@ def heavy_top() -> Model:
     theta = 0 (the axis vertical), where psi and phi turn about the same line (book,
     ch. 9.4.4: rotation about a fixed point).
 
+    For drawing, the top is given the shape of a cone (``top.shape``) with its apex at O and
+    its mass centre at G: height 4 l / 3 (a homogeneous cone's mass centre is at 3/4 of its
+    height from the apex) and radius l / 2. The shape is for the picture only: the moments
+    A and C stay parameters of their own and need not be those of that cone.
+
     Returns
     -------
     Model
@@ -35,6 +40,8 @@ def heavy_top() -> Model:
     >>> top = models.heavy_top()
     >>> top.system.equations_of_motion().mass_matrix[2, 2]
     C
+    >>> top.bodies[0].shape
+    Shape('cone', radius=l/2, height=4*l/3, axis=-R.k)
     """
     psi, theta, phi = coordinates("psi theta phi")
     m, g, l, A, C = constants("m g l A C", positive=True)
@@ -42,7 +49,8 @@ def heavy_top() -> Model:
     R = R0.euler("R", psi, theta, phi)
     G = R0.origin.moved("G", l * R.k)
     top = Body("top", frame=R, mass=m, centre=G,
-               inertia=InertiaOperator.from_products(A, A, C, frame=R, at=G))
+               inertia=InertiaOperator.from_products(A, A, C, frame=R, at=G),
+               shape=Shape("cone", [l / 2, 4 * l / 3], axis=-R.k))
     system = System(galilean=R0)
     system.connect(R0, top, Spherical(at=R0.origin))
     system.act(gravity(-g * R0.k))

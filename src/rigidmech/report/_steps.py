@@ -7,8 +7,10 @@ ch. 9, 11, 13, 16, 18, 20, 25).
 (the report shows it later) and the raw results in :attr:`StepsWriter.results`.
 
 The partial kinematic torsors and the actions' contributions are those the equations of
-motion were assembled from: :meth:`System._partials` and :meth:`System._contributions`,
-cached by the system (the report reads them rather than computing them again another way).
+motion were assembled from: :meth:`System.partial_kinematic_torsors
+<rigidmech.dynamics.System.partial_kinematic_torsors>` and :meth:`System.action_contributions
+<rigidmech.dynamics.System.action_contributions>`, cached by the system (the report reads
+them rather than computing them again another way).
 
 Examples
 --------
@@ -25,7 +27,6 @@ from __future__ import annotations
 import sympy as sp
 
 from ..kinetics import Body
-from ..torsors import Torsor
 from ..vectors import t
 from ._display import Relation, Words, tex_name, tex_text
 
@@ -178,7 +179,7 @@ class StepsWriter:
     def actions(self):
         s = self.system
         lines = []
-        for solid, torsor, action in s._contributions():
+        for solid, torsor, action in s.action_contributions():
             name = self._names[id(action)]
             label = self._action(name, solid.name)
             self.results["actions"][f"{name} -> {solid.name}"] = torsor
@@ -208,8 +209,7 @@ class StepsWriter:
 
     # -- 5. partial kinematic torsors, power coefficients --------------------------------
     def _partial(self, solid, point, i):
-        W, V = self.system._partials(solid, point)[i]
-        return Torsor(W, V, point)
+        return self.system.partial_kinematic_torsors(solid, point)[i]
 
     def partials(self):
         s = self.system
@@ -222,7 +222,7 @@ class StepsWriter:
         self._add("Partial kinematic torsors", "ch. 25.1.2",
                   "{V_i(S/R)} = d{V(S/R)}/dq_i' for each parameter q_i.", lines)
         lines = []
-        for solid, torsor, action in s._contributions():
+        for solid, torsor, action in s.action_contributions():
             name = self._names[id(action)]
             for i, qt in enumerate(self.q_text):
                 Q = torsor.comoment(self._partial(solid, torsor.point, i))
@@ -265,7 +265,7 @@ class StepsWriter:
         lines = []
         for b in s.bodies:
             terms = [self._action(self._names[id(a)], b.name)
-                     for solid, _, a in s._contributions() if solid is b]
+                     for solid, _, a in s.action_contributions() if solid is b]
             for link in s.mechanism.links:
                 if link.second is b:
                     terms.append(self._action(link.first.name, b.name))

@@ -17,11 +17,11 @@ from .cables import (
     hoisting_force,
     holding_force,
 )
-from .equilibrium import Statics
+from .equilibrium import Statics, StaticsConnection
 from .errors import EquilibriumError
-from .limits import Limit, limiting_equilibrium
+from .limits import Limit, largest_margin, limiting_equilibrium
 from .solution import Equilibrium
 
 __all__ = ["Catenary", "ParabolicCable", "capstan_ratio", "holding_force", "hoisting_force",
-           "belt_slip_torque", "Statics", "Equilibrium", "EquilibriumError",
-           "limiting_equilibrium", "Limit"]
+           "belt_slip_torque", "Statics", "StaticsConnection", "Equilibrium", "EquilibriumError",
+           "limiting_equilibrium", "Limit", "largest_margin"]

@@ -28,6 +28,8 @@ least squares) when only numbers do.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
@@ -39,7 +41,7 @@ from ..vectors import Frame
 from .limits import Limit, limiting_equilibrium
 from .solution import Equilibrium, _solve_numeric, _solve_symbolic
 
-__all__ = ["Statics"]
+__all__ = ["Statics", "StaticsConnection"]
 
 _COMPONENTS = ("resultant along i", "resultant along j", "resultant along k",
                "moment about i", "moment about j", "moment about k")
@@ -50,6 +52,19 @@ def _check_body(s, argument):
         raise ArgumentTypeError(
             f"`{argument}` must be a Body (or a Frame for the fixed ground); got "
             f"{type(s).__name__}.")
+
+
+class StaticsConnection(NamedTuple):
+    """A connection of a :class:`Statics` as given to :meth:`Statics.connect`: its two ends,
+    the connection, its label, its action torsor (of ``first`` on ``second``) and the
+    unknowns of that torsor."""
+
+    first: object
+    second: object
+    connection: object
+    label: str
+    torsor: Torsor
+    unknowns: tuple
 
 
 class Statics:
@@ -87,11 +102,46 @@ class Statics:
                 f"`reference` must be a Frame; got {type(reference).__name__}.")
         self._reference = reference
         self._bodies: list = []
-        self._connections: list = []      # (first, second, connection, label, torsor, unknowns)
+        self._connections: list = []      # StaticsConnection records
         self._loads: list = []            # (body, torsor)
         self._labels: set = set()
 
     reference = property(lambda self: self._reference, doc="The reference (ground).")
+
+    @property
+    def connections(self) -> tuple:
+        """The connections as given, in order: :class:`StaticsConnection` records (first,
+        second, connection, label, torsor, unknowns), the torsor being the action of
+        ``first`` on ``second`` (a new tuple; the records are immutable).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> from rigidmech.actions import ContactLaws
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.connect(R0, box, ContactLaws(at=R0.origin, normal=R0.j), label="A")
+        >>> [(c.second.name, c.label, c.unknowns) for c in st.connections]
+        [('box', 'A', (N_A,))]
+        """
+        return tuple(self._connections)
+
+    @property
+    def loads(self) -> tuple:
+        """The given actions and loads, in order: ``(None, action)`` for an action added with
+        :meth:`act` (its torsors on the bodies are asked when the equations are written),
+        ``(body, torsor)`` for a torsor added with :meth:`load` (a new tuple).
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); box = rm.Body("box", frame=R0)
+        >>> st = Statics(R0)
+        >>> st.load(box, rm.slider(-2 * R0.j, R0.origin))
+        >>> [(b.name, T.resultant) for b, T in st.loads]
+        [('box', -2*R0.j)]
+        """
+        return tuple(self._loads)
 
     @classmethod
     def from_mechanism(cls, mechanism) -> Statics:
@@ -187,7 +237,8 @@ class Statics:
         torsor, unknowns = connection.action_torsor(label)
         for s in (first, second):
             self._add_body(s)
-        self._connections.append((first, second, connection, label, torsor, tuple(unknowns)))
+        self._connections.append(StaticsConnection(first, second, connection, label, torsor,
+                                                   tuple(unknowns)))
 
     def act(self, action: Action) -> None:
         """Add a given action (:class:`~rigidmech.actions.Force`, ``Couple``, ``gravity``,

@@ -35,7 +35,7 @@ from .errors import EquilibriumError
 # lazy: import cost (scipy.optimize takes ~0.3 s; see docs/performance)
 brentq, linprog = lazy_functions(globals(), "scipy.optimize", "brentq", "linprog")
 
-__all__ = ["limiting_equilibrium", "Limit"]
+__all__ = ["limiting_equilibrium", "Limit", "largest_margin"]
 
 _CAP = 1.0
 
@@ -87,6 +87,38 @@ class Limit:
     def __repr__(self):
         return (f"Limit({self.parameter}={self.value!r}, kinds={self.kinds!r}, "
                 f"contacts={self.contacts!r})")
+
+
+def largest_margin(A, b, G):
+    """The linear program of the limiting equilibrium at one value of its parameter: the
+    largest margin t with A x = b and G x >= t (ch. 14.4), and the unknowns x that reach it.
+
+    Parameters
+    ----------
+    A, b : numpy arrays, shapes (m, n) and (m,)
+        The equations of statics in the unknowns x.
+    G : numpy array, shape (k, n)
+        The contact laws as rows g_k . x >= 0, each of unit norm.
+
+    Returns
+    -------
+    (float, numpy array or None)
+        t, measured in units of max|b| and capped (the program is solved with b / max|b|),
+        and x (in the units of b); ``(-cap, None)`` when the equations have no solution.
+
+    Raises
+    ------
+    EquilibriumError
+        If the linear program fails otherwise.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> t, x = largest_margin(np.array([[1.0, 1.0]]), np.array([2.0]), np.eye(2))
+    >>> round(t, 9), x.round(9).tolist()
+    (0.5, [1.0, 1.0])
+    """
+    return _lp_margin(A, b, G, want_x=True)
 
 
 def _lp_margin(A, b, G, want_x=False):
