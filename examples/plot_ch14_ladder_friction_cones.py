@@ -1,6 +1,6 @@
 """
 A ladder against a wall at its limiting equilibrium, with both friction cones (ch. 14)
-=====================================================================================
+======================================================================================
 
 A uniform ladder AB of length :math:`L` and weight :math:`W = m g` leans against a vertical
 wall, its foot :math:`A` on the ground (static friction coefficient :math:`f_1`), its top

@@ -35,7 +35,7 @@ __all__ = ["StabilityChange", "critical_value", "growth", "stability_changes",
            "STABILITY_TOL"]
 
 #: Relative margin of the stability decision on the exponents: unstable when
-#: max Re s > STABILITY_TOL max |s| (the default ``tol`` of :func:`stability`).
+#: ``max Re s > STABILITY_TOL max |s|`` (the default ``tol`` of :func:`stability`).
 STABILITY_TOL = 1e-9
 
 
