@@ -39,6 +39,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg
 import sympy as sp
 
 from .build_rigidmech import to_rigidmech
@@ -112,7 +113,11 @@ def sympy_accelerations(kane):
     names = [_name(q) for q in kane.q]
     qs = [sp.Symbol(f"_q{k}") for k in range(len(names))]
     us = [sp.Symbol(f"_u{k}") for k in range(len(names))]
-    rule = {**dict(zip(kane.u, us, strict=True)), **dict(zip(kane.q, qs, strict=True))}
+    # the speed u_<name> is the rate of the coordinate <name> (Kane's u may be in another
+    # order than its q: independent speeds first)
+    rows = [names.index(_name(x)[2:]) for x in kane.u]
+    rule = {**{x: us[k] for x, k in zip(kane.u, rows, strict=True)},
+            **dict(zip(kane.q, qs, strict=True))}
     # common subexpressions: Kane's forcing repeats the partial velocities (cse prints it
     # about 3 times faster than the plain expression)
     Mf = sp.lambdify([qs, us], [kane.mass_matrix.xreplace(rule), kane.forcing.xreplace(rule)],
@@ -130,7 +135,9 @@ def sympy_accelerations(kane):
             K = np.block([[M, J.T], [J, np.zeros((m, m))]])
             rhs = np.concatenate([f, -closure["bias"](q, u)])
             return np.linalg.solve(K, rhs)[:len(f)], np.linalg.cond(K)
-        return np.linalg.solve(M, f), np.linalg.cond(M)
+        out = np.empty(len(f))
+        out[rows] = np.linalg.solve(M, f)
+        return out, np.linalg.cond(M)
 
     return names, qdd
 
@@ -148,10 +155,11 @@ def random_states(model: Model, rng, count):
 
 def closed_state(closure, rng, spread=0.15):
     """A state (q, u) in the order of Kane's coordinates (independent first) that satisfies
-    the closure's conditions and their derivative: the independent coordinates moved from the
-    assembly by at most ``spread``, the dependent ones by Newton's method (to 1e-13), random
-    independent speeds and the dependent ones from the velocity conditions. (None, None) if
-    Newton's method does not converge.
+    the conditions and their derivative: with holonomic conditions, the independent
+    coordinates moved from the assembly by at most ``spread`` and the dependent ones found by
+    Newton's method (to 1e-13); without, coordinates drawn in their ranges; then speeds
+    drawn at random in the null space of the velocity conditions A(q) q' = 0 (an orthonormal
+    basis from the SVD). (None, None) if Newton's method does not converge.
 
     Examples
     --------
@@ -162,23 +170,27 @@ def closed_state(closure, rng, spread=0.15):
     >>> q, u = closed_state(closure, np.random.default_rng(0))
     >>> bool(np.max(np.abs(closure["phi"](q))) < 1e-12)
     True
+    >>> bool(np.max(np.abs(closure["jacobian"](q) @ u)) < 1e-12)
+    True
     """
-    dep = closure["dependent"]
-    ind = [k for k in range(len(closure["assembly"])) if k not in dep]
-    x = closure["assembly"].copy()
-    x[ind] += rng.uniform(-spread, spread, len(ind))
-    for _ in range(30):
-        r = closure["phi"](x)
-        if np.max(np.abs(r)) < 1e-13:
-            break
-        x[dep] -= np.linalg.solve(closure["jacobian"](x)[:, dep], r)
-    else:
-        return None, None
-    J = closure["jacobian"](x)
-    v = np.zeros(len(x))
-    v[ind] = rng.uniform(-1.0, 1.0, len(ind))
-    v[dep] = -np.linalg.solve(J[:, dep], J[:, ind] @ v[ind])
     order = closure["order"]
+    if closure["assembly"] is None:
+        lo, hi = closure["ranges"].T
+        x = rng.uniform(lo, hi)
+    else:
+        dep = closure["dependent"]
+        ind = [k for k in range(len(closure["assembly"])) if k not in dep]
+        x = closure["assembly"].copy()
+        x[ind] += rng.uniform(-spread, spread, len(ind))
+        for _ in range(30):
+            r = closure["phi"](x)
+            if np.max(np.abs(r)) < 1e-13:
+                break
+            x[dep] -= np.linalg.solve(closure["phi_jacobian"](x)[:, dep], r)
+        else:
+            return None, None
+    basis = scipy.linalg.null_space(closure["jacobian"](x))
+    v = basis @ rng.uniform(-1.0, 1.0, basis.shape[1])
     return x[order], v[order]
 
 
