@@ -167,7 +167,8 @@ def _subtree(model, c):
     return out
 
 
-def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.KanesMethod:
+def to_sympy(model: Model, *, action_of=None, closure="multipliers", equations=True
+             ) -> me.KanesMethod:
     """The ``KanesMethod`` of ``model``, its equations formed.
 
     Its ``q`` are ``dynamicsymbols`` named as :func:`~rigidmech.testing.fuzz.coordinate_names`
@@ -182,13 +183,20 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
     auxiliary equations ``kane.auxiliary_eqs`` then give them once u' is known; the
     unknowns are zero in ``mass_matrix`` and ``forcing``.
 
-    A model with a closing joint (``model.closure``) gets in ``kane.closure`` the numeric
-    functions of its conditions (``phi``, ``jacobian``, ``bias`` = J' q', the dependent
-    coordinates and the assembly). With ``closure="kane"`` the conditions go to Kane's method
-    (``q_dependent``, ``configuration_constraints``, ``u_dependent``,
-    ``velocity_constraints``); with ``closure="multipliers"`` (default) the tree's equations
-    are formed without them and :func:`~rigidmech.testing.fuzz.compare` adds the constraint
-    force J^T lambda (the reference used, see the note in ``compare``).
+    A constrained model (a closing joint ``model.closure``: holonomic conditions; rolling
+    bodies and knife edges: nonholonomic ones) gets in ``kane.closure`` the numeric functions
+    of its conditions (``jacobian`` A of the velocity conditions A q' = 0, ``bias`` = A' q',
+    the holonomic residual ``phi`` and ``phi_jacobian``, the dependent coordinates, the
+    assembly, the coordinates' ``ranges``). With ``closure="kane"`` the conditions go to
+    Kane's method (``q_dependent``, ``configuration_constraints``, ``u_dependent``,
+    ``velocity_constraints``: sympy's documented usage); with ``closure="multipliers"``
+    (default) the tree's equations are formed without them and
+    :func:`~rigidmech.testing.fuzz.compare` adds the constraint force A^T lambda (the
+    reference used, see the note in ``compare``).
+
+    With ``equations=False`` Kane's equations are not formed: the KanesMethod has only its
+    coordinates, speeds and ``closure`` (the consistent states of a constrained model, for
+    the metamorphic tests, at a fraction of the cost).
     """
     names = coordinate_names(model)
     q = dict(zip(names, me.dynamicsymbols(names), strict=True)) if len(names) > 1 else {
@@ -288,7 +296,8 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
             closing["numeric"]["order"] = list(range(len(qs)))
     kane = me.KanesMethod(N, q_ind=qs, u_ind=us, u_auxiliary=aux, kd_eqs=kd,
                           **closing.get("kane", {}))
-    kane.kanes_equations(rigid, loads)
+    if equations:
+        kane.kanes_equations(rigid, loads)
     kane.action_symbols = tuple(unknowns)
     kane.closure = closing.get("numeric")
     kane.closure_method = closure

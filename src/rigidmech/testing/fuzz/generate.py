@@ -166,13 +166,13 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
         conditions, if any. ``True`` or ``"spherical"``: a spherical joint, the tree drawn
         from ``joints``; ``"pivot"`` or ``"slider"`` (a linear annular joint along a line of
         the plane): a planar loop, the tree drawn from :data:`PLANAR_JOINTS` (``joints`` is
-        ignored); ``"any"``: one of the three, drawn.
+        ignored); ``"any"``: one of the three or none, drawn.
     knives : bool
         Give each body on a ``planar`` joint a knife edge with probability 1/2
         (:class:`~rigidmech.testing.fuzz.description.KnifeSpec`).
     """
     if closure == "any":
-        closure = src.choice(CLOSURES)
+        closure = src.choice((False,) + CLOSURES)
     kind = "spherical" if closure is True else closure
     plane = src.integer(0, 2) if kind in ("pivot", "slider") else None
     n = src.integer(1, max_bodies)
@@ -222,7 +222,9 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
     chain = []
     for b in bodies:
         chain.append(len(b.joint_kinds) + (0 if b.parent < 0 else chain[b.parent]))
-    closing = [k for k, n in enumerate(chain) if n > conditions]
+    # (not a free body: its first connection would be a joint of the tree, not a loop)
+    closing = [k for k, n in enumerate(chain) if n > conditions
+               and not (bodies[k].parent < 0 and bodies[k].joint in ("free", "polar"))]
     if closing:
         ranges = coordinate_ranges(model)
         names = iter(coordinate_names(model))
