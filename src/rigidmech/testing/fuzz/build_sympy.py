@@ -400,7 +400,12 @@ def _constraints(model, q, qs, us, holonomic, nonholonomic):
     dep_u = list(dep)
     if nonholonomic:
         x = numeric["assembly"] if holonomic else ranges_mid(numeric["ranges"])
-        A0 = numeric["jacobian"](x)[len(holonomic):]
+        Af = numeric["jacobian"](x)
+        if np.linalg.matrix_rank(Af, tol=1e-8 * max(np.max(np.abs(Af)), 1.0)) < len(velocity):
+            raise DegenerateModel(
+                "the velocity conditions are not independent (redundant connections: more "
+                "conditions than the coordinates allow)")
+        A0 = Af[len(holonomic):]
         free = [k for k in range(len(qs)) if k not in dep]
         piv = scipy.linalg.qr(A0[:, free], pivoting=True)[2][:len(nonholonomic)]
         dep_u = sorted(dep + [free[int(k)] for k in piv])

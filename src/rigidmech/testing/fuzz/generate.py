@@ -166,13 +166,16 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
         conditions, if any. ``True`` or ``"spherical"``: a spherical joint, the tree drawn
         from ``joints``; ``"pivot"`` or ``"slider"`` (a linear annular joint along a line of
         the plane): a planar loop, the tree drawn from :data:`PLANAR_JOINTS` (``joints`` is
-        ignored); ``"any"``: one of the three or none, drawn.
+        ignored); ``"planar"``: a pivot or a slider, drawn; ``"any"``: one of the three or
+        none, drawn.
     knives : bool
         Give each body on a ``planar`` joint a knife edge with probability 1/2
         (:class:`~rigidmech.testing.fuzz.description.KnifeSpec`).
     """
     if closure == "any":
         closure = src.choice((False,) + CLOSURES)
+    elif closure == "planar":
+        closure = src.choice(("pivot", "slider"))
     kind = "spherical" if closure is True else closure
     plane = src.integer(0, 2) if kind in ("pivot", "slider") else None
     n = src.integer(1, max_bodies)
