@@ -3,17 +3,20 @@
 Both sides are reduced to numbers the same way: at a random state (q, q') the accelerations
 q'' solve M q'' = f. rigidmech's side is the compiled right-hand side
 :meth:`~rigidmech.EquationsOfMotion.rhs` (what a simulation runs); sympy's side is
-``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), lambdified and solved by
-``numpy.linalg.solve``. Coordinates are matched by name.
+``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), evaluated at the state by substituting
+floats (or lambdified, ``evaluate="lambdify"``) and solved by ``numpy.linalg.solve``.
+Coordinates are matched by name.
 
-A model with a closing joint is compared at consistent states (:func:`closed_state`). The
-reference there is the tree's ``KanesMethod`` with the constraint force J^T lambda of the
-closing joint (an augmented linear system), not ``KanesMethod`` with ``q_dependent`` and
-``u_dependent`` (kept as ``to_sympy(..., closure="kane")``): on a loop found by the fuzzer (a
-prismatic body carrying a spherical one, closed to the ground, its slider locked by the loop)
-Kane's accelerations changed with the choice of the dependent speeds, and only one choice
-agreed with rigidmech, whose q'' satisfy both J q'' = -J' q' and M q'' - f in the range of
-J^T (the principle with a perfect joint) to round-off.
+A constrained model (a closing joint, rolling contacts, knife edges) is compared at
+consistent states (:func:`closed_state`). The reference there is the tree's ``KanesMethod``
+with the constraint force A^T lambda of the velocity conditions A q' = 0 (an augmented linear
+system with the acceleration rows A q'' = -A' q'), not ``KanesMethod`` with ``q_dependent``
+and ``u_dependent`` (kept as ``to_sympy(..., closure="kane")``, checked on written-out models
+by the tests): on a loop found by the fuzzer (a prismatic body carrying a spherical one,
+closed to the ground, its slider locked by the loop) Kane's accelerations changed with the
+choice of the dependent speeds, and only one choice agreed with rigidmech, whose q'' satisfy
+both J q'' = -J' q' and M q'' - f in the range of J^T (the principle with a perfect joint) to
+round-off.
 
 Tolerance: :data:`RTOL` relative to the largest ``|q''|`` of the state (at least
 :data:`SCALE_FLOOR`). Both sides evaluate

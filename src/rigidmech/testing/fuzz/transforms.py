@@ -11,10 +11,10 @@ every consistent system of units):
   actions and knife edges given in reverse order: the same q'';
 * :func:`renamed`: the coordinates renamed: the same q'' under the new names;
 * :func:`scaled`: lengths times ``length``, masses times ``mass``, times times ``time``
-  (every constant scaled by its dimension, radii and the closing joint's point included): a
-  coordinate of length scales by ``length``, its
-  rate by ``length / time``, its acceleration by ``length / time**2``; an angle is
-  unchanged, its rate scales by ``1 / time`` and its acceleration by ``1 / time**2``.
+  (every constant scaled by its dimension, radii, knife edges and the closing joint's point
+  included): a coordinate of length scales by ``length``, its rate by ``length / time``, its
+  acceleration by ``length / time**2``; an angle is unchanged, its rate scales by
+  ``1 / time`` and its acceleration by ``1 / time**2``.
 
 Examples
 --------
