@@ -9,11 +9,13 @@ build, derive, compile, evaluate) with the slowest models. Run from the reposito
     PYTHONPATH=src python benchmarks/fuzz_models.py 20 --bodies 6 --dof 10 --seed 1
     PYTHONPATH=src python benchmarks/fuzz_models.py 30 --ground --no-polar
     PYTHONPATH=src python benchmarks/fuzz_models.py 10 --bodies 2 --dof 4 --closure
+    PYTHONPATH=src python benchmarks/fuzz_models.py 30 --seed 0 --dof 8 --knives --closure
 
-``polar`` bodies (a translated frame of a rotated helper frame) are drawn unless
-``--no-polar``: they show the known dropped-coordinate bug (status ``coordinates``). Larger
-3D models are slow on sympy's side (Kane's method on many coordinates takes minutes): use
-``--dof`` to bound them.
+Every joint of the generator is drawn (``polar``, a translated frame of a rotated helper
+frame, unless ``--no-polar``; the rolling sphere and disc unless ``--no-rolling``);
+``--knives`` adds knife edges, ``--closure [kind]`` closes loops (spherical, or a pivot or a
+slider closing a planar loop). Larger 3D models are slow on sympy's side (Kane's method on
+many coordinates takes minutes): use ``--dof`` to bound them.
 """
 
 from __future__ import annotations
@@ -37,18 +39,26 @@ def main(argv=None):
     parser.add_argument("--states", type=int, default=4, help="states compared per model")
     parser.add_argument("--ground", action="store_true", help="turn and move the ground frame")
     parser.add_argument("--no-polar", action="store_true", help="leave out the polar joint")
-    parser.add_argument("--closure", action="store_true",
-                        help="close a loop with a spherical joint where the tree allows it")
+    parser.add_argument("--closure", nargs="?", const="any", default=None,
+                        choices=("any", "spherical", "pivot", "slider"),
+                        help="close a loop where the tree allows it (default kind: any of a "
+                             "spherical joint, or a pivot or a slider closing a planar loop)")
+    parser.add_argument("--knives", action="store_true",
+                        help="give bodies on a planar joint a knife edge (one in two)")
+    parser.add_argument("--no-rolling", action="store_true",
+                        help="leave out the rolling sphere and disc")
     parser.add_argument("--slowest", type=int, default=5)
     args = parser.parse_args(argv)
-    joints = tuple(j for j in JOINT_ORDER if not (args.no_polar and j == "polar"))
+    joints = tuple(j for j in JOINT_ORDER if not (args.no_polar and j == "polar")
+                   and not (args.no_rolling and j in ("ball", "disc")))
     rng = np.random.default_rng(args.seed)
     counts = collections.Counter()
     times = []
     start = time.perf_counter()
     for k in range(args.n):
         model = random_model(rng, max_bodies=args.bodies, max_dof=args.dof, joints=joints,
-                             ground=args.ground, closure=args.closure)
+                             ground=args.ground, closure=args.closure or False,
+                             knives=args.knives)
         t0 = time.perf_counter()
         report = compare(model, seed=k, states=args.states)
         elapsed = time.perf_counter() - t0

@@ -139,7 +139,11 @@ def connect(system, parent, child, joint, meets, label):
     if parent is not system._ground and parent not in system._bodies:
         raise ConnectionError_(
             f"connect the parent {parent.name} before its children.")
-    if meets is not None and not (isinstance(joint, Joint) and child in system._joints):
+    # the joint closes a loop when the child is already connected, by a tree joint or by a
+    # linking connection (a rolling contact): the same rule as ``closing`` below
+    connected = child in system._joints or (
+        child in system._bodies and bool(system._graph.links_of(child)))
+    if meets is not None and not (isinstance(joint, Joint) and connected):
         raise ArgumentError(
             "`meets` is the point of `child` that closes a loop: give it only for a joint "
             f"between two solids already connected; got it for {child.name}, which has no "

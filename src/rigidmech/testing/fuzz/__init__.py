@@ -12,9 +12,10 @@ and returns a :class:`Report`; :func:`compare_action` compares the action in one
 :mod:`rigidmech.testing.fuzz.transforms` gives the metamorphic transformations (Galilean
 frame turned or moved, bodies connected in another order, units scaled).
 
-The models are trees of the joints of :data:`JOINTS` (book, ch. 13.2.2), optionally with a
-spherical joint closing a loop to the ground (:class:`ClosureSpec`); rolling contacts and
-knife edges are not drawn yet.
+The models are trees of the joints of :data:`JOINTS` (book, ch. 13.2.2), among them spheres
+and discs rolling without slipping on a plane (:data:`ROLLING`, nonholonomic), optionally
+with knife edges (:class:`KnifeSpec`, nonholonomic) and a joint closing a loop to the ground
+(:class:`ClosureSpec`: spherical, or a pivot or a slider closing a planar loop).
 
 Examples
 --------
@@ -30,11 +31,14 @@ from .build_rigidmech import to_rigidmech
 from .build_sympy import to_sympy
 from .compare import RTOL, Report, compare, compare_action
 from .description import (
+    CLOSURES,
     JOINTS,
+    ROLLING,
     BodySpec,
     ClosureSpec,
     DamperSpec,
     ForceSpec,
+    KnifeSpec,
     Model,
     SpringSpec,
     TorqueSpec,
@@ -44,7 +48,8 @@ from .description import (
 )
 from .generate import NumpySource, draw_model, random_model
 
-__all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
+__all__ = ["JOINTS", "ROLLING", "CLOSURES", "KnifeSpec", "BodySpec", "SpringSpec",
+           "DamperSpec", "TorqueSpec", "ForceSpec",
            "TorsionalDamperSpec", "ClosureSpec", "Model", "coordinate_names", "coordinate_kinds",
            "NumpySource", "draw_model", "random_model", "to_rigidmech", "to_sympy", "compare",
            "compare_action", "Report", "RTOL", "transforms"]

@@ -20,8 +20,10 @@ import sympy as sp
 
 import rigidmech as rm
 from rigidmech.inertia import InertiaOperator
+from rigidmech.kinematics import ContactKinematics
+from rigidmech.kinematics.surfaces import Circle, Plane, Sphere
 
-from .description import Model, coordinate_names
+from .description import ROLLING, Model, coordinate_names
 
 __all__ = ["to_rigidmech", "ground_frame"]
 
@@ -116,6 +118,15 @@ def _joint_frame(b, F, q):
         H = F.rotated(f"{n}_H", about=e, angle=q[1])
         S = O.moved(f"{n}_S", q[0] * _basis(H)[(b.axis + 1) % 3])
         return F.translated(f"{n}_C", S), O
+    if kind == "ball":
+        I = O.moved(f"{n}_I", q[0] * u + q[1] * v)
+        return _angles(F, b.angles, q[2:], f"{n}_C", I.moved(f"{n}_S", _x(b.radius) * e)), I
+    if kind == "disc":
+        I = O.moved(f"{n}_I", q[0] * u + q[1] * v)
+        A = F.rotated(f"{n}_A", about=e, angle=q[2])
+        Bl = A.rotated(f"{n}_L", about=_basis(A)[(b.axis + 1) % 3], angle=q[3])
+        centre = I.moved(f"{n}_S", _x(b.radius) * _basis(Bl)[(b.axis + 2) % 3])
+        return Bl.rotated(f"{n}_C", about=_basis(Bl)[b.axis], angle=q[4], origin=centre), I
     raise ValueError(f"unknown joint {kind!r}")
 
 
@@ -132,6 +143,19 @@ def _joint(b, F, at):
         "annular": lambda: rm.joints.LinearAnnular(at=at, axis=e),
         "point": lambda: rm.joints.PointContact(at=at, normal=e),
     }[b.joint]()
+
+
+def _rolling(b, F, C, I, body, parent):
+    """The rolling contact of a ``ball`` or ``disc`` body on the plane of F."""
+    e = _basis(F)[b.axis]
+    if b.contact == "between":
+        surface = (Sphere(C.origin, _x(b.radius)) if b.joint == "ball"
+                   else Circle(C.origin, _x(b.radius), normal=_basis(C)[b.axis]))
+        kin = ContactKinematics.between(body, surface, parent, Plane(F.origin, e),
+                                        name=f"{b.name}_Ic")
+    else:
+        kin = ContactKinematics(body, parent, at=I, normal=e)
+    return rm.actions.RollingContact(kin, pivoting=bool(b.pivoting))
 
 
 def _coordinates(model):
@@ -170,7 +194,7 @@ def _build(model, coordinates):
     W = ground_frame(R0, model)
     order = None if coordinates is None else [q[n] for n in coordinates]
     system = rm.System(galilean=R0, coordinates=order)
-    bodies, mounts = [], []
+    bodies, mounts, joints = [], [], []
     for b in model.bodies:
         Pf = W if b.parent < 0 else bodies[b.parent].frame
         parent = R0 if b.parent < 0 else bodies[b.parent]
@@ -186,10 +210,13 @@ def _build(model, coordinates):
                                                              at=G))
         if b.joint == "free" or (b.joint == "polar" and b.parent < 0):
             system.add(body)
+        elif b.joint in ROLLING:
+            system.connect(parent, body, _rolling(b, F, C, at, body, parent))
         else:
             system.connect(parent, body, _joint(b, F, at))
         bodies.append(body)
         mounts.append(F)
+        joints.append(C)
 
     def point(k, xyz, label):
         frame = W if k < 0 else bodies[k].frame
@@ -221,18 +248,35 @@ def _build(model, coordinates):
         e = _basis(mounts[d.body])[model.bodies[d.body].axis]
         system.act(rm.actions.TorsionalDamper(_x(d.c), axis=e, on=bodies[d.body],
                                               reaction_on=parent_of(d.body)))
+    for j, k in enumerate(model.knives):
+        F, C = mounts[k.body], joints[k.body]
+        axis = model.bodies[k.body].axis
+        u, v = _basis(C)[(axis + 1) % 3], _basis(C)[(axis + 2) % 3]
+        P = C.origin.moved(f"Pk{j}", _x(k.at[0]) * u + _x(k.at[1]) * v)
+        angle = _x(k.angle)
+        system.connect(parent_of(k.body) or R0, bodies[k.body], rm.actions.KnifeEdge(
+            bodies[k.body], parent_of(k.body) or R0, at=P,
+            direction=sp.cos(angle) * u + sp.sin(angle) * v, normal=_basis(F)[axis]))
     if model.closure is not None:
         _close(system, model, q, W, bodies, R0)
     return system
 
 
 def _close(system, model, q, W, bodies, R0):
-    """The spherical joint closing the loop, at the ground point where the body's point is
-    in the assembled configuration (computed here from rigidmech's own kinematics)."""
+    """The joint closing the loop, at the ground point where the body's point is in the
+    assembled configuration (computed here from rigidmech's own kinematics)."""
     c = model.closure
     body = bodies[c.body]
     meets = body.frame.origin.moved("Mc", _comps(body.frame, c.meets))
     values = {q[n]: _x(v) for n, v in model.assembly_values().items()}
     where = (meets - W.origin).components(W).subs(values)
     D = W.origin.moved("Dc", _comps(W, [float(sp.N(x, 30)) for x in where]))
-    system.connect(R0, body, rm.joints.Spherical(at=D), meets=meets)
+    n = _basis(W)[c.plane]
+    joint = {
+        "spherical": lambda: rm.joints.Spherical(at=D),
+        "pivot": lambda: rm.joints.Pivot(at=D, axis=n),
+        # the line's direction: an axis of the ground frame turned about the normal
+        "slider": lambda: rm.joints.LinearAnnular(at=D, axis=_basis(W.rotated(
+            "Wd", about=n, angle=_x(c.direction)))[(c.plane + 1) % 3]),
+    }[c.kind]()
+    system.connect(R0, body, joint, meets=meets)

@@ -19,7 +19,7 @@ Examples
 >>> kane = to_sympy(Model(bodies=(BodySpec(name="b0", parent=-1, joint="prismatic"),),
 ...                       gravity=(0.0, 0.0, -2.0)))
 >>> kane.mass_matrix, kane.forcing
-(Matrix([[1.0]]), Matrix([[-2.0]]))
+(Matrix([[1]]), Matrix([[-2]]))
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ import sympy as sp
 from sympy.physics import mechanics as me
 
 from ..._core.errors import ArgumentError
-from .description import Model, coordinate_names
+from .description import ROLLING, Model, coordinate_names, coordinate_ranges
 
 __all__ = ["to_sympy", "constant_dcm", "AXIAL"]
 
@@ -39,9 +39,15 @@ def _basis(frame):
     return (frame.x, frame.y, frame.z)
 
 
+def _r(value):
+    """A number of the description as an exact rational (the grid values are binary
+    fractions; a coordinate passes through)."""
+    return sp.Rational(value) if isinstance(value, (int, float)) else value
+
+
 def _comps(frame, xyz):
     x, y, z = _basis(frame)
-    return xyz[0] * x + xyz[1] * y + xyz[2] * z
+    return _r(xyz[0]) * x + _r(xyz[1]) * y + _r(xyz[2]) * z
 
 
 def constant_dcm(rotations):
@@ -100,7 +106,7 @@ def _joint(b, F, P, q):
     if kind == "cylindrical":
         return F.orientnew(f"{n}_C", "Axis", [q[0], e]), P.locatenew(f"{n}_S", q[1] * e)
     if kind == "helical":
-        h = sp.Float(b.pitch) / (2 * sp.pi)
+        h = _r(b.pitch) / (2 * sp.pi)
         return F.orientnew(f"{n}_C", "Axis", [q[0], e]), P.locatenew(f"{n}_S", h * q[0] * e)
     if kind == "spherical":
         return _angles(F, b.angles, q, f"{n}_C"), P
@@ -117,6 +123,15 @@ def _joint(b, F, P, q):
     if kind == "polar":
         H = F.orientnew(f"{n}_H", "Axis", [q[1], e])
         return F, P.locatenew(f"{n}_S", q[0] * _basis(H)[(b.axis + 1) % 3])
+    if kind == "ball":
+        return (_angles(F, b.angles, q[2:], f"{n}_C"),
+                _contact_point(b, F, P, q).locatenew(f"{n}_S", _r(b.radius) * e))
+    if kind == "disc":
+        A = F.orientnew(f"{n}_A", "Axis", [q[2], e])
+        Bl = A.orientnew(f"{n}_L", "Axis", [q[3], _basis(A)[(b.axis + 1) % 3]])
+        centre = _contact_point(b, F, P, q).locatenew(
+            f"{n}_S", _r(b.radius) * _basis(Bl)[(b.axis + 2) % 3])
+        return Bl.orientnew(f"{n}_C", "Axis", [q[4], _basis(Bl)[b.axis]]), centre
     raise ValueError(f"unknown joint {kind!r}")
 
 
@@ -138,6 +153,12 @@ class DegenerateModel(ArgumentError):
     """
 
 
+def _contact_point(b, F, P, q):
+    """The contact point I = P + q1 u + q2 v of a rolling body on the plane of F."""
+    u, v = _basis(F)[(b.axis + 1) % 3], _basis(F)[(b.axis + 2) % 3]
+    return P.locatenew(f"{b.name}_I", q[0] * u + q[1] * v)
+
+
 def _subtree(model, c):
     out = {c}
     for k, b in enumerate(model.bodies):
@@ -146,7 +167,8 @@ def _subtree(model, c):
     return out
 
 
-def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.KanesMethod:
+def to_sympy(model: Model, *, action_of=None, closure="multipliers", equations=True
+             ) -> me.KanesMethod:
     """The ``KanesMethod`` of ``model``, its equations formed.
 
     Its ``q`` are ``dynamicsymbols`` named as :func:`~rigidmech.testing.fuzz.coordinate_names`
@@ -161,13 +183,20 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
     auxiliary equations ``kane.auxiliary_eqs`` then give them once u' is known; the
     unknowns are zero in ``mass_matrix`` and ``forcing``.
 
-    A model with a closing joint (``model.closure``) gets in ``kane.closure`` the numeric
-    functions of its conditions (``phi``, ``jacobian``, ``bias`` = J' q', the dependent
-    coordinates and the assembly). With ``closure="kane"`` the conditions go to Kane's method
-    (``q_dependent``, ``configuration_constraints``, ``u_dependent``,
-    ``velocity_constraints``); with ``closure="multipliers"`` (default) the tree's equations
-    are formed without them and :func:`~rigidmech.testing.fuzz.compare` adds the constraint
-    force J^T lambda (the reference used, see the note in ``compare``).
+    A constrained model (a closing joint ``model.closure``: holonomic conditions; rolling
+    bodies and knife edges: nonholonomic ones) gets in ``kane.closure`` the numeric functions
+    of its conditions (``jacobian`` A of the velocity conditions A q' = 0, ``bias`` = A' q',
+    the holonomic residual ``phi`` and ``phi_jacobian``, the dependent coordinates, the
+    assembly, the coordinates' ``ranges``). With ``closure="kane"`` the conditions go to
+    Kane's method (``q_dependent``, ``configuration_constraints``, ``u_dependent``,
+    ``velocity_constraints``: sympy's documented usage); with ``closure="multipliers"``
+    (default) the tree's equations are formed without them and
+    :func:`~rigidmech.testing.fuzz.compare` adds the constraint force A^T lambda (the
+    reference used, see the note in ``compare``).
+
+    With ``equations=False`` Kane's equations are not formed: the KanesMethod has only its
+    coordinates, speeds and ``closure`` (the consistent states of a constrained model, for
+    the metamorphic tests, at a fraction of the cost).
     """
     names = coordinate_names(model)
     q = dict(zip(names, me.dynamicsymbols(names), strict=True)) if len(names) > 1 else {
@@ -185,18 +214,22 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
         owned.append((point, owner))
         return point
 
-    frames, origins, mounts, rigid, joint_points = [], [], [], [], []
+    frames, origins, mounts, rigid, joint_points, joint_frames = [], [], [], [], [], []
+    contacts = {}  # body index -> its contact point I (rolling bodies)
     for k, b in enumerate(model.bodies):
         Pf, Po = (W, OW) if b.parent < 0 else (frames[b.parent], origins[b.parent])
         P = Po.locatenew(f"{b.name}_P", _comps(Pf, b.at))
         F = _turn(Pf, b.mount, f"{b.name}_F")
         qb = [q[f"{model.prefix}_{b.name}_{k}"] for k in range(len(b.joint_kinds))]
         C, Oc = _joint(b, F, P, qb)
+        joint_frames.append(C)
+        if b.joint in ROLLING:
+            contacts[k] = _contact_point(b, F, P, qb)
         B = _turn(C, b.twist, f"{b.name}_B")
         G = moving(Oc.locatenew(f"{b.name}_G", _comps(B, b.centre)), k)
-        A, Bm, Cm, D, E, Fp = b.inertia
+        A, Bm, Cm, D, E, Fp = map(_r, b.inertia)
         inertia = me.inertia(B, A, Bm, Cm, ixy=-Fp, iyz=-D, izx=-E)
-        rigid.append(me.RigidBody(b.name, G, B, b.mass, (inertia, G)))
+        rigid.append(me.RigidBody(b.name, G, B, _r(b.mass), (inertia, G)))
         frames.append(B)
         origins.append(Oc)
         mounts.append(F)
@@ -215,9 +248,9 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
         AB = B_.pos_from(A_)
         length = sp.sqrt(AB.dot(AB))
         if hasattr(s, "k"):
-            tension = s.k * (length - s.l0)
+            tension = _r(s.k) * (length - _r(s.l0))
         else:
-            tension = s.c * AB.dot(B_.vel(N) - A_.vel(N)) / length
+            tension = _r(s.c) * AB.dot(B_.vel(N) - A_.vel(N)) / length
         force = -tension * AB / length
         if s.body_b >= 0:
             loads.append((B_, force))
@@ -235,13 +268,16 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
         parent = model.bodies[d.body].parent
         e = _basis(mounts[d.body])[model.bodies[d.body].axis]
         Bp = N if parent < 0 else frames[parent]
-        M = -d.c * (frames[d.body].ang_vel_in(N) - Bp.ang_vel_in(N)).dot(e) * e
+        M = -_r(d.c) * (frames[d.body].ang_vel_in(N) - Bp.ang_vel_in(N)).dot(e) * e
         loads.append((frames[d.body], M))
         if parent >= 0:
             loads.append((frames[parent], -M))
     qs = [q[n] for n in names]
     us = me.dynamicsymbols([f"u_{n}" for n in names]) if len(names) > 1 else [
         me.dynamicsymbols(f"u_{names[0]}")]
+    # the conditions are written before the auxiliary speeds change the velocities
+    holonomic, nonholonomic = _conditions(model, q, N, W, OW, frames, origins, mounts, rigid,
+                                          contacts, joint_frames)
     aux, unknowns = [], []
     if action_of is not None:
         aux, unknowns, extra = _auxiliary(model, action_of, N, frames, mounts, rigid, owned,
@@ -249,66 +285,144 @@ def to_sympy(model: Model, *, action_of=None, closure="multipliers") -> me.Kanes
         loads = loads + extra
     kd = [qi.diff() - ui for qi, ui in zip(qs, us, strict=True)]
     closing = {}
-    if model.closure is not None:
-        closing = _closure(model, q, qs, us, W, OW, frames, origins)
+    if holonomic or nonholonomic:
+        closing = _constraints(model, q, qs, us, holonomic, nonholonomic)
         if closure == "kane":
             dep = closing["dependent"]
             qs = [x for k, x in enumerate(qs) if k not in dep]
-            us = [x for k, x in enumerate(us) if k not in dep]
+            us = [x for k, x in enumerate(us) if k not in closing["dependent_speeds"]]
         else:
             closing.pop("kane")
             closing["numeric"]["order"] = list(range(len(qs)))
     kane = me.KanesMethod(N, q_ind=qs, u_ind=us, u_auxiliary=aux, kd_eqs=kd,
                           **closing.get("kane", {}))
-    kane.kanes_equations(rigid, loads)
+    if equations:
+        kane.kanes_equations(rigid, loads)
     kane.action_symbols = tuple(unknowns)
     kane.closure = closing.get("numeric")
     kane.closure_method = closure
     return kane
 
 
-def _closure(model, q, qs, us, W, OW, frames, origins):
-    """The spherical closing joint: its three conditions (the body's point at the ground
-    point D where it is in the assembled configuration), the dependent coordinates (the
-    best-conditioned columns of the conditions' Jacobian at the assembly: QR with column
-    pivoting) and their numeric functions for the consistent states."""
+def _velocity_of(k, X, N, rigid):
+    """The velocity in N of the point of body ``k`` (-1: the ground) at the point X."""
+    if k < 0:
+        return me.Vector(0)
+    G = rigid[k].masscenter
+    return G.vel(N) + rigid[k].frame.ang_vel_in(N).cross(X.pos_from(G))
+
+
+def _conditions(model, q, N, W, OW, frames, origins, mounts, rigid, contacts, joint_frames):
+    """(holonomic conditions phi(q), nonholonomic conditions linear in q'): the closing
+    joint's, the rolling contacts' (the tangential components of the sliding velocity
+    v(I in S2) - v(I in S1), and the spin (omega(S2) - omega(S1)) . n without pivoting,
+    ch. 10.1.3) and the knife edges' (the lateral component of v(P in S2/S1))."""
+    holonomic, nonholonomic = [], []
+    for k, I in contacts.items():
+        b = model.bodies[k]
+        e = _basis(mounts[k])
+        slip = _velocity_of(k, I, N, rigid) - _velocity_of(b.parent, I, N, rigid)
+        nonholonomic += [slip.dot(e[(b.axis + 1) % 3]), slip.dot(e[(b.axis + 2) % 3])]
+        if not b.pivoting:
+            spin = frames[k].ang_vel_in(N) - (N if b.parent < 0 else frames[b.parent]
+                                              ).ang_vel_in(N)
+            nonholonomic.append(spin.dot(e[b.axis]))
+    for j, knife in enumerate(model.knives):
+        k, b = knife.body, model.bodies[knife.body]
+        C, F = joint_frames[k], mounts[k]
+        u, v = _basis(C)[(b.axis + 1) % 3], _basis(C)[(b.axis + 2) % 3]
+        P = origins[k].locatenew(f"Pk{j}", _r(knife.at[0]) * u + _r(knife.at[1]) * v)
+        angle = _r(knife.angle)
+        lateral = _basis(F)[b.axis].cross(sp.cos(angle) * u + sp.sin(angle) * v)
+        slip = _velocity_of(k, P, N, rigid) - _velocity_of(b.parent, P, N, rigid)
+        nonholonomic.append(slip.dot(lateral))
     c = model.closure
-    meets = origins[c.body].locatenew("Mc", _comps(frames[c.body], c.meets))
-    r = meets.pos_from(OW).to_matrix(W)
-    values = {q[n]: v for n, v in model.assembly_values().items()}
-    D = [float(x.xreplace(values)) for x in r]
-    phi = sp.Matrix([r[i] - D[i] for i in range(3)])
-    qsym = sp.symbols(f"_c0:{len(qs)}")
-    rule = dict(zip(qs, qsym, strict=True))
-    fphi = sp.lambdify([qsym], list(phi.xreplace(rule)), "numpy")
-    fjac = sp.lambdify([qsym], phi.jacobian(qs).xreplace(rule), "numpy")
-    q0 = np.array([values[x] for x in qs])
-    J0 = np.array(fjac(q0), dtype=float)
-    if np.linalg.matrix_rank(J0, tol=1e-8 * max(np.max(np.abs(J0)), 1.0)) < 3:
-        raise DegenerateModel(
-            "the closing joint's three conditions are not independent at the assembly (a "
-            "locked or redundant loop)")
-    pivots = scipy.linalg.qr(J0, pivoting=True)[2]
-    dep = sorted(int(k) for k in pivots[:3])
-    speeds = dict(zip([x.diff() for x in qs], us, strict=True))
+    if c is not None:
+        meets = origins[c.body].locatenew("Mc", _comps(frames[c.body], c.meets))
+        r = meets.pos_from(OW).to_matrix(W)
+        values = {q[n]: v for n, v in model.assembly_values().items()}
+        D = [float(x.xreplace(values)) for x in r]
+        gap = [r[i] - D[i] for i in range(3)]
+        n = c.plane
+        if c.kind == "spherical":
+            holonomic = gap
+        elif c.kind == "pivot":  # a planar loop: the two components in the plane
+            holonomic = [gap[(n + 1) % 3], gap[(n + 2) % 3]]
+        else:  # slider along d = cos u + sin v: the component along n ^ d in the plane
+            a = _r(c.direction)
+            holonomic = [-sp.sin(a) * gap[(n + 1) % 3] + sp.cos(a) * gap[(n + 2) % 3]]
+    return holonomic, nonholonomic
+
+
+def _constraints(model, q, qs, us, holonomic, nonholonomic):
+    """The conditions on both sides' terms: for the tree's equations with the constraint
+    force A^T lambda (``numeric``: the rows A(q) q' = 0 of the velocity conditions and
+    their bias A' q', the holonomic residual phi and its Jacobian, the dependent
+    coordinates -- the best-conditioned columns of the Jacobian at the assembly: QR with
+    column pivoting --, the assembly and the coordinates' ranges), and for Kane's method
+    with dependent coordinates and speeds (``kane``)."""
     t = me.dynamicsymbols._t
-    velocity = [e.diff(t).xreplace(speeds) for e in phi]
-    # J' q': the second derivative of the conditions without its q'' terms
-    no_acc = dict.fromkeys([x.diff(t, 2) for x in qs], 0)
-    bias = [e.diff(t, 2).xreplace(no_acc).xreplace(speeds) for e in phi]
-    usym = sp.symbols(f"_v0:{len(qs)}")
-    fbias = sp.lambdify([qsym, usym], [sp.sympify(b).xreplace(
-        {**rule, **dict(zip(us, usym, strict=True))}) for b in bias], "numpy")
+    speeds = dict(zip([x.diff(t) for x in qs], us, strict=True))
+    phi = sp.Matrix(holonomic)
+    velocity = [e.diff(t).xreplace(speeds) for e in holonomic] + [
+        sp.sympify(e).xreplace(speeds) for e in nonholonomic]
+    A = sp.Matrix(velocity).jacobian(us)
+    # A' q': the derivative of the velocity conditions without its u' terms
+    no_acc = {**dict.fromkeys([x.diff(t, 2) for x in qs], 0),
+              **dict.fromkeys([x.diff(t) for x in us], 0)}
+    bias = [sp.sympify(e).diff(t).xreplace(no_acc).xreplace(speeds) for e in velocity]
+    qsym, usym = sp.symbols(f"_c0:{len(qs)}"), sp.symbols(f"_v0:{len(qs)}")
+    rule = {**dict(zip(us, usym, strict=True)), **dict(zip(qs, qsym, strict=True))}
+    fA = sp.lambdify([qsym], A.xreplace(rule), "numpy")
+    fbias = sp.lambdify([qsym, usym], [sp.sympify(b).xreplace(rule) for b in bias], "numpy")
+    ranges = coordinate_ranges(model)
+    numeric = {"jacobian": lambda x: np.array(fA(x), dtype=float).reshape(len(velocity), -1),
+               "bias": lambda x, v: np.array(fbias(x, v), dtype=float).reshape(-1),
+               "ranges": np.array([ranges[str(x.func)] for x in qs]),
+               "dependent": [], "assembly": None, "phi": None}
+    dep = []
+    if holonomic:
+        fphi = sp.lambdify([qsym], list(phi.xreplace(rule)), "numpy")
+        fjac = sp.lambdify([qsym], phi.jacobian(qs).xreplace(rule), "numpy")
+        values = {q[n]: v for n, v in model.assembly_values().items()}
+        q0 = np.array([values[x] for x in qs])
+        J0 = np.array(fjac(q0), dtype=float).reshape(len(holonomic), -1)
+        if np.linalg.matrix_rank(J0, tol=1e-8 * max(np.max(np.abs(J0)), 1.0)) < len(holonomic):
+            raise DegenerateModel(
+                "the closing joint's conditions are not independent at the assembly (a "
+                "locked or redundant loop)")
+        dep = sorted(int(k) for k in scipy.linalg.qr(J0, pivoting=True)[2][:len(holonomic)])
+        numeric.update(phi=lambda x: np.array(fphi(x), dtype=float).reshape(-1),
+                       phi_jacobian=lambda x: np.array(fjac(x), dtype=float).reshape(
+                           len(holonomic), -1), dependent=dep, assembly=q0)
+    # dependent speeds: the holonomic ones, then the best-conditioned columns of the other
+    # rows at a random state (Kane's method needs them independent there)
+    dep_u = list(dep)
+    if nonholonomic:
+        x = numeric["assembly"] if holonomic else ranges_mid(numeric["ranges"])
+        Af = numeric["jacobian"](x)
+        if np.linalg.matrix_rank(Af, tol=1e-8 * max(np.max(np.abs(Af)), 1.0)) < len(velocity):
+            raise DegenerateModel(
+                "the velocity conditions are not independent (redundant connections: more "
+                "conditions than the coordinates allow)")
+        A0 = Af[len(holonomic):]
+        free = [k for k in range(len(qs)) if k not in dep]
+        piv = scipy.linalg.qr(A0[:, free], pivoting=True)[2][:len(nonholonomic)]
+        dep_u = sorted(dep + [free[int(k)] for k in piv])
     order = [k for k in range(len(qs)) if k not in dep] + dep  # kane.q: independent first
+    numeric["order"] = order
     return {
-        "dependent": dep,
+        "dependent": dep, "dependent_speeds": dep_u,
         "kane": {"q_dependent": [qs[k] for k in dep], "configuration_constraints": list(phi),
-                 "u_dependent": [us[k] for k in dep], "velocity_constraints": velocity},
-        "numeric": {"phi": lambda x: np.array(fphi(x), dtype=float),
-                    "jacobian": lambda x: np.array(fjac(x), dtype=float),
-                    "bias": lambda x, v: np.array(fbias(x, v), dtype=float),
-                    "dependent": dep, "assembly": q0, "order": order},
+                 "u_dependent": [us[k] for k in dep_u], "velocity_constraints": velocity},
+        "numeric": numeric,
     }
+
+
+def ranges_mid(ranges):
+    """A state inside the coordinates' ranges, away from their ends (a fixed irrational
+    fraction of each range, so that no angle sits on a special value)."""
+    return ranges[:, 0] + (ranges[:, 1] - ranges[:, 0]) * 0.3819660112501051
 
 
 def _auxiliary(model, c, N, frames, mounts, rigid, owned, P):

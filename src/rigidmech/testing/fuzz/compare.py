@@ -3,17 +3,20 @@
 Both sides are reduced to numbers the same way: at a random state (q, q') the accelerations
 q'' solve M q'' = f. rigidmech's side is the compiled right-hand side
 :meth:`~rigidmech.EquationsOfMotion.rhs` (what a simulation runs); sympy's side is
-``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), lambdified and solved by
-``numpy.linalg.solve``. Coordinates are matched by name.
+``KanesMethod.mass_matrix`` and ``forcing`` (u = q'), evaluated at the state by substituting
+floats (or lambdified, ``evaluate="lambdify"``) and solved by ``numpy.linalg.solve``.
+Coordinates are matched by name.
 
-A model with a closing joint is compared at consistent states (:func:`closed_state`). The
-reference there is the tree's ``KanesMethod`` with the constraint force J^T lambda of the
-closing joint (an augmented linear system), not ``KanesMethod`` with ``q_dependent`` and
-``u_dependent`` (kept as ``to_sympy(..., closure="kane")``): on a loop found by the fuzzer (a
-prismatic body carrying a spherical one, closed to the ground, its slider locked by the loop)
-Kane's accelerations changed with the choice of the dependent speeds, and only one choice
-agreed with rigidmech, whose q'' satisfy both J q'' = -J' q' and M q'' - f in the range of
-J^T (the principle with a perfect joint) to round-off.
+A constrained model (a closing joint, rolling contacts, knife edges) is compared at
+consistent states (:func:`closed_state`). The reference there is the tree's ``KanesMethod``
+with the constraint force A^T lambda of the velocity conditions A q' = 0 (an augmented linear
+system with the acceleration rows A q'' = -A' q'), not ``KanesMethod`` with ``q_dependent``
+and ``u_dependent`` (kept as ``to_sympy(..., closure="kane")``, checked on written-out models
+by the tests): on a loop found by the fuzzer (a prismatic body carrying a spherical one,
+closed to the ground, its slider locked by the loop) Kane's accelerations changed with the
+choice of the dependent speeds, and only one choice agreed with rigidmech, whose q'' satisfy
+both J q'' = -J' q' and M q'' - f in the range of J^T (the principle with a perfect joint) to
+round-off.
 
 Tolerance: :data:`RTOL` relative to the largest ``|q''|`` of the state (at least
 :data:`SCALE_FLOOR`). Both sides evaluate
@@ -39,6 +42,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+import scipy.linalg
 import sympy as sp
 
 from .build_rigidmech import to_rigidmech
@@ -101,28 +105,51 @@ def rigidmech_accelerations(system):
     return names, qdd
 
 
-def sympy_accelerations(kane):
+def _evaluator(exprs, symbols, evaluate):
+    """A function of the symbols' values -> list of float arrays, one per matrix of
+    ``exprs``: the values substituted as floats (``"substitute"``: no code is printed or
+    compiled, the cheapest for the few states a comparison needs) or the expressions
+    lambdified with common subexpressions (``"lambdify"``: the cheapest per call)."""
+    if evaluate == "lambdify":
+        # common subexpressions: Kane's forcing repeats the partial velocities (cse prints it
+        # about 3 times faster than the plain expression)
+        f = sp.lambdify([symbols], exprs, "numpy", cse=True)
+        return lambda values: [np.array(x, dtype=float) for x in f(values)]
+    if evaluate != "substitute":
+        raise ValueError(f"`evaluate` must be 'substitute' or 'lambdify'; got {evaluate!r}.")
+
+    def f(values):
+        rule = {x: sp.Float(float(v)) for x, v in zip(symbols, values, strict=True)}
+        return [np.array(sp.Matrix(e).xreplace(rule).evalf(), dtype=float) for e in exprs]
+
+    return f
+
+
+def sympy_accelerations(kane, evaluate="substitute"):
     """(names, function of (q, u) -> (q'', condition number of M)) from a KanesMethod.
 
-    If the KanesMethod carries the numeric conditions of a closing joint formed without
-    them (``kane.closure`` with ``to_sympy(..., closure="multipliers")``), q'' solve the
-    equations of the tree with the constraint force, M q'' = f + J^T lambda and
-    J q'' = -J' q' (the fundamental principle with a perfect spherical joint, ch. 18, 25.3).
+    If the KanesMethod carries the numeric conditions of a closing joint or of other
+    velocity conditions formed without them (``kane.closure`` with ``to_sympy(...,
+    closure="multipliers")``), q'' solve the equations of the tree with the constraint
+    force, M q'' = f + A^T lambda and A q'' = -A' q' (the fundamental principle with perfect
+    connections, ch. 18, 25.3). ``evaluate``: see :func:`_evaluator`.
     """
     names = [_name(q) for q in kane.q]
     qs = [sp.Symbol(f"_q{k}") for k in range(len(names))]
     us = [sp.Symbol(f"_u{k}") for k in range(len(names))]
-    rule = {**dict(zip(kane.u, us, strict=True)), **dict(zip(kane.q, qs, strict=True))}
-    # common subexpressions: Kane's forcing repeats the partial velocities (cse prints it
-    # about 3 times faster than the plain expression)
-    Mf = sp.lambdify([qs, us], [kane.mass_matrix.xreplace(rule), kane.forcing.xreplace(rule)],
-                     "numpy", cse=True)
+    # the speed u_<name> is the rate of the coordinate <name> (Kane's u may be in another
+    # order than its q: independent speeds first)
+    rows = [names.index(_name(x)[2:]) for x in kane.u]
+    rule = {**{x: us[k] for x, k in zip(kane.u, rows, strict=True)},
+            **dict(zip(kane.q, qs, strict=True))}
+    values = _evaluator([kane.mass_matrix.xreplace(rule), kane.forcing.xreplace(rule)],
+                        qs + us, evaluate)
 
     closure = getattr(kane, "closure", None)
     tree = closure is not None and getattr(kane, "closure_method", None) == "multipliers"
 
     def qdd(q, u):
-        M, f = (np.array(x, dtype=float) for x in Mf(q, u))
+        M, f = values(np.concatenate([q, u]))
         f = f.reshape(-1)
         if tree:
             J = closure["jacobian"](q)
@@ -130,7 +157,9 @@ def sympy_accelerations(kane):
             K = np.block([[M, J.T], [J, np.zeros((m, m))]])
             rhs = np.concatenate([f, -closure["bias"](q, u)])
             return np.linalg.solve(K, rhs)[:len(f)], np.linalg.cond(K)
-        return np.linalg.solve(M, f), np.linalg.cond(M)
+        out = np.empty(len(f))
+        out[rows] = np.linalg.solve(M, f)
+        return out, np.linalg.cond(M)
 
     return names, qdd
 
@@ -148,10 +177,13 @@ def random_states(model: Model, rng, count):
 
 def closed_state(closure, rng, spread=0.15):
     """A state (q, u) in the order of Kane's coordinates (independent first) that satisfies
-    the closure's conditions and their derivative: the independent coordinates moved from the
-    assembly by at most ``spread``, the dependent ones by Newton's method (to 1e-13), random
-    independent speeds and the dependent ones from the velocity conditions. (None, None) if
-    Newton's method does not converge.
+    the conditions and their derivative: with holonomic conditions, the independent
+    coordinates moved from the assembly by at most ``spread`` and the dependent ones found by
+    Newton's method (to 1e-13); without, coordinates drawn in their ranges; then speeds
+    drawn at random in the null space of the velocity conditions A(q) q' = 0 (an orthonormal
+    basis from the SVD). (None, None) if Newton's method does not converge or if the
+    conditions leave no motion (a locked mechanism: q'' = 0 on both sides up to round-off,
+    nothing to compare; :func:`compare` calls it ``'degenerate'``).
 
     Examples
     --------
@@ -162,28 +194,44 @@ def closed_state(closure, rng, spread=0.15):
     >>> q, u = closed_state(closure, np.random.default_rng(0))
     >>> bool(np.max(np.abs(closure["phi"](q))) < 1e-12)
     True
+    >>> bool(np.max(np.abs(closure["jacobian"](q) @ u)) < 1e-12)
+    True
     """
-    dep = closure["dependent"]
-    ind = [k for k in range(len(closure["assembly"])) if k not in dep]
-    x = closure["assembly"].copy()
-    x[ind] += rng.uniform(-spread, spread, len(ind))
-    for _ in range(30):
-        r = closure["phi"](x)
-        if np.max(np.abs(r)) < 1e-13:
-            break
-        x[dep] -= np.linalg.solve(closure["jacobian"](x)[:, dep], r)
-    else:
-        return None, None
-    J = closure["jacobian"](x)
-    v = np.zeros(len(x))
-    v[ind] = rng.uniform(-1.0, 1.0, len(ind))
-    v[dep] = -np.linalg.solve(J[:, dep], J[:, ind] @ v[ind])
     order = closure["order"]
+    if closure["assembly"] is None:
+        lo, hi = closure["ranges"].T
+        x = rng.uniform(lo, hi)
+    else:
+        dep = closure["dependent"]
+        ind = [k for k in range(len(closure["assembly"])) if k not in dep]
+        x = closure["assembly"].copy()
+        x[ind] += rng.uniform(-spread, spread, len(ind))
+        for _ in range(30):
+            r = closure["phi"](x)
+            if np.max(np.abs(r)) < 1e-13:
+                break
+            x[dep] -= np.linalg.solve(closure["phi_jacobian"](x)[:, dep], r)
+        else:
+            return None, None
+    basis = scipy.linalg.null_space(closure["jacobian"](x))
+    if basis.shape[1] == 0:  # a locked mechanism: no motion to compare
+        return None, None
+    v = basis @ rng.uniform(-1.0, 1.0, basis.shape[1])
     return x[order], v[order]
 
 
+def _degenerate(builder, model) -> bool:
+    try:
+        builder(model)
+    except DegenerateModel:
+        return True
+    except Exception:  # noqa: BLE001 -- not the question asked here
+        return False
+    return False
+
+
 def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
-            builders=(to_rigidmech, to_sympy)) -> Report:
+            builders=(to_rigidmech, to_sympy), evaluate="substitute") -> Report:
     """Build ``model`` on both sides and compare q'' at ``states`` random states.
 
     Parameters
@@ -200,6 +248,9 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
     builders : (callable, callable)
         The two builders (model -> System, model -> KanesMethod); the tests plant errors
         through them to check that a disagreement is seen.
+    evaluate : {"substitute", "lambdify"}
+        How Kane's M and f are evaluated: floats substituted (default: cheaper for a few
+        states) or lambdified (cheaper for many).
     """
     t0 = time.perf_counter()
     try:
@@ -207,12 +258,15 @@ def compare(model: Model, seed=0, *, states=4, rtol=RTOL, coordinates=None,
                   else builders[0](model))
         names_rm, ours = rigidmech_accelerations(system)
     except Exception as exc:  # noqa: BLE001 -- any failure of one side is a finding
-        return Report(model, "rigidmech-error", detail=f"{type(exc).__name__}: {exc}",
+        status = "rigidmech-error"
+        if model.closure is not None and _degenerate(builders[1], model):
+            status = "degenerate"  # a locked or redundant loop, refused by both sides
+        return Report(model, status, detail=f"{type(exc).__name__}: {exc}",
                       seconds=(time.perf_counter() - t0, 0.0))
     t1 = time.perf_counter()
     try:
         kane = builders[1](model)
-        names_sp, theirs = sympy_accelerations(kane)
+        names_sp, theirs = sympy_accelerations(kane, evaluate)
     except DegenerateModel as exc:
         return Report(model, "degenerate", detail=str(exc),
                       seconds=(t1 - t0, time.perf_counter() - t1))

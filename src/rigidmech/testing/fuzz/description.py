@@ -38,7 +38,8 @@ from dataclasses import dataclass
 
 from ..._core.errors import ArgumentError
 
-__all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "ForceSpec",
+__all__ = ["JOINTS", "ROLLING", "CLOSURES", "BodySpec", "KnifeSpec", "SpringSpec",
+           "DamperSpec", "TorqueSpec", "ForceSpec",
            "TorsionalDamperSpec", "ClosureSpec", "Model", "coordinate_names", "coordinate_kinds",
            "coordinate_ranges"]
 
@@ -63,16 +64,34 @@ __all__ = ["JOINTS", "BodySpec", "SpringSpec", "DamperSpec", "TorqueSpec", "Forc
 #: * ``polar``: a helper frame H = F turned by q2 about e, the point S = F's origin moved by
 #:   q1 H.u, and C = F translated to S (a translated frame of a rotated helper frame: C does
 #:   not turn); connected by a planar support of normal e (added as a free body on ground).
+#: * ``ball`` (a sphere of radius ``radius`` rolling without slipping on the plane of F of
+#:   normal e, ch. 10.1.3): contact point I = F's origin moved by q1 u + q2 v, C turned by
+#:   three angles about the sphere's centre I + radius e; connected by a rolling contact
+#:   (two nonholonomic conditions, a third "without pivoting" one if not ``pivoting``);
+#: * ``disc`` (a disc of radius ``radius`` rolling without slipping on the plane of F, the
+#:   book's rolling disc): contact point I = F's origin moved by q1 u + q2 v; heading q3
+#:   about e (frame A), lean q4 about A.u (frame B, upright at pi/2), the centre at
+#:   I + radius B.v, and C = B turned by the spin q5 about B.e there (the disc's plane is
+#:   C's (u, v)); connected by a rolling contact as ``ball``.
 JOINTS = {
     "pivot": "a", "prismatic": "l", "cylindrical": "al", "helical": "a",
     "spherical": "aaa", "planar": "lla", "annular": "laaa", "point": "llaaa",
-    "free": "lllaaa", "polar": "la",
+    "free": "lllaaa", "polar": "la", "ball": "llaaa", "disc": "llaaa",
 }
+#: the joints that are rolling contacts (velocity constraints, no joint of the catalogue)
+ROLLING = ("ball", "disc")
+#: the kinds of closing joints (:class:`ClosureSpec`)
+CLOSURES = ("spherical", "pivot", "slider")
 
 
 @dataclass(frozen=True)
 class BodySpec:
     """One body and the joint that carries it (see the module's docstring).
+
+    For the rolling joints (:data:`ROLLING`): ``radius`` of the sphere or disc, ``contact``
+    ``"given"`` (rigidmech is given the contact point and the normal) or ``"between"``
+    (found by ``ContactKinematics.between`` from the surfaces), ``pivoting`` False adds the
+    condition "without pivoting".
 
     Examples
     --------
@@ -93,6 +112,9 @@ class BodySpec:
     centre: tuple = (0.0, 0.0, 0.0)
     mass: float = 1.0
     inertia: tuple = (1.0, 1.0, 1.0, 0.0, 0.0, 0.0)
+    radius: float = 0.5
+    contact: str = "given"
+    pivoting: bool = True
 
     @property
     def joint_kinds(self) -> str:
@@ -156,11 +178,37 @@ class TorsionalDamperSpec:
 
 
 @dataclass(frozen=True)
+class KnifeSpec:
+    """A knife edge (a blade that cannot slide sideways, the Chaplygin sleigh's) between body
+    ``body``, which must be on a ``planar`` joint, and the body's parent: the blade is at the
+    point ``at = (a, b)`` of the joint frame C (P = C's origin + a u + b v) along the
+    direction cos(angle) u + sin(angle) v of C, on the plane of normal e of F; one
+    nonholonomic condition v(P in body/parent) . (e ^ direction) = 0.
+
+    Examples
+    --------
+    >>> KnifeSpec(body=0, at=(-0.5, 0.0), angle=0.0).angle
+    0.0
+    """
+
+    body: int
+    at: tuple
+    angle: float
+
+
+@dataclass(frozen=True)
 class ClosureSpec:
-    """A spherical joint closing a loop (ch. 13.2): the point ``meets`` of body ``body``
-    (components in its frame from its origin) is held at the fixed point of the ground where
-    it is in the assembled configuration ``assembly`` (for each body, the values of its
-    coordinates), three conditions between the coordinates.
+    """A joint closing a loop between a body and the ground (ch. 13.2): the point ``meets``
+    of body ``body`` (components in its frame from its origin) is held at the fixed point D
+    of the ground where it is in the assembled configuration ``assembly`` (for each body,
+    the values of its coordinates).
+
+    ``kind`` (:data:`CLOSURES`): ``"spherical"`` (a ball joint at D: three conditions);
+    ``"pivot"`` (a pivot of axis the ground frame's axis ``plane``, closing a planar loop
+    whose joints all keep the motion parallel to that plane: the two conditions in the
+    plane); ``"slider"`` (a linear annular joint at D along the direction cos(direction) u +
+    sin(direction) v of the plane, u, v the two ground axes after the normal in circular
+    order: the point slides on a line of the plane, one condition, a slider-crank).
 
     Examples
     --------
@@ -171,6 +219,14 @@ class ClosureSpec:
     body: int
     meets: tuple
     assembly: tuple
+    kind: str = "spherical"
+    plane: int = 2
+    direction: float = 0.0
+
+    @property
+    def conditions(self) -> int:
+        """The number of independent conditions (3, 2 or 1)."""
+        return {"spherical": 3, "pivot": 2, "slider": 1}[self.kind]
 
 
 @dataclass(frozen=True)
@@ -196,6 +252,7 @@ class Model:
     ground_origin: tuple = (0.0, 0.0, 0.0)
     prefix: str = "q"
     closure: ClosureSpec | None = None
+    knives: tuple = ()
 
     def __post_init__(self):
         for k, b in enumerate(self.bodies):
@@ -210,6 +267,15 @@ class Model:
                 raise ArgumentError(
                     f"`bodies[{k}].parent` must be -1 for a free body (it hangs from the "
                     f"ground); got {b.parent}. Use another joint to carry it on a body.")
+        for j, k in enumerate(self.knives):
+            if not (0 <= k.body < len(self.bodies)
+                    and self.bodies[k.body].joint == "planar"):
+                raise ArgumentError(
+                    f"`knives[{j}].body` must be the index of a body on a 'planar' joint; got "
+                    f"{k.body}. A knife edge guides a body that moves on a plane.")
+        if self.closure is not None and self.closure.kind not in CLOSURES:
+            raise ArgumentError(f"`closure.kind` must be one of {CLOSURES}; got "
+                                f"{self.closure.kind!r}.")
 
     @property
     def degrees_of_freedom(self) -> int:
@@ -231,7 +297,9 @@ class Model:
                                              ("torques", self.torques),
                                              ("forces", self.forces),
                                              ("tdampers", self.torsional_dampers)) if v]
-        loop = f" loop:{self.bodies[self.closure.body].name}" if self.closure else ""
+        loop = (f" loop:{self.closure.kind}:{self.bodies[self.closure.body].name}"
+                if self.closure else "")
+        loop += "".join(f" knife:{self.bodies[k.body].name}" for k in self.knives)
         return " ".join(parts) + loop + " |" + (" g" if self.gravity else "") + "".join(
             " " + a for a in acts)
 
@@ -260,8 +328,9 @@ def coordinate_kinds(model: Model) -> dict:
 def coordinate_ranges(model: Model) -> dict:
     """Name -> (low, high) of the random states: angles in (-pi, pi) except the middle
     angle of a sequence of three, kept away from its singular set (sin = 0 for a proper
-    Euler sequence such as z-x-z, cos = 0 for a Tait-Bryan one); lengths in (-1, 1), the
-    radius of ``polar`` in (0.5, 1.5) (its mass matrix is singular at 0).
+    Euler sequence such as z-x-z, cos = 0 for a Tait-Bryan one; the lean of a ``disc`` in
+    (0.4, pi - 0.4)); lengths in (-1, 1), the radius of ``polar`` in (0.5, 1.5) (its mass
+    matrix is singular at 0).
 
     Examples
     --------
@@ -278,5 +347,7 @@ def coordinate_ranges(model: Model) -> dict:
             if kinds.endswith("aaa") and k == len(kinds) - 2:
                 proper = b.angles[0] == b.angles[2]
                 rng = (0.3, math.pi - 0.3) if proper else (-1.2, 1.2)
+                if b.joint == "disc":  # the lean: a disc lying flat is singular
+                    rng = (0.4, math.pi - 0.4)
             out[f"{model.prefix}_{b.name}_{k}"] = rng
     return out

@@ -22,13 +22,17 @@ True
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from .description import (
+    CLOSURES,
     JOINTS,
+    ROLLING,
     BodySpec,
     ClosureSpec,
     DamperSpec,
     ForceSpec,
+    KnifeSpec,
     Model,
     SpringSpec,
     TorqueSpec,
@@ -41,7 +45,10 @@ __all__ = ["NumpySource", "draw_model", "random_model", "JOINT_ORDER"]
 
 #: The joints in the order a shrinking source prefers them (simplest first).
 JOINT_ORDER = ("pivot", "prismatic", "cylindrical", "helical", "polar", "planar", "spherical",
-               "annular", "point", "free")
+               "annular", "point", "free", "ball", "disc")
+#: the joints of a planar loop (their motion keeps parallel to the plane of normal W's axis
+#: ``plane``: pivots about the normal, sliders and planar supports in the plane)
+PLANAR_JOINTS = ("pivot", "prismatic", "planar")
 #: sequences of three body-fixed rotation axes (0 = i, 1 = j, 2 = k): z-x-z first (the
 #: book's Euler angles, ``Frame.euler``), then other proper Euler and Tait-Bryan sequences
 ANGLE_SEQUENCES = ((2, 0, 2), (2, 1, 0), (0, 1, 2), (2, 1, 2), (1, 0, 1), (0, 2, 1))
@@ -100,10 +107,28 @@ def _body(src, k, joints, turns):
     parent = src.integer(-1, k - 1) if k else -1
     allowed = [j for j in joints if not (j == "free" and parent != -1)]
     joint = src.choice(allowed)
-    return BodySpec(
+    body = BodySpec(
         name=f"b{k}", parent=parent, joint=joint, axis=src.integer(0, 2), at=_vec(src),
         mount=_rotations(src, turns), twist=_rotations(src, turns),
         angles=src.choice(ANGLE_SEQUENCES), pitch=src.real(-1.0, 1.0) or 0.5,
+        centre=_vec(src, -0.5, 0.5), mass=src.real(0.5, 2.0), inertia=_inertia(src))
+    if joint in ROLLING:  # drawn only for them: the other models keep their drawings
+        body = replace(body, radius=src.real(0.25, 1.0),
+                       contact=src.choice(("given", "between")), pivoting=not src.flag(0.3))
+    return body
+
+
+def _planar_body(src, k, plane):
+    """A body of a planar loop (normal: the ground's axis ``plane``): constant turns about
+    the normal only, so that every frame keeps that axis; a chain (each body on the
+    previous one), the shape that closes."""
+    parent = k - 1
+    joint = src.choice(PLANAR_JOINTS)
+    axis = plane if joint != "prismatic" else (plane + src.integer(1, 2)) % 3
+    turn = ((plane, src.real(-math.pi, math.pi)),)
+    return BodySpec(
+        name=f"b{k}", parent=parent, joint=joint, axis=axis, at=_vec(src),
+        mount=turn if src.flag(0.5) else (), twist=turn if src.flag(0.5) else (),
         centre=_vec(src, -0.5, 0.5), mass=src.real(0.5, 2.0), inertia=_inertia(src))
 
 
@@ -114,7 +139,7 @@ def _other(src, n, k):
 
 
 def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=True,
-               ground=False, max_turns=2, closure=False) -> Model:
+               ground=False, max_turns=2, closure=False, knives=False) -> Model:
     """A random :class:`Model` from the random choices of ``src``.
 
     Parameters
@@ -133,18 +158,33 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
         Turn and move the ground frame relative to the Galilean frame.
     max_turns : int
         At most this many constant rotations in each body's mount and twist.
-    closure : bool
-        Close a loop with a spherical joint from a random point of a body to the ground
-        (:class:`~rigidmech.testing.fuzz.description.ClosureSpec`): the last body whose
-        chain from the ground has at least 4 coordinates, if any.
+    closure : bool or str
+        Close a loop from a random point of a body to the ground
+        (:class:`~rigidmech.testing.fuzz.description.ClosureSpec`) at the ground point where
+        that point is in a random assembled configuration (so that the loop can close): the
+        last body whose chain from the ground has more coordinates than the joint has
+        conditions, if any. ``True`` or ``"spherical"``: a spherical joint, the tree drawn
+        from ``joints``; ``"pivot"`` or ``"slider"`` (a linear annular joint along a line of
+        the plane): a planar loop, the tree drawn from :data:`PLANAR_JOINTS` (``joints`` is
+        ignored); ``"planar"``: a pivot or a slider, drawn; ``"any"``: one of the three or
+        none, drawn.
+    knives : bool
+        Give each body on a ``planar`` joint a knife edge with probability 1/2
+        (:class:`~rigidmech.testing.fuzz.description.KnifeSpec`).
     """
+    if closure == "any":
+        closure = src.choice((False,) + CLOSURES)
+    elif closure == "planar":
+        closure = src.choice(("pivot", "slider"))
+    kind = "spherical" if closure is True else closure
+    plane = src.integer(0, 2) if kind in ("pivot", "slider") else None
     n = src.integer(1, max_bodies)
     bodies = []
     dof = 0
     for k in range(n):
-        b = _body(src, k, joints, max_turns)
+        b = _body(src, k, joints, max_turns) if plane is None else _planar_body(src, k, plane)
         if max_dof is not None and dof + len(JOINTS[b.joint]) > max_dof:
-            b = BodySpec(**{**b.__dict__, "joint": "pivot"})
+            b = replace(b, joint="pivot", axis=b.axis if plane is None else plane)
         dof += len(JOINTS[b.joint])
         bodies.append(b)
     kw = {}
@@ -171,20 +211,33 @@ def draw_model(src, *, max_bodies=3, joints=JOINT_ORDER, max_dof=None, actions=T
     if ground:
         kw["ground"] = _rotations(src, 3)
         kw["ground_origin"] = _vec(src)
+    if knives:
+        kw["knives"] = tuple(
+            KnifeSpec(k, (src.real(-0.5, 0.5), src.real(-0.5, 0.5)),
+                      src.real(-math.pi, math.pi))
+            for k, b in enumerate(bodies) if b.joint == "planar" and src.flag(0.5))
     model = Model(bodies=tuple(bodies), **kw)
-    # the closing body: the last one whose chain down from the ground has at least 4
-    # coordinates (3 conditions leave one degree of freedom)
+    if not kind:
+        return model
+    # the closing body: the last one whose chain down from the ground has more coordinates
+    # than the closing joint has conditions (one degree of freedom at least is left)
+    conditions = {"spherical": 3, "pivot": 2, "slider": 1}[kind]
     chain = []
     for b in bodies:
         chain.append(len(b.joint_kinds) + (0 if b.parent < 0 else chain[b.parent]))
-    closing = [k for k, n in enumerate(chain) if n >= 4]
-    if closure and closing:
+    # (not a free body: its first connection would be a joint of the tree, not a loop)
+    closing = [k for k, n in enumerate(chain) if n > conditions
+               and not (bodies[k].parent < 0 and bodies[k].joint in ("free", "polar"))]
+    if closing:
         ranges = coordinate_ranges(model)
         names = iter(coordinate_names(model))
         assembly = tuple(tuple(src.real(*ranges[next(names)]) for _ in b.joint_kinds)
                          for b in bodies)
-        model = Model(bodies=tuple(bodies), **kw, closure=ClosureSpec(
-            closing[-1], _vec(src, -0.5, 0.5), assembly))
+        extra = {} if plane is None else {"plane": plane}
+        if kind == "slider":
+            extra["direction"] = src.real(-math.pi, math.pi)
+        model = replace(model, closure=ClosureSpec(
+            closing[-1], _vec(src, -0.5, 0.5), assembly, kind=kind, **extra))
     return model
 
 

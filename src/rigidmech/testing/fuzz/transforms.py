@@ -8,12 +8,13 @@ every consistent system of units):
   relative to the Galilean frame by a constant displacement: the same q'' (the coordinates
   are relative ones);
 * :func:`reordered`: the bodies connected in another order (parents still first), the
-  actions given in reverse order: the same q'';
+  actions and knife edges given in reverse order: the same q'';
 * :func:`renamed`: the coordinates renamed: the same q'' under the new names;
 * :func:`scaled`: lengths times ``length``, masses times ``mass``, times times ``time``
-  (every constant scaled by its dimension): a coordinate of length scales by ``length``, its
-  rate by ``length / time``, its acceleration by ``length / time**2``; an angle is
-  unchanged, its rate scales by ``1 / time`` and its acceleration by ``1 / time**2``.
+  (every constant scaled by its dimension, radii, knife edges and the closing joint's point
+  included): a coordinate of length scales by ``length``, its rate by ``length / time``, its
+  acceleration by ``length / time**2``; an angle is unchanged, its rate scales by
+  ``1 / time`` and its acceleration by ``1 / time**2``.
 
 Examples
 --------
@@ -83,7 +84,8 @@ def reordered(model: Model, order) -> Model:
         closure = replace(closure, body=new[closure.body],
                           assembly=tuple(closure.assembly[old] for old in order))
     return replace(
-        model, bodies=bodies, closure=closure, springs=moved(model.springs, "body_a", "body_b"),
+        model, bodies=bodies, closure=closure, knives=moved(model.knives, "body"),
+        springs=moved(model.springs, "body_a", "body_b"),
         dampers=moved(model.dampers, "body_a", "body_b"), torques=moved(model.torques, "body"),
         forces=moved(model.forces, "body"),
         torsional_dampers=moved(model.torsional_dampers, "body"))
@@ -102,7 +104,7 @@ def scaled(model: Model, *, length=1.0, mass=1.0, time=1.0):
 
     bodies = tuple(replace(
         b, at=v(b.at, L), centre=v(b.centre, L), mass=b.mass * M, pitch=b.pitch * L,
-        inertia=v(b.inertia, M * L * L)) for b in model.bodies)
+        inertia=v(b.inertia, M * L * L), radius=b.radius * L) for b in model.bodies)
     force, moment = M * L / T**2, M * L * L / T**2
     out = replace(
         model, bodies=bodies,
@@ -116,6 +118,7 @@ def scaled(model: Model, *, length=1.0, mass=1.0, time=1.0):
                      for f in model.forces),
         torsional_dampers=tuple(replace(d, c=d.c * M * L * L / T)
                                 for d in model.torsional_dampers),
+        knives=tuple(replace(k, at=v(k.at, L)) for k in model.knives),
         ground_origin=v(model.ground_origin, L))
     if model.closure is not None:
         assembly = tuple(tuple(x * L if kind == "l" else x for x, kind in
