@@ -47,13 +47,16 @@ _MPMATH = {sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan, sp.exp: m
 #: expression made of them, of sums, products and integer powers is meromorphic in its symbols.
 _MEROMORPHIC = frozenset({sp.sin, sp.cos, sp.tan, sp.exp, sp.sinh, sp.cosh, sp.tanh})
 
-#: Assumptions a sample value must satisfy when the atom declares them.
-_ASSUMPTIONS = ("commutative", "complex", "real", "extended_real", "finite", "infinite",
-                "positive", "negative", "nonnegative", "nonpositive", "nonzero", "zero",
-                "extended_positive", "extended_negative", "extended_nonnegative",
-                "extended_nonpositive", "extended_nonzero", "imaginary", "integer",
-                "noninteger", "rational", "irrational", "algebraic", "transcendental",
-                "even", "odd", "prime", "composite")
+#: What every sample value (a float in (0.5, 1.5), not an integer, or its opposite) is: an
+#: atom that declares otherwise is not sampled (an integer symbol, a symbol declared even).
+_SAMPLE_FACTS = {"commutative": True, "complex": True, "real": True, "extended_real": True,
+                 "finite": True, "infinite": False, "nonzero": True, "zero": False,
+                 "extended_nonzero": True, "imaginary": False, "integer": False,
+                 "noninteger": True, "rational": True, "irrational": False, "algebraic": True,
+                 "transcendental": False, "even": False, "odd": False, "prime": False,
+                 "composite": False}
+_SIGN_FACTS = ("positive", "nonnegative", "extended_positive", "extended_nonnegative",
+               "negative", "nonpositive", "extended_negative", "extended_nonpositive")
 
 
 def _probe_values(exprs, points, digits=FOLD_DIGITS):
@@ -182,17 +185,19 @@ def _leaves(expr, skip):
     return sorted(leaves, key=sp.default_sort_key), analytic
 
 
-def _admissible(atom, x):
-    """``x`` (a float), or -``x`` for a negative atom, if the number satisfies every assumption
-    ``atom`` declares; None otherwise (an integer symbol, a symbol declared even, ...)."""
-    if atom.is_negative or atom.is_nonpositive:
-        x = -x
-    number = sp.Rational(x)
-    for name in _ASSUMPTIONS:
+def _sign(atom):
+    """The sign of the sample values of ``atom`` (-1 for a negative atom), or None when a
+    number in (0.5, 1.5) (not an integer), or its opposite, breaks an assumption ``atom``
+    declares (an integer symbol, a symbol declared even, ...)."""
+    negative = bool(atom.is_negative or atom.is_nonpositive)
+    facts = dict(_SAMPLE_FACTS)
+    for i, name in enumerate(_SIGN_FACTS):
+        facts[name] = (i >= 4) == negative
+    for name, fact in facts.items():
         declared = getattr(atom, "is_" + name, None)
-        if declared is not None and getattr(number, "is_" + name) != declared:
+        if declared is not None and declared != fact:
             return None
-    return x
+    return -1 if negative else 1
 
 
 def sampled_zero_decision(expr, skip=(), *, seed=0) -> bool | None:
@@ -260,10 +265,11 @@ def sampled_zero_decision(expr, skip=(), *, seed=0) -> bool | None:
     rng = random.Random(seed)
     points = {}
     for atom in leaves:
-        samples = [_admissible(atom, rng.uniform(0.5, 1.5)) for _ in range(SAMPLED_POINTS)]
-        if any(x is None for x in samples):
+        sign = _sign(atom)
+        samples = [rng.uniform(0.5, 1.5) for _ in range(SAMPLED_POINTS)]
+        if sign is None or 1.0 in samples:
             return None
-        points[atom] = [mpmath.mpf(x) for x in samples]
+        points[atom] = [mpmath.mpf(sign * x) for x in samples]
     with mpmath.workdps(FOLD_DIGITS):
         values, largest, _ = _probe_values([expr], points)
         value, size = values[expr], largest[expr]

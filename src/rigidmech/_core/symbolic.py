@@ -359,10 +359,10 @@ def vanishes(expr, skip=()) -> bool:
     * An expression without floats has no rounding: its values at random points in 64-digit
       arithmetic decide (:func:`~rigidmech._core.probes.sampled_zero_decision`: zero when
       they are at most 1e-40 of the terms and the expression is meromorphic in its symbols,
-      not zero when one is above 1e-30 of them); when they do not (a near-cancellation,
-      ``Abs``, ``atan``, a square root of a base of unknown sign, integer symbols), a
-      non-zero value at a sample point (:func:`nonzero_somewhere`) says no, otherwise
-      ``sympy.simplify`` decides.
+      not zero when one is above 1e-30 of them), after the cheaper double-precision
+      :func:`nonzero_somewhere` (a value above 1e-9 says no); when they do not decide (a
+      near-cancellation, ``Abs``, ``atan``, a square root of a base of unknown sign, integer
+      symbols), ``sympy.simplify`` does.
     * An expression with floats (``0.0625``, ``sin(0.0625)``: sympy combines their terms as it
       builds, so ``0.0625 sin(0.0625) q' - 0.0625 sin(0.0625) q'`` may arrive as
       ``6.9e-18 q'``) vanishes when, at two sample points (:func:`nonzero_somewhere`'s), its
@@ -381,10 +381,12 @@ def vanishes(expr, skip=()) -> bool:
     if is_exactly_zero(expr):
         return True
     if not expr.atoms(sp.Float):
+        if nonzero_somewhere(expr, skip):
+            return False
         decided = sampled_zero_decision(expr, skip)
         if decided is not None:
             return decided
-        return not nonzero_somewhere(expr, skip) and sp.simplify(expr) == 0
+        return sp.simplify(expr) == 0
     atoms = _sample_atoms(expr, skip)
     for seed in _SEEDS:
         values, memo = _sample_values(atoms, seed), {}
