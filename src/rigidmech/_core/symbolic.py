@@ -47,6 +47,7 @@ from .probes import (
 )
 
 __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
+           "complex_values",
            "nonzero_somewhere", "vanishes", "SAMPLE_ZERO", "fold_numbers",
            "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
@@ -283,6 +284,32 @@ def _complex_value(e, values, memo):
     else:
         out = _CMATH[e.func](_complex_value(e.args[0], values, memo))
     memo[e] = out
+    return out
+
+
+def complex_values(exprs, values) -> list:
+    """The values (Python complex numbers) of ``exprs`` with the symbols of ``values`` given
+    those numbers: one walk in double precision over the distinct subexpressions (shared by
+    all the expressions), where ``evalf`` walks each expression as a tree in multiple
+    precision; an expression with a function this walk does not know is evaluated by
+    ``evalf`` (its symbols replaced by Floats).
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> complex_values([sp.sqrt(x) * y, sp.exp(x) * y], {x: 0.25, y: 2.0})
+    [(1+0j), (2.568050833375483+0j)]
+    """
+    rule = {s: complex(v) for s, v in values.items()}
+    memo, out = {}, []
+    for e in exprs:
+        e = sp.sympify(e)
+        try:
+            out.append(complex(_complex_value(e, rule, memo)))
+        except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError,
+                RecursionError):
+            floats = {s: sp.Float(v) for s, v in values.items()}
+            out.append(complex(e.xreplace(floats).evalf()))
     return out
 
 
