@@ -37,3 +37,25 @@ def test_complex_values_falls_back_on_sympy_for_what_it_does_not_know():
     values = complex_values([sp.besselj(0, x) + x, sp.sqrt(x) * 2], {x: 0.25})
     assert abs(values[0] - (float(sp.besselj(0, 0.25)) + 0.25)) < 1e-15
     assert values[1] == 1.0
+
+
+def test_generic_values_of_the_rank_checks_without_evalf(monkeypatch):
+    from rigidmech import coordinates, t
+    from rigidmech.systems.mobility import GenericValues
+
+    q = coordinates("q")
+    a = sp.Symbol("a", positive=True)
+    expr = a * sp.cos(q) * q.diff(t) + sp.sqrt(a)
+    numbers = GenericValues({a: 2.0}, seed=0)
+    expected = None
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("sympy.N called")
+
+    monkeypatch.setattr(sp, "N", refuse)
+    value = numbers(expr)
+    monkeypatch.undo()
+    rule = numbers._rule
+    expected = float(sp.N(expr.xreplace(rule)))
+    assert abs(value - expected) <= 1e-15 * abs(expected)
+    assert numbers(expr) == value                      # the same configuration again

@@ -42,6 +42,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.symbolic import complex_values
 from ..torsors import Torsor
 from ..vectors import Vector
 
@@ -186,15 +187,16 @@ class GenericValues:
             if s not in self._rule:
                 self._rule[s] = sp.Float(self._given.get(s, self._given.get(
                     getattr(s, "name", None), self._rng.uniform(0.6, 1.6))))
-        value = expr.xreplace(self._rule)
-        if value.free_symbols or value.atoms(sp.core.function.AppliedUndef):
-            value = value.subs(self._rule)
-        try:
-            return float(sp.N(value))
-        except TypeError as exc:
+        try:  # one double-precision walk (evalf only for a function it does not know)
+            value = complex_values([expr], {a: float(v) for a, v in self._rule.items()})[0]
+        except (TypeError, ValueError):
+            value = None
+        if value is None or value.imag != 0:
+            got = expr.xreplace(self._rule)
             raise ArgumentError(
                 f"`values`: could not evaluate {expr} at the generic configuration "
-                f"(got {value}).") from exc
+                f"(got {got}).")
+        return value.real
 
 
 def _matrix(rows, symbols, numbers):
