@@ -22,6 +22,7 @@ Run::
 
     python benchmarks/bicycle.py            # ~5 min on a 2-core machine
     python benchmarks/bicycle.py --no-evalf
+    python benchmarks/bicycle.py --derive-only 5   # the derivations alone, 5 alternated pairs
 """
 
 from __future__ import annotations
@@ -53,8 +54,9 @@ def whipple_bicycle():
     return build().system.equations_of_motion(), BENCHMARK_BICYCLE["rR"]
 
 
-def kane_bicycle():
-    """sympy's test_bicycle (test_kane3.py), timed in two parts; returns the numeric A(v)."""
+def kane_bicycle(linearize=True):
+    """sympy's test_bicycle (test_kane3.py), timed in two parts; returns the numeric A(v)
+    (with ``linearize=False``: the derivation's wall and CPU seconds only)."""
     from sympy import acos, cos, pi, sin, sqrt, symbols
     from sympy.physics.mechanics import (
         KanesMethod,
@@ -66,7 +68,7 @@ def kane_bicycle():
         inertia,
     )
 
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     q1, q2, q4, q5 = dynamicsymbols("q1 q2 q4 q5")
     q1d, q2d, q4d, q5d = dynamicsymbols("q1 q2 q4 q5", 1)
     u1, u2, u3, u4, u5, u6 = dynamicsymbols("u1 u2 u3 u4 u5 u6")
@@ -126,6 +128,8 @@ def kane_bicycle():
                      kd_eqs=kd, constraint_solver="CRAMER")
     KM.kanes_equations(BL, FL)
     derive = time.perf_counter() - start
+    if not linearize:
+        return derive, time.process_time() - cpu
 
     PaperRadRear, PaperRadFront = 0.3, 0.35
     HTA = (pi / 2 - pi / 10).evalf()
@@ -181,6 +185,52 @@ def case_kane():
     _emit(eig=[[(z.real, z.imag) for z in e] for e in eig])
 
 
+def case_kane_derive():
+    from sympy.physics import mechanics  # noqa: F401  (import excluded from the timing)
+
+    _preimport()
+    wall, cpu = kane_bicycle(linearize=False)
+    _emit(derive=wall, cpu=cpu)
+
+
+def _import_ours():
+    """Import rigidmech's modules before the timing (Kane's side imports
+    sympy.physics.mechanics before its own)."""
+    try:
+        import rigidmech.models  # noqa: F401
+    except ImportError:
+        import rigidmech  # noqa: F401
+
+
+def case_ours_derive():
+    _import_ours()
+    _preimport()
+    start, cpu = time.perf_counter(), time.process_time()
+    whipple_bicycle()
+    _emit(derive=time.perf_counter() - start, cpu=time.process_time() - cpu)
+
+
+def derive_only(pairs, timeout):
+    """The derivations alone (ours: build + equations; Kane: ``kanes_equations``), each in a
+    fresh process, ``pairs`` pairs alternated (the order swapped every pair), CPU seconds;
+    the ratio taken pair by pair, its median printed."""
+    import statistics
+
+    ours, kane = [], []
+    for i in range(pairs):
+        order = ("ours-derive", "kane-derive") if i % 2 == 0 else ("kane-derive",
+                                                                   "ours-derive")
+        got = {side: run_case(0, side, timeout, script=__file__) for side in order}
+        ours.append(got["ours-derive"].get("cpu", float("nan")))
+        kane.append(got["kane-derive"].get("cpu", float("nan")))
+        print(f"pair {i + 1}: ours {ours[-1]:.2f} s, Kane {kane[-1]:.2f} s CPU, "
+              f"Kane/ours {kane[-1] / ours[-1]:.2f}", flush=True)
+    ratios = [b / a for a, b in zip(ours, kane, strict=True)]
+    print(f"\nderive (CPU s, median of {pairs}): ours {statistics.median(ours):.2f}, Kane "
+          f"{statistics.median(kane):.2f}; Kane/ours pair by pair: median "
+          f"{statistics.median(ratios):.2f} (min {min(ratios):.2f}, max {max(ratios):.2f})")
+
+
 def case_ours(evalf):
     import numpy as np
     import sympy as sp
@@ -188,6 +238,7 @@ def case_ours(evalf):
     from rigidmech.vibrations import linearize
     from rigidmech.vibrations._numeric import state_matrix
 
+    _import_ours()
     _preimport()
     start = time.perf_counter()
     eqs, rR = whipple_bicycle()
@@ -234,12 +285,21 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-evalf", action="store_true", help="skip the evalf numeric")
     parser.add_argument("--timeout", type=float, default=900.0, help="seconds per case")
+    parser.add_argument("--derive-only", type=int, metavar="PAIRS",
+                        help="time the two derivations only, PAIRS alternated pairs")
     parser.add_argument("--case", nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.case:
         side, flag = args.case
-        {"kane8": case_kane8, "kane": case_kane,
+        {"kane8": case_kane8, "kane": case_kane, "kane-derive": case_kane_derive,
+         "ours-derive": case_ours_derive,
          "ours": lambda: case_ours(flag == "1")}[side]()
+        return 0
+    if args.derive_only:
+        print(header().splitlines()[1:][0])
+        print(header().splitlines()[2])
+        derive_only(args.derive_only, args.timeout)
+        print(f"load average at end: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
         return 0
     print(header().replace("Planar n-link pendulum: deriving M(q) q'' = f with rigidmech vs "
                            "sympy KanesMethod", "Whipple bicycle: rigidmech vs sympy "

@@ -19,8 +19,9 @@ function here (and only here):
 * :func:`zero_decision` -- three-valued: True, False, or None when sympy cannot decide (the
   torsors layer reports an undecided case instead of guessing);
 * :func:`vanishes` -- zero for every value of the symbols *to the rounding of the floats the
-  expression carries*: an exact expression is decided by algebra (a sample point first, then
-  ``simplify``), one with float constants by its value at two sample points, at most
+  expression carries*: an exact expression is decided by its values at random points in
+  64-digit arithmetic (:func:`~rigidmech._core.probes.sampled_zero_decision`), by ``simplify``
+  when they do not decide, one with float constants by its value at two sample points, at most
   ``SAMPLE_ZERO`` (1e-9) of the largest magnitude met while evaluating it (the relative motion
   a joint allows, closure conditions, energies that vanish identically);
 * :func:`fold_numbers` -- zero when the value at two random points, in 64-digit arithmetic, is
@@ -37,7 +38,16 @@ import random
 import mpmath
 import sympy as sp
 
+from .probes import (
+    FOLD_DIGITS,
+    FOLD_ZERO_RELATIVE,
+    _point_verdict,
+    _probe_values,
+    sampled_zero_decision,
+)
+
 __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
+           "complex_values",
            "nonzero_somewhere", "vanishes", "SAMPLE_ZERO", "fold_numbers",
            "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
@@ -277,6 +287,32 @@ def _complex_value(e, values, memo):
     return out
 
 
+def complex_values(exprs, values) -> list:
+    """The values (Python complex numbers) of ``exprs`` with the symbols of ``values`` given
+    those numbers: one walk in double precision over the distinct subexpressions (shared by
+    all the expressions), where ``evalf`` walks each expression as a tree in multiple
+    precision; an expression with a function this walk does not know is evaluated by
+    ``evalf`` (its symbols replaced by Floats).
+
+    Examples
+    --------
+    >>> x, y = sp.symbols("x y")
+    >>> complex_values([sp.sqrt(x) * y, sp.exp(x) * y], {x: 0.25, y: 2.0})
+    [(1+0j), (2.568050833375483+0j)]
+    """
+    rule = {s: complex(v) for s, v in values.items()}
+    memo, out = {}, []
+    for e in exprs:
+        e = sp.sympify(e)
+        try:
+            out.append(complex(_complex_value(e, rule, memo)))
+        except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError,
+                RecursionError):
+            floats = {s: sp.Float(v) for s, v in values.items()}
+            out.append(complex(e.xreplace(floats).evalf()))
+    return out
+
+
 def _sample(atom, value, i):
     """A sample value that honours the atom's sign and integrality assumptions (an
     expression that vanishes only under them must not be seen non-zero)."""
@@ -347,8 +383,13 @@ def vanishes(expr, skip=()) -> bool:
     """Whether the scalar ``expr`` vanishes for every value of its symbols (but those in
     ``skip``), to the rounding of the float constants it carries.
 
-    * An expression without floats has no rounding: a non-zero value at a sample point
-      (:func:`nonzero_somewhere`) says no cheaply, otherwise ``sympy.simplify`` decides.
+    * An expression without floats has no rounding: its values at random points in 64-digit
+      arithmetic decide (:func:`~rigidmech._core.probes.sampled_zero_decision`: zero when
+      they are at most 1e-40 of the terms and the expression is meromorphic in its symbols,
+      not zero when one is above 1e-30 of them), after the cheaper double-precision
+      :func:`nonzero_somewhere` (a value above 1e-9 says no); when they do not decide (a
+      near-cancellation, ``Abs``, ``atan``, a square root of a base of unknown sign, integer
+      symbols), ``sympy.simplify`` does.
     * An expression with floats (``0.0625``, ``sin(0.0625)``: sympy combines their terms as it
       builds, so ``0.0625 sin(0.0625) q' - 0.0625 sin(0.0625) q'`` may arrive as
       ``6.9e-18 q'``) vanishes when, at two sample points (:func:`nonzero_somewhere`'s), its
@@ -367,7 +408,12 @@ def vanishes(expr, skip=()) -> bool:
     if is_exactly_zero(expr):
         return True
     if not expr.atoms(sp.Float):
-        return not nonzero_somewhere(expr, skip) and sp.simplify(expr) == 0
+        if nonzero_somewhere(expr, skip):
+            return False
+        decided = sampled_zero_decision(expr, skip)
+        if decided is not None:
+            return decided
+        return sp.simplify(expr) == 0
     atoms = _sample_atoms(expr, skip)
     for seed in _SEEDS:
         values, memo = _sample_values(atoms, seed), {}
@@ -381,74 +427,6 @@ def vanishes(expr, skip=()) -> bool:
         if not (math.isfinite(scale) and abs(value) <= SAMPLE_ZERO * scale):
             return False
     return True
-
-
-#: Working precision (decimal digits) and relative threshold of :func:`fold_numbers`: an
-#: expression whose value at every probe point is at most ``FOLD_ZERO_RELATIVE`` times the
-#: largest magnitude met while evaluating it is zero. Rounding at 64 digits leaves about
-#: (number of operations) x 1e-64 of that magnitude, far below 1e-40 even for a million
-#: operations; a non-zero expression smaller than 1e-40 of its own terms at two random points
-#: would need a coincidence of that order.
-FOLD_DIGITS = 64
-FOLD_ZERO_RELATIVE = mpmath.mpf(10) ** -40
-
-_MPMATH = {sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan, sp.exp: mpmath.exp,
-           sp.log: mpmath.log, sp.asin: mpmath.asin, sp.acos: mpmath.acos,
-           sp.atan: mpmath.atan, sp.sinh: mpmath.sinh, sp.cosh: mpmath.cosh,
-           sp.tanh: mpmath.tanh, sp.Abs: abs}
-
-
-def _probe_values(exprs, points):
-    """Values (one per point) and largest magnitudes of every distinct node of ``exprs``, at
-    ``FOLD_DIGITS`` digits; None for a node with a function mpmath is not given here.
-    ``points`` maps each symbol to its values. Iterative: no recursion limit on deep DAGs.
-    Also returns, for every node, whether it is constant (free of symbols)."""
-    values, largest, constant = {}, {}, {}
-    k = len(next(iter(points.values()))) if points else 1
-    stack = list(exprs)
-    while stack:
-        e = stack[-1]
-        if e in values:
-            stack.pop()
-            continue
-        if e.is_Symbol:
-            out = points.get(e)
-        elif e.is_Number or e.is_NumberSymbol:
-            out = [mpmath.mpmathify(e.evalf(FOLD_DIGITS + 10))] * k
-        elif not e.args:
-            out = None
-        else:
-            pending = [a for a in e.args if a not in values]
-            if pending:
-                stack.extend(pending)
-                continue
-            args = [values[a] for a in e.args]
-            out = None
-            if all(a is not None for a in args):
-                columns = list(zip(*args, strict=True))
-                try:
-                    if e.is_Add:
-                        out = [mpmath.fsum(c) for c in columns]
-                    elif e.is_Mul:
-                        out = [mpmath.fprod(c) for c in columns]
-                    elif e.is_Pow:
-                        out = [mpmath.power(b, x) for b, x in columns]
-                    elif e.func in _MPMATH:
-                        out = [_MPMATH[e.func](*c) for c in columns]
-                except (ZeroDivisionError, ValueError, TypeError):
-                    out = None
-        stack.pop()
-        values[e] = out
-        constant[e] = not e.is_Symbol and all(constant[a] for a in e.args)
-        if out is None:
-            largest[e] = None
-        else:
-            sub = [largest[a] for a in e.args if a in largest]
-            here = [abs(v) for v in out]
-            for s in sub:
-                here = [max(h, x) for h, x in zip(here, s, strict=True)] if s else here
-            largest[e] = here
-    return values, largest, constant
 
 
 def fold_numbers(exprs, *, seed=0):
@@ -538,8 +516,8 @@ def _folded(e, probe, memo):
 
 
 def _vanishes(value, largest):
-    """The zero test of :func:`fold_numbers` on the values of one expression at the points."""
+    """The zero test of :func:`fold_numbers` on the values of one expression at the points:
+    the rule of :func:`~rigidmech._core.probes.sampled_zero_decision` at every point."""
     if value is None:
         return False
-    return all(abs(v) <= FOLD_ZERO_RELATIVE * max(m, 1e-300)
-               for v, m in zip(value, largest, strict=True))
+    return all(_point_verdict(v, m) is True for v, m in zip(value, largest, strict=True))

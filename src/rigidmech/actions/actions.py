@@ -59,15 +59,14 @@ def _check_perpendicular(u, n, argument, other, what="", word="perpendicular"):
     """Refuse unit vectors ``u`` and ``n`` that are not perpendicular. One rule for every
     action that needs it (ContactLaws' tangent and rolling axis, KnifeEdge's blade,
     LinearRectilinear's direction): a numeric cosine must be at most 1e-12 in magnitude
-    (rounding of vectors given in floats), a symbolic one must be shown zero (a value at sample
-    points refutes it cheaply, ``sympy.simplify`` proves it)."""
-    from .._core.symbolic import nonzero_somewhere
-
+    (rounding of vectors given in floats), a symbolic one must vanish by the library's one
+    rule (:func:`~rigidmech._core.symbolic.vanishes`: values at sample points, ``simplify``
+    when they do not decide)."""
     cosine = sp.sympify(u.dot(n))
     if cosine.is_number:
         ok = abs(complex(cosine)) <= _PERPENDICULAR_TOL
     else:
-        ok = not nonzero_somewhere(cosine) and sp.simplify(cosine) == 0
+        ok = vanishes(cosine)
     if not ok:
         raise ArgumentError(
             f"{what}`{argument}` must be {word} to `{other}`; got {argument} . {other} "

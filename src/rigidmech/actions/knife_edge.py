@@ -27,7 +27,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.symbolic import nonzero_somewhere
+from .._core.symbolic import vanishes
 from ..kinematics.constraints import VelocityConstraint
 from ..kinematics.solid import as_solid as _solid
 from ..torsors import Torsor
@@ -39,12 +39,8 @@ __all__ = ["KnifeEdge"]
 
 
 def _zero(e) -> bool:
-    e = sp.sympify(e)
-    if e == 0:
-        return True
-    if nonzero_somewhere(e):
-        return False
-    return sp.simplify(e) == 0
+    """Identically zero: the library's one rule (:func:`~rigidmech._core.symbolic.vanishes`)."""
+    return vanishes(e)
 
 
 def _unit(vector, argument, solid):
@@ -52,13 +48,16 @@ def _unit(vector, argument, solid):
     if isinstance(vector, Point) or not isinstance(vector, Vector):
         raise ArgumentTypeError(
             f"`{argument}` must be a Vector; got {type(vector).__name__}.")
-    if vector.is_zero or _zero(vector.dot(vector)):
+    square = vector.dot(vector) if not vector.is_zero else sp.S.Zero
+    if _zero(square):
         raise ArgumentError(f"`{argument}` must be a non-zero Vector; got {vector!r}.")
     if not all(_zero(c) for c in vector.dt(solid.frame).components(solid.frame)):
         raise ArgumentError(
             f"`{argument}` must be fixed in {solid.name} (constant in its frame "
             f"{solid.frame.name}); got {vector!r}.")
-    return vector / sp.sqrt(sp.simplify(vector.dot(vector)))
+    if not sp.sympify(square).atoms(sp.Float) and _zero(square - 1):  # exactly unit already
+        return vector
+    return vector / sp.sqrt(sp.simplify(square))
 
 
 class KnifeEdge:

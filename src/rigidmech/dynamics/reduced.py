@@ -33,7 +33,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
-from .._core.symbolic import xreplace_shared
+from .._core.symbolic import complex_values, xreplace_shared
 from ..vectors import t as _t
 
 __all__ = ["ReducedEquations", "plain_constraints", "reduce_equations", "split_coordinates"]
@@ -54,9 +54,9 @@ def _index(eqs, coordinate):
 def _generic_jacobian(A, symbols):
     """A at a generic point (random values of every symbol): the structural rank."""
     rng = np.random.default_rng(20260)
-    point = {s: sp.Float(v) for s, v in zip(symbols, rng.uniform(0.3, 1.3, len(symbols)),
-                                            strict=True)}
-    return np.array(A.xreplace(point).evalf().tolist(), dtype=complex).real
+    point = dict(zip(symbols, rng.uniform(0.3, 1.3, len(symbols)), strict=True))
+    values = complex_values(list(A), point)  # one double-precision walk, not evalf
+    return np.array(values, dtype=complex).reshape(A.shape).real
 
 
 def _choose_dependent(eqs, A, symbols):

@@ -23,6 +23,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
+from .._core.symbolic import vanishes
 from ..vectors import t
 from ..vectors.symbols import is_coordinate
 
@@ -111,7 +112,7 @@ class VelocityConstraint:
             variables.append(t)
         for i, (ai, xi) in enumerate(zip(forms, variables, strict=True)):
             for aj, xj in zip(forms[i + 1:], variables[i + 1:], strict=True):
-                if sp.simplify(ai.diff(xj) - aj.diff(xi)) != 0:
+                if not vanishes(ai.diff(xj) - aj.diff(xi)):  # the one exact zero rule
                     return None
         f = sp.S.Zero
         for ai, xi in zip(forms, variables, strict=True):
