@@ -18,6 +18,7 @@ import sympy as sp
 from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
+from .._core.rules import magnitude
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..ode._fixed import step_count
 from ..ode._progress import for_run
@@ -142,6 +143,28 @@ def closure_functions(eqs):
                                 name="closure") if hol else None,
             compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
             compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
+    return eqs._cache[key]
+
+
+def closure_scales(eqs):
+    """(Φ scales(t, q, *params, *inputs), a scales(t, q, ...)): the magnitudes of the terms
+    of the holonomic rows Φ and of the velocity rows at zero rates, a (see
+    :func:`~rigidmech._core.rules.magnitude`), compiled once (cached): the scales of the rule
+    :func:`~rigidmech._core.rules.on_constraints`."""
+    c = eqs.constraints
+    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    key = "closure_scales"
+    if key not in eqs._cache:
+        hol = [i for i, p in enumerate(c.position) if p is not None]
+        args_q = [_t, list(q_s), *eqs._params, *w_s]
+        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+        rest = dict.fromkeys(u_s, 0)
+        a = [e.xreplace(rest) for e in xreplace_shared(list(c.velocity), rule)]
+        eqs._cache[key] = (
+            compile_expressions(sp.ImmutableMatrix(len(hol), 1, [magnitude(e) for e in phi]),
+                                args_q, name="closure_scales") if hol else None,
+            compile_expressions(sp.ImmutableMatrix(len(a), 1, [magnitude(e) for e in a]),
+                                args_q, name="velocity_scales"))
     return eqs._cache[key]
 
 

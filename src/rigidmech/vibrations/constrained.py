@@ -71,6 +71,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError
+from .._core.rules import numeric_rank
 from .._core.symbolic import is_identically_zero, xreplace_shared
 from ..dynamics.reduced import plain_constraints, split_coordinates
 from ._jet import values_and_jacobian
@@ -117,11 +118,10 @@ def _holonomic_split(phi_q, dep):
                                           strict=True)}
     num = np.array(phi_q.xreplace(sub).evalf().tolist(), dtype=complex).real
     chosen = []
-    # relative to the size of Phi_q (the rule of _invertible and of the mass check), so that
-    # the decision does not depend on the unit of length
-    tol = 1e-12 * max(np.linalg.norm(num, 2), 1e-300)
+    # the one rank rule (rigidmech._core.rules): relative, so that the decision does not
+    # depend on the unit of length
     for j in dep:
-        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=tol) == len(chosen) + 1:
+        if numeric_rank(num[:, chosen + [j]]) == len(chosen) + 1:
             chosen.append(j)
         if len(chosen) == p:
             return chosen
@@ -133,8 +133,8 @@ def _holonomic_split(phi_q, dep):
 
 def _invertible(X):
     if all(sp.sympify(x).is_number for x in X):
-        s = np.linalg.svd(np.array(X.evalf().tolist(), dtype=complex), compute_uv=False)
-        return s[-1] > 1e-12 * max(s[0], 1e-300)
+        Xn = np.array(X.evalf().tolist(), dtype=complex)
+        return numeric_rank(Xn) == min(Xn.shape)   # the one rank rule
     return not is_identically_zero(X.det())
 
 
