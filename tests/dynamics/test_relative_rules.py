@@ -195,3 +195,21 @@ def test_prismatic_check_is_relative_to_the_velocities(size, ratio, allowed):
     else:
         with pytest.raises(rm.errors.ConnectionError_, match="is not allowed by the joint"):
             joint.check(motion)
+
+
+# -- linearize: q* on the constraints by the same rule ---------------------------------------
+@pytest.mark.parametrize("r", [1e-10, 1.0, 1e3])
+def test_linearize_refuses_a_reference_off_a_circle_of_any_radius(r):
+    """A particle on the circle x^2 + y^2 = r^2: about (0.6 r, 0.5 r), 39 % of r^2 off it, is
+    refused whatever r (with r = 1e-10 the residual 3.9e-21 passed the absolute tol 1e-9);
+    about (0.6 r, 0.8 r) is accepted."""
+    from rigidmech.vibrations import linearize
+
+    eqs, _ = _circle()
+    eqs = rm.EquationsOfMotion(coordinates=eqs.coordinates, mass_matrix=eqs.mass_matrix,
+                               forcing=eqs.forcing,
+                               constraints=eqs.constraints)
+    with pytest.raises(ArgumentError, match="violates the constraints"):
+        linearize(eqs, about={"x": 0.6 * r, "y": 0.5 * r}, independent=["x"],
+                  parameters={"r": r})
+    linearize(eqs, about={"x": 0.6 * r, "y": 0.8 * r}, independent=["x"], parameters={"r": r})

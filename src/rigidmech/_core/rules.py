@@ -52,15 +52,17 @@ def magnitude(expr) -> sp.Expr:
     """The magnitude of the terms of ``expr``: every sum replaced by the sum of the
     magnitudes of its terms, every product by the product of the magnitudes of its factors,
     an integer power by the power of its base's magnitude (an even power of a real value is
-    kept), anything else by its absolute value. It bounds |expr| and is the scale against
-    which ``expr`` = 0 is judged (a cancellation of large terms leaves rounding of their
-    size).
+    kept), a sine or cosine by 1 (its range: the rounding of a sine that vanishes, sin(pi)
+    = 1.2e-16, is of that size), anything else by its absolute value. It bounds |expr| and
+    is the scale against which ``expr`` = 0 is judged: for a closure condition of lengths
+    and angles, the sum of the lengths of its terms (a cancellation of large terms leaves
+    rounding of their size).
 
     Examples
     --------
     >>> a, b, L = sp.symbols("a b L", positive=True)
     >>> magnitude(L * (sp.cos(a) - sp.cos(b)))
-    L*(Abs(cos(a)) + Abs(cos(b)))
+    2*L
     >>> magnitude(sp.Integer(-3)), magnitude(sp.Symbol("x") - 1)
     (3, Abs(x) + 1)
     """
@@ -69,6 +71,8 @@ def magnitude(expr) -> sp.Expr:
         return sp.Add(*(magnitude(a) for a in expr.args))
     if expr.is_Mul:
         return sp.Mul(*(magnitude(a) for a in expr.args))
+    if isinstance(expr, sp.sin | sp.cos):
+        return sp.S.One
     if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
         if expr.exp.is_even and not expr.base.is_Add:  # a real value: already >= 0
             return expr

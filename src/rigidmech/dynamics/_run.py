@@ -147,8 +147,8 @@ def closure_functions(eqs):
 
 
 def closure_scales(eqs):
-    """(Φ scales(t, q, *params, *inputs), a scales(t, q, ...)): the magnitudes of the terms
-    of the holonomic rows Φ and of the velocity rows at zero rates, a (see
+    """(Φ scales(t, q, *params, *inputs), velocity scales(t, q, u, ...)): the magnitudes of
+    the terms of the holonomic rows Φ and of the velocity rows A q' + a (see
     :func:`~rigidmech._core.rules.magnitude`), compiled once (cached): the scales of the rule
     :func:`~rigidmech._core.rules.on_constraints`."""
     c = eqs.constraints
@@ -157,14 +157,14 @@ def closure_scales(eqs):
     if key not in eqs._cache:
         hol = [i for i, p in enumerate(c.position) if p is not None]
         args_q = [_t, list(q_s), *eqs._params, *w_s]
+        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
         phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
-        rest = dict.fromkeys(u_s, 0)
-        a = [e.xreplace(rest) for e in xreplace_shared(list(c.velocity), rule)]
+        vel = xreplace_shared(list(c.velocity), rule)
         eqs._cache[key] = (
             compile_expressions(sp.ImmutableMatrix(len(hol), 1, [magnitude(e) for e in phi]),
                                 args_q, name="closure_scales") if hol else None,
-            compile_expressions(sp.ImmutableMatrix(len(a), 1, [magnitude(e) for e in a]),
-                                args_q, name="velocity_scales"))
+            compile_expressions(sp.ImmutableMatrix(len(vel), 1, [magnitude(e) for e in vel]),
+                                args_u, name="velocity_scales"))
     return eqs._cache[key]
 
 

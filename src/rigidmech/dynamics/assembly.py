@@ -21,7 +21,7 @@ import sympy as sp
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ConnectionError_
 from .._core.lazy import lazy_package
-from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints, velocity_scale
+from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints
 from ..vectors import t as _t
 
 scipy = lazy_package("scipy")  # lazy: import cost of scipy.linalg (see docs/performance)
@@ -93,10 +93,11 @@ class Closure:
             (sp.Matrix(len(phi), 1, phi), sp.Matrix(A), sp.Matrix(a)),
             [_t, q_s, *self.consts], name="closure")
         # the magnitudes of the terms of Φ and of a: the scales of the rule on_constraints
+        vel = [c.xreplace(rule) for c in constraints.velocity]
         self._scales = compile_expressions(
             (sp.Matrix(len(phi), 1, [magnitude(e) for e in phi]),
-             sp.Matrix(len(a), 1, [magnitude(e) for e in a])),
-            [_t, q_s, *self.consts], name="closure_scales")
+             sp.Matrix(len(vel), 1, [magnitude(e) for e in vel])),
+            [_t, q_s, u_s, *self.consts], name="closure_scales")
 
     def constants(self, params):
         """The values of the constants, in order, from ``params`` by name."""
@@ -115,11 +116,8 @@ class Closure:
     def scales(self, q, u, t, cvals, J=None):
         """The magnitudes of the terms of Φ(q, t) and of A q' + a (the scales of the rule
         :func:`~rigidmech._core.rules.on_constraints`)."""
-        sq, sa = self._scales(t, q, *cvals)
-        if J is None:
-            J = self.evaluate(q, t, cvals)[1]
-        return (np.asarray(sq, float).reshape(-1),
-                velocity_scale(J, u, np.asarray(sa, float).reshape(-1)))
+        sq, su = self._scales(t, q, u, *cvals)
+        return np.asarray(sq, float).reshape(-1), np.asarray(su, float).reshape(-1)
 
     def off(self, q, u, t, cvals):
         """Labels and residuals of the conditions (q, u) violates at t by the rule

@@ -10,19 +10,16 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
-from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints, velocity_scale
+from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints
 from ..vectors import t as time_symbol
 
 
 def speeds_within(model, vals, rows, y, tol):
     """For each row, whether its velocity is at most ``tol`` of the magnitude of its terms
-    at the state ``y`` (see :meth:`_Model.speeds_zero`)."""
-    if not rows:
-        return np.ones(0, dtype=bool)
-    u = np.asarray(y[model.n:], dtype=float)
-    J = np.array([np.asarray(vals[r.J], dtype=float).reshape(-1) for r in rows])
+    (:func:`~rigidmech._core.rules.magnitude`) at the evaluated ``vals`` (see
+    :meth:`_Model.speeds_zero`); ``y`` is the state they were evaluated at."""
     v = np.array([float(vals[r.c]) for r in rows])
-    scale = velocity_scale(J, u, v - J @ u)
+    scale = np.array([float(vals[model._speed_terms + (r.c - 2) // 4]) for r in rows])
     return np.abs(v) <= tol * scale
 
 # the parts of a contact's state for its resisting couples: moving one way or the other, or
@@ -189,7 +186,8 @@ class _Model:
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
         flat = [*exprs, *[e for J, h, c, p in rows for e in (sp.Matrix([J]), h, c, p)],
-                *gaps, self._forcing_terms, *(magnitude(g) for g in gaps)]
+                *gaps, self._forcing_terms, *(magnitude(g) for g in gaps),
+                *(magnitude(c) for _, _, c, _ in rows)]
         free = set()
         for e in flat:
             free |= sp.sympify(e).free_symbols
@@ -217,6 +215,7 @@ class _Model:
         self._rows = [_Row(*(2 + 4 * i + j for j in range(4))) for i in range(len(rows))]
         self._terms = 2 + 4 * len(rows) + len(gaps)
         self._gap_terms = self._terms + 1 - (2 + 4 * len(rows))  # gap index -> its terms
+        self._speed_terms = self._terms + 1 + len(gaps)     # + row number: its c's terms
         self._n = n
         self._memo = (None, None)
 
