@@ -7,9 +7,10 @@ smaller, gets the same verdicts as the same model in metres.
 * **On the constraints** (:func:`on_constraints`): a condition is satisfied when its residual
   is at most :data:`ON_CONSTRAINTS` (1e-9) of the magnitude of its terms -- for a position
   condition Φ(q, t) the value of :func:`magnitude` (Φ with every sum taken term by term in
-  absolute value), for a velocity condition A q' + a the sum Σ_j |A_j q'_j| + |a|
-  (:func:`velocity_scale`). A circle x² + y² - r² = 0 of radius 1e-10 is judged against
-  x² + y² + r², not against an absolute 1e-9. A residual that is not finite is off.
+  absolute value, sines and cosines counted 1), for a velocity condition A q' + a the same
+  of its expression with every rate at the largest |q'_j| (:func:`rates_for_scale`). A
+  circle x² + y² - r² = 0 of radius 1e-10 is judged against x² + y² + r², not against an
+  absolute 1e-9. A residual that is not finite is off.
 * **Rank of a Jacobian** (:func:`numeric_rank`): the number of singular values above
   :data:`RANK_RTOL` (1e-9) times the largest one, once each row and each column is scaled to
   a largest entry of 1 (:func:`equilibrated`; entries under 1e-14 of the largest are
@@ -33,7 +34,7 @@ import numpy as np
 import sympy as sp
 
 __all__ = ["ON_CONSTRAINTS", "RANK_RTOL", "ROUNDING_FLOOR", "magnitude", "on_constraints",
-           "velocity_scale", "equilibrated", "numeric_rank", "rank_of"]
+           "rates_for_scale", "velocity_scale", "equilibrated", "numeric_rank", "rank_of"]
 
 #: Relative tolerance of a state on the constraints: |residual| <= ON_CONSTRAINTS * (the
 #: magnitude of the condition's terms).
@@ -93,6 +94,20 @@ def velocity_scale(A, u, a) -> np.ndarray:
     if not A.size:
         return np.zeros(A.shape[0])
     return np.abs(A * np.asarray(u, dtype=float)).sum(axis=1) + np.abs(np.asarray(a, float))
+
+
+def rates_for_scale(u) -> np.ndarray:
+    """The rates at which the magnitude of a velocity condition's terms is evaluated: every
+    rate at the largest |q'_j|. Rates solved from the conditions (the dependent ones) carry
+    rounding of that size, also where the terms that contain them are small.
+
+    Examples
+    --------
+    >>> rates_for_scale([0.5, -2.0, 1e-17]).tolist()
+    [2.0, 2.0, 2.0]
+    """
+    u = np.abs(np.asarray(u, dtype=float))
+    return np.full(u.shape, u.max() if u.size else 0.0)
 
 
 def on_constraints(residuals, scales) -> np.ndarray:

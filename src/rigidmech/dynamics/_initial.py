@@ -40,7 +40,7 @@ import inspect
 import numpy as np
 
 from .._core.errors import ArgumentError, ConnectionError_
-from .._core.rules import ON_CONSTRAINTS, numeric_rank
+from .._core.rules import ON_CONSTRAINTS, numeric_rank, rates_for_scale
 from .._core.rules import on_constraints as holds
 from ._run import closure_functions, closure_scales
 from .assembly import assemble
@@ -67,7 +67,7 @@ def _off_constraints(eqs, t0, q0, u0, consts, inputs, phi, A, vel):
     w = [v(t0) if callable(v) else v for v in inputs]
     sq = (np.zeros(0) if phi_s is None else
           np.asarray(phi_s(t0, q0, *consts, *w), dtype=float).reshape(-1))
-    su = np.asarray(a_s(t0, q0, u0, *consts, *w), float).reshape(-1)
+    su = np.asarray(a_s(t0, q0, rates_for_scale(u0), *consts, *w), float).reshape(-1)
     return _off(phi, sq), _off(vel, su)
 
 

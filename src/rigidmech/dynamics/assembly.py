@@ -21,7 +21,7 @@ import sympy as sp
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ConnectionError_
 from .._core.lazy import lazy_package
-from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints
+from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints, rates_for_scale
 from ..vectors import t as _t
 
 scipy = lazy_package("scipy")  # lazy: import cost of scipy.linalg (see docs/performance)
@@ -114,9 +114,10 @@ class Closure:
                 np.asarray(a0, float).reshape(-1))
 
     def scales(self, q, u, t, cvals, J=None):
-        """The magnitudes of the terms of Φ(q, t) and of A q' + a (the scales of the rule
-        :func:`~rigidmech._core.rules.on_constraints`)."""
-        sq, su = self._scales(t, q, u, *cvals)
+        """The magnitudes of the terms of Φ(q, t) and of A q' + a, the latter with every rate
+        at the largest |q'_j| (:func:`~rigidmech._core.rules.rates_for_scale`): the scales of
+        the rule :func:`~rigidmech._core.rules.on_constraints`."""
+        sq, su = self._scales(t, q, rates_for_scale(u), *cvals)
         return np.asarray(sq, float).reshape(-1), np.asarray(su, float).reshape(-1)
 
     def off(self, q, u, t, cvals):

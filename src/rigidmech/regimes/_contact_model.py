@@ -14,12 +14,17 @@ from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraint
 from ..vectors import t as time_symbol
 
 
-def speeds_within(model, vals, rows, y, tol):
+def speeds_within(model, vals, rows, y, tol, before=None):
     """For each row, whether its velocity is at most ``tol`` of the magnitude of its terms
     (:func:`~rigidmech._core.rules.magnitude`) at the evaluated ``vals`` (see
-    :meth:`_Model.speeds_zero`); ``y`` is the state they were evaluated at."""
+    :meth:`_Model.speeds_zero`); ``y`` is the state they were evaluated at. ``before``: the
+    values before an impact that led to ``vals`` (its projection leaves the rounding of the
+    velocities it removed: the larger magnitude counts)."""
     v = np.array([float(vals[r.c]) for r in rows])
-    scale = np.array([float(vals[model._speed_terms + (r.c - 2) // 4]) for r in rows])
+    index = [model._speed_terms + (r.c - 2) // 4 for r in rows]
+    scale = np.array([float(vals[i]) for i in index])
+    if before is not None:
+        scale = np.maximum(scale, [float(before[i]) for i in index])
     return np.abs(v) <= tol * scale
 
 # the parts of a contact's state for its resisting couples: moving one way or the other, or
@@ -226,12 +231,12 @@ class _Model:
         g = float(vals[contact.gap])
         return g <= 0 or bool(on_constraints([g], [float(vals[contact.gap + self._gap_terms])])[0])
 
-    def speeds_zero(self, vals, rows, y) -> bool:
+    def speeds_zero(self, vals, rows, y, before=None) -> bool:
         """Whether the velocities of ``rows`` (a sliding velocity, a rolling or spinning
         rate, a normal velocity) are zero at the state ``y``: each at most ON_CONSTRAINTS of
         the magnitude of its terms, sum_j |J_j q'_j| + |the rest| (the rule on the
         velocity constraints, :func:`~rigidmech._core.rules.on_constraints`)."""
-        return bool(np.all(speeds_within(self, vals, rows, y, ON_CONSTRAINTS)))
+        return bool(np.all(speeds_within(self, vals, rows, y, ON_CONSTRAINTS, before)))
 
     def values(self, t, y):
         key = (float(t), np.asarray(y, dtype=float).tobytes())
@@ -261,10 +266,9 @@ class _Model:
             Jj = np.asarray(vals[rj.J], dtype=float).reshape(-1)
             Jk = np.asarray(vals[rk.J], dtype=float).reshape(-1)
             hj, hk = float(vals[rj.h]), float(vals[rk.h])
-            # relative to the rows' own size (no absolute floor): the same verdict in any unit
-            scale = max(float(np.abs(Jj).max()), float(np.abs(Jk).max()))
-            if float(np.abs(Jj - Jk).max()) > ON_CONSTRAINTS * scale or \
-                    abs(hj - hk) > ON_CONSTRAINTS * max(abs(hj), abs(hk)):
+            scale = max(1.0, float(np.abs(Jj).max()), float(np.abs(Jk).max()))
+            if float(np.abs(Jj - Jk).max()) > 1e-9 * scale or \
+                    abs(hj - hk) > 1e-9 * max(1.0, abs(hj), abs(hk)):
                 return False
         return True
 

@@ -131,13 +131,14 @@ class _Rules:
                          self.after_couple_stop(t, y, states, k, kind)),
                      reset=lambda t, y: m.project(t, y, self._with_part(states, k, kind, held)))
 
-    def couple_states(self, t, y, states, k):
+    def couple_states(self, t, y, states, k, before=None):
         """The parts of the couples of contact k from their rates (at a start or a landing):
-        moving if the rate is not zero, else held if coefficient * N holds it."""
+        moving if the rate is not zero, else held if coefficient * N holds it. ``before``:
+        the values before the landing's impact (see :func:`speeds_within`)."""
         for kind, (row, _) in self.m.contacts[k].couples.items():
             vals = self.m.values(t, y)
             w = float(vals[row.c])
-            if not self.m.speeds_zero(vals, [row], y):
+            if not self.m.speeds_zero(vals, [row], y, before):
                 states = self._with_part(states, k, kind, PARTS[kind][0 if w > 0 else 1])
             else:
                 states = self.after_couple_stop(t, y, states, k, kind)
@@ -274,22 +275,26 @@ class _Rules:
             return float(m.values(t, y)[c.gap])
 
         def target(t, y):
-            return m.regime_name(self.closing_state(t, m.project(t, y, impact), states, k))
+            before = np.array(m.values(t, y), dtype=object)
+            return m.regime_name(self.closing_state(t, m.project(t, y, impact), states, k,
+                                                    before))
 
         def reset(t, y):
+            before = np.array(m.values(t, y), dtype=object)
             after = m.project(t, y, impact)
-            return m.project(t, after, self.closing_state(t, after, states, k))
+            return m.project(t, after, self.closing_state(t, after, states, k, before))
 
         return Guard(f"{c.name} lands", gap, target=target, direction=-1, reset=reset)
 
-    def closing_state(self, t, y, states, k):
-        """The states as contact k closes at (t, y) (normal velocity zero)."""
+    def closing_state(self, t, y, states, k, before=None):
+        """The states as contact k closes at (t, y) (normal velocity zero); ``before``: the
+        values before the impact that closed it (see :func:`speeds_within`)."""
         c = self.m.contacts[k]
         if c.law is None:
             return self._with(states, k, "contact")
         vals = self.m.values(t, y)
         vs = c.sliding(vals)
-        if not self.m.speeds_zero(vals, c.tangents, y):
+        if not self.m.speeds_zero(vals, c.tangents, y, before):
             if len(c.tangents) == 1:
                 out = self._with(states, k, "slip+" if vs[0] > 0 else "slip-")
             else:
@@ -297,7 +302,7 @@ class _Rules:
                 out = self._with(states, k, "slip")
         else:
             out = self.after_stop(t, y, states, k)
-        return self.couple_states(t, y, out, k) if c.couples else out
+        return self.couple_states(t, y, out, k, before) if c.couples else out
 
     def start(self, t, y):
         states = []
