@@ -17,7 +17,7 @@ from rigidmech._core.rules import (
     numeric_rank,
     on_constraints,
     rank_of,
-    velocity_scale,
+    rates_for_scale,
 )
 from rigidmech.dynamics import Constraints
 from rigidmech.dynamics.assembly import assemble
@@ -67,8 +67,8 @@ def test_rank_of_a_near_singular_matrix_in_any_units(factor, rank, row, column):
     assert numeric_rank(A) == rank
 
 
-def test_velocity_scale_is_the_terms():
-    assert velocity_scale(np.array([[1.0, -1.0]]), [3.0, 3.0], [0.0]).tolist() == [6.0]
+def test_rates_for_scale_are_the_largest_rate():
+    assert rates_for_scale(np.array([1.0, -3.0])).tolist() == [3.0, 3.0]
 
 
 # -- a circle of radius 1e-10 (it was accepted half off its constraint) ---------------------

@@ -34,7 +34,7 @@ import numpy as np
 import sympy as sp
 
 __all__ = ["ON_CONSTRAINTS", "RANK_RTOL", "ROUNDING_FLOOR", "magnitude", "on_constraints",
-           "rates_for_scale", "velocity_scale", "equilibrated", "numeric_rank", "rank_of"]
+           "rates_for_scale", "equilibrated", "numeric_rank", "rank_of"]
 
 #: Relative tolerance of a state on the constraints: |residual| <= ON_CONSTRAINTS * (the
 #: magnitude of the condition's terms).
@@ -81,21 +81,6 @@ def magnitude(expr) -> sp.Expr:
     return sp.Abs(expr)
 
 
-def velocity_scale(A, u, a) -> np.ndarray:
-    """The magnitude of the terms of the velocity conditions A q' + a at the rates ``u``:
-    Σ_j |A_ij u_j| + |a_i| for each row i (``a`` its values, or magnitudes when given).
-
-    Examples
-    --------
-    >>> velocity_scale(np.array([[1.0, -2.0]]), np.array([2.0, 1.0]), np.array([0.5]))
-    array([4.5])
-    """
-    A = np.asarray(A, dtype=float)
-    if not A.size:
-        return np.zeros(A.shape[0])
-    return np.abs(A * np.asarray(u, dtype=float)).sum(axis=1) + np.abs(np.asarray(a, float))
-
-
 def rates_for_scale(u) -> np.ndarray:
     """The rates at which the magnitude of a velocity condition's terms is evaluated: every
     rate at the largest |q'_j|. Rates solved from the conditions (the dependent ones) carry
@@ -112,7 +97,7 @@ def rates_for_scale(u) -> np.ndarray:
 
 def on_constraints(residuals, scales) -> np.ndarray:
     """For each condition, whether it holds: ``|residual| <= ON_CONSTRAINTS * scale``, with
-    ``scale`` the magnitude of its terms (:func:`magnitude`, :func:`velocity_scale`); a
+    ``scale`` the magnitude of its terms (:func:`magnitude`, :func:`rates_for_scale`); a
     residual that is not finite does not hold. The boundary holds.
 
     Examples
