@@ -151,20 +151,46 @@ def _line():
                                 forcing=sp.Matrix([0, -1]), constraints=c)
 
 
-@pytest.mark.parametrize("x0, moved", [(1e-9, False), (1e-9 * (1 - 1e-6), False),
-                                       (1e-9 * (1 + 1e-6), True), (-1e-9, False),
-                                       (1e-9 * (1 + 1e-12), True)])
-def test_on_the_constraints_boundary(x0, moved):
-    """A state is on the constraints when |Φ| <= 1e-9 (and |A q' + a| <= 1e-9), the
-    tolerance System.assemble reaches: used as given; beyond, moved (with a note)."""
-    sim = _line().simulate(t=(0, 0.1), q0=[x0, 2.0], n_output=2)
-    assert (sim.q[0, 0] == 0.0 and len(sim.notes) == 1) if moved else \
-        (sim.notes == () and sim.q0_given[0] == x0)
+# The rule (rigidmech._core.rules.on_constraints, issue 19): |Φ| at most 1e-9 of the
+# magnitude of its terms. On the line x = 1 (Φ = x - 1, terms |x| + 1), the boundary is
+# x0 = 1 + d with d = 1e-9 (2 + d): d* = 2e-9 / (1 - 1e-9); floats resolve 1e-7 of d* there
+# (the boundary itself and 1e-12 of it are tested on the rule, tests/dynamics/
+# test_relative_rules.py).
+D_STAR = 2e-9 / (1 - 1e-9)
+
+
+def _line_at_one():
+    from rigidmech.dynamics import Constraints
+
+    x, y = rm.coordinates("x y")
+    c = Constraints((x, y), [("line", x.diff(rm.t), x - 1)])
+    return rm.EquationsOfMotion(coordinates=(x, y), mass_matrix=sp.eye(2),
+                                forcing=sp.Matrix([0, -1]), constraints=c)
+
+
+@pytest.mark.parametrize("d, moved", [(D_STAR * (1 - 1e-6), False), (D_STAR * (1 + 1e-6), True),
+                                      (-D_STAR * (1 - 1e-6), False),
+                                      (-D_STAR * (1 + 1e-6), True)])
+def test_on_the_constraints_boundary(d, moved):
+    """A state on the constraints (|Φ| <= 1e-9 of its terms, the rule System.assemble
+    reaches) is used as given; beyond, moved (with a note)."""
+    sim = _line_at_one().simulate(t=(0, 0.1), q0=[1.0 + d, 2.0], n_output=2)
+    assert (sim.q[0, 0] == 1.0 and len(sim.notes) == 1) if moved else \
+        (sim.notes == () and sim.q0_given[0] == 1.0 + d)
     assert sim.q[1, 0] == 2.0
 
 
-@pytest.mark.parametrize("v0, moved", [(1e-9, False), (1e-9 * (1 + 1e-6), True)])
+def test_a_condition_without_a_scale_holds_only_exactly():
+    """Φ = x (the line x = 0) has no length in it: x0 = 1e-9 is off it (it passed the
+    absolute 1e-9), moved onto it."""
+    sim = _line().simulate(t=(0, 0.1), q0=[1e-9, 2.0], n_output=2)
+    assert sim.q[0, 0] == 0.0 and len(sim.notes) == 1
+
+
+@pytest.mark.parametrize("v0, moved", [(3e-9 * (1 - 1e-6), False), (3e-9 * (1 + 1e-6), True)])
 def test_rates_on_the_constraints_boundary(v0, moved):
+    """A q' + a = x': its terms with every rate at the largest |q'_j| (y' = 3) are 3: the
+    boundary is |x'| = 3e-9."""
     sim = _line().simulate(t=(0, 0.1), q0=[0.0, 2.0], u0=[v0, 3.0], n_output=2,
                            project=False)
     assert (sim.u[0, 0] == 0.0 and "`u0`" in sim.notes[0]) if moved else \

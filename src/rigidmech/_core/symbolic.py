@@ -45,6 +45,7 @@ from .probes import (
     _probe_values,
     sampled_zero_decision,
 )
+from .rules import magnitude
 
 __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly_zero",
            "complex_values",
@@ -379,7 +380,7 @@ def nonzero_somewhere(expr, skip=()) -> bool:
 _SEEDS = (0.3711, 0.6173)
 
 
-def vanishes(expr, skip=()) -> bool:
+def vanishes(expr, skip=(), scale=None) -> bool:
     """Whether the scalar ``expr`` vanishes for every value of its symbols (but those in
     ``skip``), to the rounding of the float constants it carries.
 
@@ -395,6 +396,12 @@ def vanishes(expr, skip=()) -> bool:
       ``6.9e-18 q'``) vanishes when, at two sample points (:func:`nonzero_somewhere`'s), its
       value is at most ``SAMPLE_ZERO`` times the largest magnitude met while evaluating it
       (its constants, its symbols' values, its intermediate results).
+    * With ``scale`` (expressions of the same kind of quantity: the other components of a
+      motion, the positions of the points of a condition), that reference is instead the
+      magnitude of the terms (:func:`~rigidmech._core.rules.magnitude`) of ``expr`` and of the
+      ``scale`` expressions at the same sample point: the verdict is then relative to the
+      size of the quantities, not to the sample values of the symbols (about 1), so that a
+      mechanism of size 1e-10 keeps a condition of size 1e-10. The boundary vanishes.
 
     Examples
     --------
@@ -402,6 +409,8 @@ def vanishes(expr, skip=()) -> bool:
     >>> vanishes(sp.sin(q)**2 + sp.cos(q)**2 - 1), vanishes(sp.Rational(1, 10**12) * q)
     (True, False)
     >>> vanishes(6.9e-18 * q), vanishes(1e-6 * q)
+    (True, False)
+    >>> vanishes(1e-10 * sp.cos(q)), vanishes(1e-10 * sp.cos(q), scale=[2e-10 * sp.sin(q)])
     (True, False)
     """
     expr = sp.sympify(expr)
@@ -414,17 +423,19 @@ def vanishes(expr, skip=()) -> bool:
         if decided is not None:
             return decided
         return sp.simplify(expr) == 0
-    atoms = _sample_atoms(expr, skip)
+    refs = None if scale is None else [magnitude(e) for e in (expr, *scale)]
+    atoms = _sample_atoms(expr if refs is None else sp.Tuple(*refs), skip)
     for seed in _SEEDS:
         values, memo = _sample_values(atoms, seed), {}
         try:
             value = _complex_value(expr, values, memo)
+            size = (max(abs(v) for v in memo.values()) if refs is None else
+                    sum(abs(_complex_value(r, values, memo)) for r in refs))
         except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
             # a function this evaluation does not know: algebra decides, with the floats
             # made exact (their rounding then cancels only if it is an exact identity)
             return sp.simplify(sp.nsimplify(expr, rational=True)) == 0
-        scale = max(abs(v) for v in memo.values())
-        if not (math.isfinite(scale) and abs(value) <= SAMPLE_ZERO * scale):
+        if not (math.isfinite(size) and abs(value) <= SAMPLE_ZERO * size):
             return False
     return True
 

@@ -266,6 +266,25 @@ class Spring(Action):
     on_b = property(lambda self: self._on_b,
                     doc="The solid that carries b (None: a point fixed in the reference).")
 
+    @property
+    def ends(self) -> tuple:
+        """The points (a, b) the spring joins.
+
+        Examples
+        --------
+        >>> from rigidmech import Frame
+        >>> from rigidmech.kinematics import Solid
+        >>> R0 = Frame("R0"); B = R0.point("B", 1, 0, 0)
+        >>> [p.name for p in Spring(1, 0, a=R0.origin, b=B, on_b=Solid("S", frame=R0)).ends]
+        ['O_R0', 'B']
+        """
+        return (self._a, self._b)
+
+    @property
+    def free_length(self):
+        """The free length l0."""
+        return self._l0
+
     def _length(self):
         return (self._b - self._a).magnitude()
 

@@ -75,7 +75,8 @@ class Damper(Action):
     Ends that coincide at all times have v_B - v_A = 0 along every direction: l' = 0, no force
     and no dissipation (the 0/0 of AB / l is not formed). Ends that coincide at an instant
     only leave the direction of the force undefined there: a run reaching that instant stops
-    with "the right-hand side is not finite at t = ...; state y = ...".
+    with "the right-hand side is not finite at t = ...", naming the damper whose ends meet and
+    the instant (a spring of free length l0 > 0 likewise).
 
     Examples
     --------
@@ -122,6 +123,20 @@ class Damper(Action):
     def damping(self):
         """The coefficient c."""
         return self._c
+
+    @property
+    def ends(self) -> tuple:
+        """The points (a, b) the damper joins.
+
+        Examples
+        --------
+        >>> import rigidmech as rm
+        >>> R0 = rm.Frame("R0"); B = R0.point("B", 1, 0, 0)
+        >>> b = rm.Body("b", frame=R0.translated("R1", B), mass=1)
+        >>> [p.name for p in Damper(2, a=R0.origin, b=B, on_b=b).ends]
+        ['O_R0', 'B']
+        """
+        return (self._a, self._b)
 
     def _ab_and_rate(self):
         ab = self._b - self._a

@@ -216,7 +216,8 @@ class Joint:
         """Raise ``ConnectionError_`` if ``motion``, the kinematic torsor of the child relative
         to the parent, is not one this joint allows: a component the joint blocks must vanish
         (:func:`~rigidmech._core.symbolic.vanishes`: exactly for exact expressions, to the
-        rounding of their float constants otherwise, 1e-9 of the largest magnitude in it).
+        rounding of their float constants otherwise: at most 1e-9 of the magnitude of the
+        terms of the components of its kind, rotation rates or velocities).
 
         Examples
         --------
@@ -235,8 +236,10 @@ class Joint:
             raise ArgumentTypeError(f"`motion` must be a Torsor; got {type(motion).__name__}.")
         V = motion.at(self._at)
         comps = self._motion_components(V)
+        # each blocked component relative to the components of its kind (rotation rates, or
+        # velocities at the joint's point): the same verdict in any unit of length
         bad = [(n, c) for n, c in self._motion_residuals(comps)
-               if not vanishes(c)]
+               if not vanishes(c, scale=comps[:3] if n.startswith("w") else comps[3:])]
         if bad:
             raise ConnectionError_(
                 f"{type(self).__name__} at {self._at.name}: the relative motion is not "

@@ -78,6 +78,8 @@ def save(sim, path, units):
             "message": sim.message, "method": sim._method, "elapsed": sim.elapsed,
             "t_stop": sim._t_stop,
             "notes": list(sim.notes)}
+    if sim._given is not None:  # the initial state as given (before an assembly moved it)
+        meta["q0_given"], meta["u0_given"] = (g.tolist() for g in sim._given)
     if ext == ".npz":
         np.savez(text, t=sim.t, q=sim.q, u=sim.u, meta=np.array(json.dumps(meta)),
                  **{f"t_events_{i}": np.asarray(te) for i, te in enumerate(sim._t_events)},
@@ -125,10 +127,12 @@ def load(cls, path):
         events, states = [], None
     else:
         raise ArgumentError(f"`path` must end in .npz or .csv; got {text!r}.")
+    given = ((meta["q0_given"], meta["u0_given"]) if meta.get("q0_given") is not None
+             else None)  # files written before q0_given was saved have none
     return cls(None, None, meta["parameters"], meta.get("elapsed", 0.0), meta["notes"],
                status=meta["status"], message=meta["message"], names=meta["names"], t=t,
                y=y, t_events=events, method=meta.get("method"), t_stop=meta.get("t_stop"),
-               y_events=states)
+               y_events=states, given=given)
 
 
 #: The kinds of figure of :meth:`Simulation.plot <rigidmech.dynamics.Simulation.plot>`.

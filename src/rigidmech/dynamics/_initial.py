@@ -2,7 +2,8 @@
 on the constraints, else assembled on them, the coordinates the user chose kept.
 
 A state (q0, u0) is **on the constraints** when every closure condition |Φ_i(q0, t0)| and every
-velocity condition |A_i q0' + a_i| is at most :data:`ON_CONSTRAINTS` (the tolerance
+velocity condition |A_i q0' + a_i| is at most :data:`ON_CONSTRAINTS` (1e-9) of the magnitude
+of its terms (:func:`rigidmech._core.rules.on_constraints`, the rule
 :func:`~rigidmech.dynamics.assembly.assemble` reaches): it is then used exactly as given.
 Otherwise the **dependent** coordinates are moved onto the constraints by
 :func:`~rigidmech.dynamics.assembly.assemble` (Newton's method from the values given, so they
@@ -39,11 +40,13 @@ import inspect
 import numpy as np
 
 from .._core.errors import ArgumentError, ConnectionError_
-from ._run import closure_functions
-from .assembly import ON_CONSTRAINTS, assemble
+from .._core.rules import ON_CONSTRAINTS, numeric_rank, rates_for_scale
+from .._core.rules import on_constraints as holds
+from ._run import closure_functions, closure_scales
+from .assembly import assemble
 
-# ON_CONSTRAINTS, the largest |Φ| and |A q' + a| of a state on the constraints, is the one
-# of assembly (what ``assemble`` reaches and ``multipliers`` requires): one rule, one place
+# ON_CONSTRAINTS and its rule (rigidmech._core.rules.on_constraints) are those of assembly
+# (what ``assemble`` reaches and ``multipliers`` requires): one rule, one place
 __all__ = ["ON_CONSTRAINTS", "on_constraints"]
 
 
@@ -57,6 +60,17 @@ def _residuals(eqs, t0, q0, u0, consts, inputs):
     return phi, A, vel
 
 
+def _off_constraints(eqs, t0, q0, u0, consts, inputs, phi, A, vel):
+    """(largest |Φ| or None, largest |A q' + a| or None): None where every condition holds
+    by the rule :func:`~rigidmech._core.rules.on_constraints` (its terms' magnitudes)."""
+    phi_s, a_s = closure_scales(eqs)
+    w = [v(t0) if callable(v) else v for v in inputs]
+    sq = (np.zeros(0) if phi_s is None else
+          np.asarray(phi_s(t0, q0, *consts, *w), dtype=float).reshape(-1))
+    su = np.asarray(a_s(t0, q0, rates_for_scale(u0), *consts, *w), float).reshape(-1)
+    return _off(phi, sq), _off(vel, su)
+
+
 def _generic_jacobian(eqs, t0, consts, inputs):
     """A at a generic configuration (random coordinates in [0.3, 1.3], a fixed seed as
     :mod:`rigidmech.dynamics.reduced` takes): its structural rank."""
@@ -64,22 +78,23 @@ def _generic_jacobian(eqs, t0, consts, inputs):
     return _residuals(eqs, t0, q, np.zeros_like(q), consts, inputs)[1]
 
 
-def _off(r):
-    """The largest residual if beyond :data:`ON_CONSTRAINTS` (or not finite), else None."""
-    size = float(np.max(np.abs(r))) if r.size else 0.0
-    return None if size <= ON_CONSTRAINTS else size
+def _off(r, scales):
+    """The largest residual if one is off by the rule of the module notes, else None."""
+    if not r.size or np.all(holds(r, scales)):
+        return None
+    return float(np.max(np.abs(r)))
 
 
 def default_independent(names, A, named):
     """The independent coordinates by the rule of the module notes."""
     order = [k for k in reversed(range(len(names))) if names[k] not in named]
     order += [k for k in reversed(range(len(names))) if names[k] in named]
-    rank = np.linalg.matrix_rank(A) if A.size else 0
+    rank = numeric_rank(A)
     dependent = []
     for k in order:
         if len(dependent) == rank:
             break
-        if np.linalg.matrix_rank(A[:, [*dependent, k]]) == len(dependent) + 1:
+        if numeric_rank(A[:, [*dependent, k]]) == len(dependent) + 1:
             dependent.append(k)
     return [nm for k, nm in enumerate(names) if k not in dependent]
 
@@ -103,7 +118,7 @@ def on_constraints(eqs, t0, q0, u0, *, independent, named, values):
         return q0, u0, ()
     consts, inputs, _ = eqs._values(values)
     phi, A, vel = _residuals(eqs, t0, q0, u0, consts, inputs)
-    off_q, off_u = _off(phi), _off(vel)
+    off_q, off_u = _off_constraints(eqs, t0, q0, u0, consts, inputs, phi, A, vel)
     if off_q is None and off_u is None:
         return q0, u0, ()
     names = list(eqs.names)
@@ -136,9 +151,10 @@ def on_constraints(eqs, t0, q0, u0, *, independent, named, values):
     notes = []
     if off_q is not None:
         notes.append(
-            f"`q0` was off the closure conditions (largest residual {off_q:.3g} > "
-            f"{ON_CONSTRAINTS:g}): the dependent coordinates were moved onto them by Newton's "
-            f"method from the values given ({_moves(names, q0, q1, keep)}), kept: "
+            f"`q0` was off the closure conditions (largest residual {off_q:.3g}, more than "
+            f"{ON_CONSTRAINTS:g} of the magnitude of its terms): the dependent coordinates "
+            f"were moved onto them by Newton's method from the values given "
+            f"({_moves(names, q0, q1, keep)}), kept: "
             f"{', '.join(keep)} (`independent=` chooses them); the dependent rates follow "
             "from the velocity conditions. The values given are in q0_given.")
     if off_q is not None or off_u is not None:

@@ -18,10 +18,12 @@ import sympy as sp
 from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
+from .._core.rules import magnitude
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..ode._fixed import step_count
 from ..ode._progress import for_run
 from ..vectors import t as _t
+from ._stops import meeting_ends
 from .simulation import Event, Simulation
 
 __all__ = ["Reduced", "canonical_method", "run"]
@@ -149,6 +151,28 @@ def closure_functions(eqs):
                                 name="closure") if hol else None,
             compile_expressions(sp.ImmutableMatrix(m, n, A), args_q, name="constraint_jacobian"),
             compile_expressions(sp.ImmutableMatrix(m, 1, vel), args_u, name="velocity_residual"))
+    return eqs._cache[key]
+
+
+def closure_scales(eqs):
+    """(Φ scales(t, q, *params, *inputs), velocity scales(t, q, u, ...)): the magnitudes of
+    the terms of the holonomic rows Φ and of the velocity rows A q' + a (see
+    :func:`~rigidmech._core.rules.magnitude`), compiled once (cached): the scales of the rule
+    :func:`~rigidmech._core.rules.on_constraints`."""
+    c = eqs.constraints
+    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    key = "closure_scales"
+    if key not in eqs._cache:
+        hol = [i for i, p in enumerate(c.position) if p is not None]
+        args_q = [_t, list(q_s), *eqs._params, *w_s]
+        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
+        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+        vel = xreplace_shared(list(c.velocity), rule)
+        eqs._cache[key] = (
+            compile_expressions(sp.ImmutableMatrix(len(hol), 1, [magnitude(e) for e in phi]),
+                                args_q, name="closure_scales") if hol else None,
+            compile_expressions(sp.ImmutableMatrix(len(vel), 1, [magnitude(e) for e in vel]),
+                                args_u, name="velocity_scales"))
     return eqs._cache[key]
 
 
@@ -337,6 +361,35 @@ def canonical_method(method):
     return _registry.get(method).name
 
 
+def _keeps_nothing(method):
+    """Whether `method` is a user's (registered from outside :mod:`rigidmech.ode`), whose
+    result may be lost to Ctrl-C: every method of rigidmech.ode keeps its steps."""
+    from ..ode import _registry
+
+    return not _registry.get(method).function.__module__.startswith("rigidmech.ode")
+
+
+class _Reached:
+    """The right-hand side of a user's method, keeping the last state (t, y) it was evaluated
+    at to completion: what a method that keeps no partial result reached when Ctrl-C stops
+    it (for explicit Euler, its last step; for a multistage method, a stage of the step)."""
+
+    __slots__ = ("_rhs", "last")
+
+    def __init__(self, fun):
+        self._rhs, self.last = fun, (None, None)
+
+    def __call__(self, t, *y):
+        out = self._rhs(t, *y)
+        state = np.concatenate([np.asarray(x, dtype=float).reshape(-1) for x in y])
+        if np.all(np.isfinite(state)):  # (t, y), or (t, q, q') for second-order methods
+            self.last = (float(t), state)
+        return out
+
+    def __getattr__(self, name):  # the attributes of the compiled right-hand side
+        return getattr(self._rhs, name)
+
+
 def _takes(method, option):
     from ..ode import _registry
 
@@ -398,24 +451,29 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
                                            None if reduced is None else reduced.full)
     full = (lambda _t, y: y) if reduced is None else reduced.full
     fun.trouble = []  # an error of the right-hand side: kept there, nan returned
+    solved = _Reached(fun) if _keeps_nothing(method) else fun
     start = time.perf_counter()
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             if chunks is None:
-                res = ode.solve(fun, (t0, t1), y0, method=method, **options)
+                res = ode.solve(solved, (t0, t1), y0, method=method, **options)
             else:
                 res = _in_chunks(fun, t0, t1, y0, method, *chunks, progress=prog)
                 stride = 1
-    except KeyboardInterrupt:  # a method that keeps no partial result: the initial state
+    except KeyboardInterrupt:  # a method that keeps no partial result: what it reached
         elapsed = time.perf_counter() - start
-        t_at = prog.t if prog is not None else t0
+        t_at, y_at = solved.last if isinstance(solved, _Reached) else (None, None)
+        ts, ys = [t0], [np.asarray(y0, dtype=float)]
+        if t_at is not None and t_at != t0:
+            ts.append(t_at)
+            ys.append(y_at)
+        kept = (f"the initial state and the last state it evaluated the right-hand side at "
+                f"(t = {t_at!r}) are kept" if len(ts) > 1 else "only the initial state is kept")
         return Simulation(eqs, None, values, elapsed, notes, status="interrupted",
-                          message=f"The integration was interrupted (Ctrl-C) after t = "
-                          f"{t_at!r}; method {method!r} keeps no partial result: only the "
-                          "initial state is kept.", t=[t0],
-                          y=full(np.array([t0]), np.asarray(y0, dtype=float)[:, None]),
-                          t_events=[], y_events=[], method=method,
-                          t_stop=t0, given=given)
+                          message=f"The integration was interrupted (Ctrl-C); method "
+                          f"{method!r} keeps no partial result: {kept}.", t=ts,
+                          y=full(np.array(ts), np.stack(ys, axis=1)),
+                          t_events=[], y_events=[], method=method, t_stop=ts[-1], given=given)
     finally:
         fun.trouble, trouble = None, fun.trouble
         if prog is not None:
@@ -432,6 +490,8 @@ def run(eqs, fun, t, y0, *, method, rtol, atol, step, n_output, t_eval, events, 
     elif res.status == -1:
         message = message + _diagnosis(trouble, res.stats.get("culprit"), eqs.names, second,
                                        None if reduced is None else reduced.rate_names)
+        if reduced is None and res.y_stop is not None and not trouble:
+            message += meeting_ends(eqs, res.t_stop, res.y_stop, values)
     status = None  # from the result (an event function's nan: -1, "failed", named by ode)
     t_out, y_out = res.t, res.y
     if not len(t_out):  # stopped before the first sample: the initial state at least

@@ -21,6 +21,7 @@ import sympy as sp
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ConnectionError_
 from .._core.lazy import lazy_package
+from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints, rates_for_scale
 from ..vectors import t as _t
 
 scipy = lazy_package("scipy")  # lazy: import cost of scipy.linalg (see docs/performance)
@@ -46,9 +47,9 @@ def _by_name(values, coordinates, argument):
     return out
 
 
-# A state is on the constraints when every residual Φ(q, t) and A q' + a is at most this (in
-# the units of the conditions): what assemble reaches, and what multipliers requires.
-ON_CONSTRAINTS = 1e-9
+# A state is on the constraints when every residual Φ(q, t) and A q' + a is at most
+# ON_CONSTRAINTS of the magnitude of its terms (the rule of rigidmech._core.rules): what
+# assemble reaches, what simulate uses as given and what multipliers requires.
 
 
 class Closure:
@@ -91,6 +92,12 @@ class Closure:
         self._f = compile_expressions(
             (sp.Matrix(len(phi), 1, phi), sp.Matrix(A), sp.Matrix(a)),
             [_t, q_s, *self.consts], name="closure")
+        # the magnitudes of the terms of Φ and of a: the scales of the rule on_constraints
+        vel = [c.xreplace(rule) for c in constraints.velocity]
+        self._scales = compile_expressions(
+            (sp.Matrix(len(phi), 1, [magnitude(e) for e in phi]),
+             sp.Matrix(len(vel), 1, [magnitude(e) for e in vel])),
+            [_t, q_s, u_s, *self.consts], name="closure_scales")
 
     def constants(self, params):
         """The values of the constants, in order, from ``params`` by name."""
@@ -106,14 +113,24 @@ class Closure:
         return (np.asarray(r, float).reshape(-1), np.asarray(J, float).reshape(self.m, self.n),
                 np.asarray(a0, float).reshape(-1))
 
+    def scales(self, q, u, t, cvals, J=None):
+        """The magnitudes of the terms of Φ(q, t) and of A q' + a, the latter with every rate
+        at the largest |q'_j| (:func:`~rigidmech._core.rules.rates_for_scale`): the scales of
+        the rule :func:`~rigidmech._core.rules.on_constraints`."""
+        sq, su = self._scales(t, q, rates_for_scale(u), *cvals)
+        return np.asarray(sq, float).reshape(-1), np.asarray(su, float).reshape(-1)
+
     def off(self, q, u, t, cvals):
-        """Labels and residuals of the conditions (q, u) violates by more than
-        ON_CONSTRAINTS at t: the holonomic ones, then the velocity ones."""
+        """Labels and residuals of the conditions (q, u) violates at t by the rule
+        :func:`~rigidmech._core.rules.on_constraints` (more than ON_CONSTRAINTS of the
+        magnitude of their terms): the holonomic ones, then the velocity ones."""
         r, J, a0 = self.evaluate(q, t, cvals)
-        out = [(self.labels[i], float(x)) for i, x in zip(self.holo, r, strict=True)
-               if not abs(x) <= ON_CONSTRAINTS]
-        out += [(f"{self.labels[i]} (rate)", float(x)) for i, x in enumerate(J @ u + a0)
-                if not abs(x) <= ON_CONSTRAINTS]
+        sq, su = self.scales(q, u, t, cvals, J)
+        v = J @ u + a0
+        out = [(self.labels[i], float(x)) for i, x, ok
+               in zip(self.holo, r, on_constraints(r, sq), strict=True) if not ok]
+        out += [(f"{self.labels[i]} (rate)", float(x)) for i, (x, ok)
+                in enumerate(zip(v, on_constraints(v, su), strict=True)) if not ok]
         return out
 
 
@@ -210,7 +227,7 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None, 
         return closure.evaluate(qv, time, cvals)
 
     _, J, _ = evaluate(q)
-    rank = np.linalg.matrix_rank(J) if m else 0
+    rank = numeric_rank(J) if m else 0
     if independent is None:
         _, _, piv = scipy.linalg.qr(J, pivoting=True)
         dependent = sorted(piv[:rank].tolist())
@@ -223,16 +240,17 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None, 
                 f"{names}.")
         dependent = [i for i, nm in enumerate(names) if nm not in chosen]
     # Newton on the holonomic rows for the dependent parameters
-    for _ in range(max_iterations):
+    zero_u = np.zeros(n)
+    for _ in range(max_iterations):  # until |Φ| < tol of the magnitude of its terms
         r, J, _ = evaluate(q)
-        if not len(r) or np.max(np.abs(r)) < tol:
+        if not len(r) or np.all(np.abs(r) < tol * closure.scales(q, zero_u, time, cvals, J)[0]):
             break
         step, *_ = np.linalg.lstsq(J[holo][:, dependent], -r, rcond=None)
         q[dependent] += step
     r, J, a0 = evaluate(q)
-    if len(r) and not (np.all(np.isfinite(r)) and np.max(np.abs(r)) <= ON_CONSTRAINTS):
-        bad = [constraints.labels[i] for i, x in zip(holo, r, strict=True)
-               if abs(x) > ON_CONSTRAINTS]
+    held = on_constraints(r, closure.scales(q, zero_u, time, cvals, J)[0])
+    if len(r) and not np.all(held):
+        bad = [constraints.labels[i] for i, ok in zip(holo, held, strict=True) if not ok]
         raise ConnectionError_(
             f"the loop cannot be closed near the given values: the closure conditions "
             f"{bad} keep residuals {np.abs(r).max():.3g} after {max_iterations} Newton steps "
@@ -243,18 +261,18 @@ def assemble(constraints, values, *, independent=None, rates=None, params=None, 
         u[names.index(name)] = v
     free = [i for i in range(n) if i not in dependent]
     JD = J[:, dependent]
-    # the rank rule of the choice of the dependent set above (numpy's default tolerance)
-    if dependent and np.linalg.matrix_rank(JD) < len(dependent):
+    # the rank rule of the choice of the dependent set above (rigidmech._core.rules)
+    if dependent and numeric_rank(JD) < len(dependent):
         raise ConnectionError_(
             f"the dependent rates {[names[i] for i in dependent]} are not determined by the "
             f"constraints at this configuration (their Jacobian has rank "
-            f"{np.linalg.matrix_rank(JD)} < {len(dependent)}; a singular position for this "
+            f"{numeric_rank(JD)} < {len(dependent)}; a singular position for this "
             f"choice): choose other independent parameters than "
             f"{[names[i] for i in free]}, or leave `independent` to the default.")
     rhs = -(a0 + J[:, free] @ u[free])
     sol, *_ = np.linalg.lstsq(JD, rhs, rcond=None)
     u[dependent] = sol
-    if m and np.max(np.abs(J @ u + a0)) > ON_CONSTRAINTS:
+    if m and not np.all(on_constraints(J @ u + a0, closure.scales(q, u, time, cvals, J)[1])):
         raise ConnectionError_(
             "the velocity conditions cannot all be satisfied with the given independent rates: "
             f"choose other independent parameters than {[names[i] for i in free]}.")

@@ -202,8 +202,9 @@ class LinkedParameters:
         the multiplier of the condition along e is the component along e of the action of
         ``parent`` on ``child`` at the point of the joint. The state must be on the
         constraints (:meth:`assemble`, at the same t): every residual Φ and A q' + a at most
-        1e-9 (the tolerance assemble reaches), otherwise it is refused (the values would
-        include Baumgarte's correction).
+        1e-9 of the magnitude of its terms (the rule assemble reaches,
+        :func:`rigidmech._core.rules.on_constraints`), otherwise it is refused (the values
+        would include Baumgarte's correction).
 
         ``t`` is required when the equations or the constraints depend on the time
         explicitly (a driven joint) or an input F(t) is given as a function of t, refused as
@@ -234,7 +235,8 @@ class LinkedParameters:
             raise ArgumentError(
                 f"(`q`, `u`) is not on the constraints at t = {t}: the conditions "
                 f"{', '.join(f'{lab} = {x:.3g}' for lab, x in off)} exceed {ON_CONSTRAINTS} "
-                "(the multipliers there would carry Baumgarte's correction). Pass a state "
+                "of the magnitude of their terms (the multipliers there would carry "
+                "Baumgarte's correction). Pass a state "
                 "from System.assemble or from a simulation that keeps the constraints.")
         full = eqs._solver().full
         out = full(t, q_arr, u_arr, *values, *inputs)

@@ -33,6 +33,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
+from .._core.rules import numeric_rank
 from .._core.symbolic import complex_values, xreplace_shared
 from ..vectors import t as _t
 
@@ -68,7 +69,7 @@ def _choose_dependent(eqs, A, symbols):
     chosen = []
     for j in range(An.shape[1]):
         cols = An[:, chosen + [j]]
-        if np.linalg.matrix_rank(cols, tol=1e-9 * max(1.0, np.abs(An).max())) == len(chosen) + 1:
+        if numeric_rank(cols) == len(chosen) + 1:
             chosen.append(j)
         if len(chosen) == m:
             return chosen
@@ -333,7 +334,7 @@ def split_coordinates(eqs, independent, A=None):
         dep = [j for j in range(n) if j not in ind]
     AD = A[:, dep]
     ADn = _generic_jacobian(AD, sorted(AD.free_symbols, key=str))
-    if np.linalg.matrix_rank(ADn, tol=1e-9 * max(1.0, np.abs(ADn).max())) < m:
+    if numeric_rank(ADn) < m:
         names = [eqs.names[j] for j in dep]
         raise ArgumentError(
             f"the constraints cannot be solved for the rates of {names} (their Jacobian "

@@ -200,7 +200,8 @@ class Simulation:
     @property
     def q0_given(self):
         """The initial coordinates as given to ``simulate`` (an array in the order of
-        :attr:`names`; None for a simulation loaded from a file). The run starts from
+        :attr:`names`; written by :meth:`save` and read back by :meth:`load`, None for
+        a file written before it was saved). The run starts from
         ``q[:, 0]``, which differs when the values given were off the constraints and were
         assembled on them (a note says what moved; see :meth:`EquationsOfMotion.simulate`'s
         ``independent``).

@@ -10,7 +10,22 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_, NumericalError
+from .._core.rules import ON_CONSTRAINTS, magnitude, numeric_rank, on_constraints
 from ..vectors import t as time_symbol
+
+
+def speeds_within(model, vals, rows, y, tol, before=None):
+    """For each row, whether its velocity is at most ``tol`` of the magnitude of its terms
+    (:func:`~rigidmech._core.rules.magnitude`) at the evaluated ``vals`` (see
+    :meth:`_Model.speeds_zero`); ``y`` is the state they were evaluated at. ``before``: the
+    values before an impact that led to ``vals`` (its projection leaves the rounding of the
+    velocities it removed: the larger magnitude counts)."""
+    v = np.array([float(vals[r.c]) for r in rows])
+    index = [model._speed_terms + (r.c - 2) // 4 for r in rows]
+    scale = np.array([float(vals[i]) for i in index])
+    if before is not None:
+        scale = np.maximum(scale, [float(before[i]) for i in index])
+    return np.abs(v) <= tol * scale
 
 # the parts of a contact's state for its resisting couples: moving one way or the other, or
 # held (the couple is then a multiplier bounded by coefficient * N)
@@ -177,7 +192,8 @@ class _Model:
 
     def _compile(self, exprs, rows, q_sym, u_sym, params, gaps):
         flat = [*exprs, *[e for J, h, c, p in rows for e in (sp.Matrix([J]), h, c, p)],
-                *gaps, self._forcing_terms]
+                *gaps, self._forcing_terms, *(magnitude(g) for g in gaps),
+                *(magnitude(c) for _, _, c, _ in rows)]
         free = set()
         for e in flat:
             free |= sp.sympify(e).free_symbols
@@ -204,8 +220,24 @@ class _Model:
         # indices into the evaluated list [M, f, J_0, h_0, c_0, p_0, J_1, ...]
         self._rows = [_Row(*(2 + 4 * i + j for j in range(4))) for i in range(len(rows))]
         self._terms = 2 + 4 * len(rows) + len(gaps)
+        self._gap_terms = self._terms + 1 - (2 + 4 * len(rows))  # gap index -> its terms
+        self._speed_terms = self._terms + 1 + len(gaps)     # + row number: its c's terms
         self._n = n
         self._memo = (None, None)
+
+    def closed(self, vals, contact) -> bool:
+        """Whether ``contact`` (with a gap) is closed at the evaluated ``vals``: its gap is
+        at most 0 or zero by the rule on the constraints (at most ON_CONSTRAINTS of the
+        magnitude of its terms, :func:`~rigidmech._core.rules.on_constraints`)."""
+        g = float(vals[contact.gap])
+        return g <= 0 or bool(on_constraints([g], [float(vals[contact.gap + self._gap_terms])])[0])
+
+    def speeds_zero(self, vals, rows, y, before=None) -> bool:
+        """Whether the velocities of ``rows`` (a sliding velocity, a rolling or spinning
+        rate, a normal velocity) are zero at the state ``y``: each at most ON_CONSTRAINTS of
+        the magnitude of its terms, sum_j |J_j q'_j| + |the rest| (the rule on the
+        velocity constraints, :func:`~rigidmech._core.rules.on_constraints`)."""
+        return bool(np.all(speeds_within(self, vals, rows, y, ON_CONSTRAINTS, before)))
 
     def values(self, t, y):
         key = (float(t), np.asarray(y, dtype=float).tobytes())
@@ -331,7 +363,7 @@ class _Model:
         K[:n, n:] = -np.array([g for _, _, _, g in rows]).T
         K[n:, :n] = A
         rhs = np.concatenate([f, [self.bias(vals, r) for _, _, r, _ in rows]])
-        if np.linalg.matrix_rank(A, tol=1e-10 * max(1.0, float(np.abs(A).max()))) < m:
+        if numeric_rank(A) < m:  # the one rank rule (rigidmech._core.rules)
             raise NumericalError(
                 f"the regime {self.regime_name(states)} is hyperstatic at t = {t}: its contact "
                 "conditions are not independent, so their multipliers (the contact forces) "

@@ -10,8 +10,13 @@ import itertools
 import numpy as np
 
 from .._core.errors import ArgumentError
-from ._contact_model import PARTS, _compose, _part, _slide
+from ._contact_model import PARTS, _compose, _part, _slide, speeds_within
 from .phased import Guard, Regime
+
+#: relative size of a sliding velocity that counts as zero at an event located on one of its
+#: components ("stops slipping" of a two-dimensional slip): the event's location leaves
+#: about the solver's tolerance of the terms of the other component
+STOPPED_AT_EVENT = 1e-7
 
 #: relative slack of the cone: |T| <= f_s N (1 + CONE_SLACK) holds (the rounding of the
 #: multipliers at a switch where the friction needed is exactly the limit)
@@ -84,10 +89,13 @@ class _Rules:
         return self._with(states, k, new)
 
     def couple(self, t, y, states, k, kind):
-        """(N, M) of contact k in the regime ``states``, M its couple ``kind``."""
+        """(N, M) of contact k in the regime ``states``, M its couple ``kind``; N as the
+        lift-off rule sees it (:func:`lift_margin`), which the limit coefficient * N uses,
+        as the friction limits do (:meth:`margins`); M from the raw multipliers."""
         _, lam, layout = self.m.solve(t, y, states)
         N = self.m.contact_forces(t, y, states, lam, layout)[k][0]
-        return N, self.m.couple(t, y, states, lam, layout, k, N, kind)
+        scale = self.m.normal_scales(t, y, states)[k]
+        return lift_margin(N, scale), self.m.couple(t, y, states, lam, layout, k, N, kind)
 
     def after_couple_stop(self, t, y, states, k, kind):
         """The states where the rate of the couple ``kind`` of contact k (its rolling or
@@ -123,12 +131,14 @@ class _Rules:
                          self.after_couple_stop(t, y, states, k, kind)),
                      reset=lambda t, y: m.project(t, y, self._with_part(states, k, kind, held)))
 
-    def couple_states(self, t, y, states, k):
+    def couple_states(self, t, y, states, k, before=None):
         """The parts of the couples of contact k from their rates (at a start or a landing):
-        moving if the rate is not zero, else held if coefficient * N holds it."""
+        moving if the rate is not zero, else held if coefficient * N holds it. ``before``:
+        the values before the landing's impact (see :func:`speeds_within`)."""
         for kind, (row, _) in self.m.contacts[k].couples.items():
-            w = float(self.m.values(t, y)[row.c])
-            if abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+            vals = self.m.values(t, y)
+            w = float(vals[row.c])
+            if not self.m.speeds_zero(vals, [row], y, before):
                 states = self._with_part(states, k, kind, PARTS[kind][0 if w > 0 else 1])
             else:
                 states = self.after_couple_stop(t, y, states, k, kind)
@@ -237,10 +247,9 @@ class _Rules:
         def along(t, y):
             return float(c.sliding(m.values(t, y)) @ self.directions[k])
 
-        def stopped(t, y):
-            vs = c.sliding(m.values(t, y))
-            scale = float(np.linalg.norm(y[m.n:])) + 1e-300
-            return float(np.linalg.norm(vs)) <= 1e-7 * scale
+        def stopped(t, y):  # located by the event, to its accuracy: STOPPED_AT_EVENT
+            return bool(np.all(speeds_within(m, m.values(t, y), c.tangents, y,
+                                             STOPPED_AT_EVENT)))
 
         def target(t, y):
             if stopped(t, y):
@@ -266,21 +275,26 @@ class _Rules:
             return float(m.values(t, y)[c.gap])
 
         def target(t, y):
-            return m.regime_name(self.closing_state(t, m.project(t, y, impact), states, k))
+            before = np.array(m.values(t, y), dtype=object)
+            return m.regime_name(self.closing_state(t, m.project(t, y, impact), states, k,
+                                                    before))
 
         def reset(t, y):
+            before = np.array(m.values(t, y), dtype=object)
             after = m.project(t, y, impact)
-            return m.project(t, after, self.closing_state(t, after, states, k))
+            return m.project(t, after, self.closing_state(t, after, states, k, before))
 
         return Guard(f"{c.name} lands", gap, target=target, direction=-1, reset=reset)
 
-    def closing_state(self, t, y, states, k):
-        """The states as contact k closes at (t, y) (normal velocity zero)."""
+    def closing_state(self, t, y, states, k, before=None):
+        """The states as contact k closes at (t, y) (normal velocity zero); ``before``: the
+        values before the impact that closed it (see :func:`speeds_within`)."""
         c = self.m.contacts[k]
         if c.law is None:
             return self._with(states, k, "contact")
-        vs = c.sliding(self.m.values(t, y))
-        if float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+        vals = self.m.values(t, y)
+        vs = c.sliding(vals)
+        if not self.m.speeds_zero(vals, c.tangents, y, before):
             if len(c.tangents) == 1:
                 out = self._with(states, k, "slip+" if vs[0] > 0 else "slip-")
             else:
@@ -288,17 +302,18 @@ class _Rules:
                 out = self._with(states, k, "slip")
         else:
             out = self.after_stop(t, y, states, k)
-        return self.couple_states(t, y, out, k) if c.couples else out
+        return self.couple_states(t, y, out, k, before) if c.couples else out
 
     def start(self, t, y):
         states = []
         for k, c in enumerate(self.m.contacts):
-            vs = c.sliding(self.m.values(t, y))
-            if c.gap is not None and self.m.values(t, y)[c.gap] > 1e-12:
+            vals = self.m.values(t, y)
+            vs = c.sliding(vals)
+            if c.gap is not None and not self.m.closed(vals, c):
                 states.append("open")
             elif c.law is None:
                 states.append("contact")
-            elif float(np.linalg.norm(vs)) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1):
+            elif not self.m.speeds_zero(vals, c.tangents, y):
                 if len(c.tangents) == 1:
                     states.append("slip+" if vs[0] > 0 else "slip-")
                 else:
@@ -309,8 +324,8 @@ class _Rules:
             if states[-1] != "open":          # the couples: moving or held
                 parts = []
                 for kind, (row, _) in c.couples.items():
-                    w = float(self.m.values(t, y)[row.c])
-                    moving = abs(w) > 1e-12 * (float(np.linalg.norm(y[self.m.n:])) + 1)
+                    w = float(vals[row.c])
+                    moving = not self.m.speeds_zero(vals, [row], y)
                     parts.append(PARTS[kind][(0 if w > 0 else 1) if moving else 2])
                 states[-1] = _compose(states[-1], parts)
         states = tuple(states)

@@ -391,10 +391,10 @@ def contact_motion(system, t_span, q0, u0=None, *, method: str = "dop853",
     y0 = np.concatenate([_state_vector(q0, coords, "q0"), _state_vector(u0, coords, "u0")])
     vals = model.values(span[0], y0)
     for c in model.contacts:
-        if c.gap is not None and float(vals[c.gap]) > 1e-12:
+        if c.gap is not None and not model.closed(vals, c):
             continue                                 # starts open
         vn = float(vals[c.normal.c])
-        if abs(vn) > 1e-9 * (1.0 + float(np.linalg.norm(y0[model.n:]))):
+        if not model.speeds_zero(vals, [c.normal], y0):   # the rule on the constraints
             raise ArgumentError(f"`u0` separates the contact {c.name}: its normal velocity is "
                                 f"{vn:.6g} at t0 (it must be 0).")
     rules = _Rules(model)

@@ -87,12 +87,14 @@ def _gear_rows(link):
                                           (link.first, Torsor(-unit, Vector.zero(), I))])]
 
 
-def _zero(e):
+def _zero(e, scale=None):
     """Whether ``e`` vanishes identically (:func:`~rigidmech._core.symbolic.vanishes`, the
     rule of the joints and the energy balance): a non-zero value at a sample point settles it
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
-    ``simplify`` decides; float constants count to their rounding."""
-    return vanishes(e, skip=(t,))
+    ``simplify`` decides; float constants count to their rounding, relative to the terms of
+    ``scale`` (the quantities of the same kind: the positions of the points, the other
+    components of a velocity or rotation) when given."""
+    return vanishes(e, skip=(t,), scale=scale)
 
 
 def closure_conditions(link, meets=None) -> list:
@@ -181,6 +183,7 @@ def _rows(link, meets):
         I = contact.point
         v = contact.sliding_velocity
         rows = []
+        speeds = [v.dot(d) for d in (*contact.tangents(), contact.normal)]
         for name, tv in zip(("t1", "t2"), contact.tangents(), strict=True):
             # not expanded: the sliding velocity of a contact point built from a normalised
             # direction (the bicycle's front wheel) swells 6x under expand, and every later
@@ -188,14 +191,14 @@ def _rows(link, meets):
             e = v.dot(tv)
             if _EXPAND_CONTACT_ROWS:
                 e = sp.expand(e)
-            if not _zero(e):
+            if not _zero(e, scale=speeds):
                 rows.append((f"{link.label}.{name}", e, None,
                              [(second, Torsor(tv, Vector.zero(), I)),
                               (first, Torsor(-tv, Vector.zero(), I))]))
         if not conn.pivoting:
             n = contact.normal
             e = sp.expand(contact.rotation.dot(n))
-            if not _zero(e):
+            if not _zero(e, scale=[contact.rotation.dot(d) for d in contact.tangents()]):
                 rows.append((f"{link.label}.n", e, None,
                              [(second, Torsor(Vector.zero(), n, I)),
                               (first, Torsor(Vector.zero(), -n, I))]))
@@ -222,12 +225,13 @@ def _rows(link, meets):
         if i < 3:
             if rotation is None:
                 rotation = second.frame.rotation_vector(first.frame)
-            if _zero(sp.expand(rotation.dot(e))):
+            if _zero(sp.expand(rotation.dot(e)), scale=[rotation.dot(d) for d in basis1]):
                 continue  # the frames already block it
             rows.append(_orientation_row(link, i, free, axes2, P2))
             continue
         phi = sp.expand((P2 - P1).dot(e))
-        if _zero(phi):
+        origin = first.frame.root.origin
+        if _zero(phi, scale=[(P1 - origin).dot(e), (P2 - origin).dot(e)]):
             _check_same_point(link, P1, P2, e, _AXES[i - 3])
             continue
         if not phi.has(t):
@@ -265,7 +269,7 @@ def _check_same_point(link, P1, P2, e, axis):
     v2 = second.kinematic_torsor(relative_to=root, at=P2).velocity
     v1 = first.kinematic_torsor(relative_to=root, at=P1).velocity
     slip = sp.expand((v2 - v1).dot(e))
-    if not _zero(slip):
+    if not _zero(slip, scale=[v1.dot(e), v2.dot(e)]):
         conn = link.connection
         raise ConnectionError_(
             f"{type(conn).__name__} at {P1.name} closes a loop between {first.name} and "

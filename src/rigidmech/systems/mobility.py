@@ -42,6 +42,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError
+from .._core.rules import numeric_rank
 from .._core.symbolic import complex_values
 from ..torsors import Torsor
 from ..vectors import Vector
@@ -210,19 +211,8 @@ def _matrix(rows, symbols, numbers):
     return A
 
 
-def numeric_rank(A) -> int:
-    """Rank of a numeric matrix by numpy's singular-value rule (0 for an empty matrix): the
-    one rank rule of the mobility analysis and of the checks on closure conditions.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> numeric_rank(np.array([[1.0, 2.0], [2.0, 4.0]])), numeric_rank(np.zeros((0, 3)))
-    (1, 0)
-    """
-    if A.size == 0:
-        return 0
-    return int(np.linalg.matrix_rank(A))
+# numeric_rank: the one rank rule (rigidmech._core.rules), of the mobility analysis and of
+# every decision on the rank of a constraint Jacobian
 
 
 def analyse(mechanism, plane=None, values=None, *, seed: int = 0) -> Mobility:

@@ -71,6 +71,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError
+from .._core.rules import magnitude, numeric_rank, on_constraints
 from .._core.symbolic import is_identically_zero, xreplace_shared
 from ..dynamics.reduced import plain_constraints, split_coordinates
 from ._jet import values_and_jacobian
@@ -117,11 +118,10 @@ def _holonomic_split(phi_q, dep):
                                           strict=True)}
     num = np.array(phi_q.xreplace(sub).evalf().tolist(), dtype=complex).real
     chosen = []
-    # relative to the size of Phi_q (the rule of _invertible and of the mass check), so that
-    # the decision does not depend on the unit of length
-    tol = 1e-12 * max(np.linalg.norm(num, 2), 1e-300)
+    # the one rank rule (rigidmech._core.rules): relative, so that the decision does not
+    # depend on the unit of length
     for j in dep:
-        if np.linalg.matrix_rank(num[:, chosen + [j]], tol=tol) == len(chosen) + 1:
+        if numeric_rank(num[:, chosen + [j]]) == len(chosen) + 1:
             chosen.append(j)
         if len(chosen) == p:
             return chosen
@@ -133,8 +133,8 @@ def _holonomic_split(phi_q, dep):
 
 def _invertible(X):
     if all(sp.sympify(x).is_number for x in X):
-        s = np.linalg.svd(np.array(X.evalf().tolist(), dtype=complex), compute_uv=False)
-        return s[-1] > 1e-12 * max(s[0], 1e-300)
+        Xn = np.array(X.evalf().tolist(), dtype=complex)
+        return numeric_rank(Xn) == min(Xn.shape)   # the one rank rule
     return not is_identically_zero(X.det())
 
 
@@ -192,20 +192,31 @@ def _reference(eqs, norm, about, velocities, values_of, point, ind, dep):
     return q_star, rates, given, at | dict(zip(u_s, rates, strict=True))
 
 
-def _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind):
+def _holds(value, scale, tol):
+    """A residual on its constraint: by the rule on the constraints (at most ON_CONSTRAINTS
+    of the magnitude of its terms, ``scale``) for numbers, identically otherwise."""
+    value, scale = sp.sympify(value), sp.sympify(scale)
+    if value.is_number and scale.is_number:
+        return bool(on_constraints([abs(complex(value))], [abs(complex(scale))])[0])
+    return _vanishes(value, tol)
+
+
+def _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind, phi):
     names = eqs.names
     q_s = eqs._symbolic()[0]
     about = {names[j]: at[q] for j, q in enumerate(q_s)}
     labels = eqs.constraints.labels
-    bad = [(labels[k], v) for k, v in zip(phi_rows, P.phi, strict=True)
-           if not _vanishes(v, tol)]
+    scales = [magnitude(e).xreplace(at) for e in phi]   # the terms of each Φ at q*
+    bad = [(labels[k], v) for k, v, s in zip(phi_rows, P.phi, scales, strict=True)
+           if not _holds(v, s, tol)]
     if bad:
         raise ArgumentError(
             f"`about` violates the constraints: the residual Φ(q*) = "
             f"{', '.join(f'{lab}: {v}' for lab, v in bad)} is not 0 at q* = {about}. Give "
             "a configuration on the loop (solve its closure for the dependent parameters).")
     wrong = [f"{names[j]}' = {v} (the constraints give {rates[j]})"
-             for j, v in given.items() if not _vanishes(sp.sympify(v) - rates[j], tol)]
+             for j, v in given.items()
+             if not _holds(sp.sympify(v) - rates[j], abs(sp.sympify(v)) + abs(rates[j]), tol)]
     if wrong:
         v = sp.Matrix([given.get(j, rates[j]) for j in range(len(rates))])
         res = list(P.A * (v - sp.Matrix(rates)))
@@ -240,7 +251,7 @@ def linearize_constrained(eqs, about, velocities, w, w_star, extra, *, check, to
     about_named = dict(zip(names, q_star, strict=True))
     vel_named = dict(zip(names, rates, strict=True))
     if check:
-        _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind)
+        _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind, phi)
     AD = P.A[:, dep]
 
     def dep_solve(X):

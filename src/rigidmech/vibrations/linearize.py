@@ -342,7 +342,10 @@ def linearize(eqs, about=None, *, velocities=None, inputs=(), input_values=None,
         numerically found equilibrium satisfies f = 0 to round-off only): ``abs(x) <= tol +
         8 eps sum_j |df_i/dq_j| max(|q_j|, 1)`` passes, the second term being what the
         rounding of q* (of q'* for the rate) leaves in f_i (k sin(pi) = 1.2e-16 k for a
-        stiff pendulum). Symbolic entries must vanish identically.
+        stiff pendulum). Symbolic entries must vanish identically. (For equations with
+        constraints, q* on the closure conditions and the rates given on the velocity
+        conditions are judged by the rule on the constraints, relative to the magnitude of
+        their terms: :func:`rigidmech._core.rules.on_constraints`.)
     simplify : bool, optional
         Simplify the entries of M, C, K, B; by default only up to 4 degrees of freedom
         (``sympy.simplify`` costs more than the linearisation beyond).
