@@ -188,7 +188,7 @@ def constrained_solver(eqs):
     K, F = augmented(eqs)
     full = compile_linear_solve(
         K, F, [_t, list(q_s), list(u_s), *eqs._params, *w_s], symmetric=False,
-        name="accelerations_and_multipliers")
+        name="accelerations_and_multipliers", saddle=len(q_s))
     n = len(q_s)
 
     def checked(*args):

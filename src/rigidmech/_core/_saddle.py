@@ -1,0 +1,149 @@
+"""Private code generation for :mod:`rigidmech._core.compile`: the unrolled, sparse solution of
+one saddle-point system, the augmented equations of a constrained system,
+
+    [[M, A^T], [A, 0]] (x, lam) = (f, b),    M (n x n) symmetric positive definite,
+
+on the single-state path (Python floats), by the range-space (Schur complement) method:
+M = L D L^T, X = M^-1 [f, A^T], S = A M^-1 A^T = L_S D_S L_S^T, S lam = A M^-1 f - b,
+x = M^-1 f - M^-1 A^T lam. Every product with an entry that is zero in the symbolic matrix
+(a mass matrix of bodies on separate branches, a constraint row that involves few
+coordinates) is left out of the generated code, and so is the fill-in it would cause: for
+the seven-body squeezer (n = 7, m = 6) this is a fraction of the 13 x 13 LU of the whole
+matrix, and it needs no numpy array until the result.
+
+Why hand-rolled: LAPACK through scipy or numpy costs several microseconds of call overhead
+per routine for a 13 x 13 system (and the general path's checks, equilibration, LU, the
+condition estimate and the triangular solves, four calls), more than the whole elimination
+in Python floats at these sizes (benchmarks/squeezer.py).
+
+When the fast path is taken: every pivot of the two eliminations (D and D_S, eliminated in
+order without pivoting) is more than 1/:data:`SADDLE_PIVOT_FACTOR` of its diagonal entry
+(M_jj, S_jj), and the result is finite. Otherwise the generated code hands the whole matrix
+to the caller's general path (LU of the equilibrated matrix with its singularity test),
+which solves it or refuses it: a singular configuration is decided there only.
+"""
+
+__all__: list[str] = []
+
+#: The unrolled range-space solve is used when every pivot of the eliminations of M and of
+#: S = A M^-1 A^T is more than 1/SADDLE_PIVOT_FACTOR of its diagonal entry (about 1e-4:
+#: ``pivot * 10001 > diagonal``). Elimination without pivoting amplifies rounding by about
+#: the inverse of the smallest such ratio (the growth of a Cholesky-like elimination), and
+#: forming S squares the conditioning of the constraint rows: near a singular configuration
+#: of a loop, where some pivot of S is small against its diagonal, the LU of the whole
+#: equilibrated matrix is the more accurate and is used instead. 10001 = 100^2 + 1, so that
+#: the test at the boundary is exact in floating point (rows (1, 0) and (100, 1) of A with
+#: M = I give S = [[1, 100], [100, 10001]] and the pivot 1).
+SADDLE_PIVOT_FACTOR = 10001.0
+
+
+def _entry(table, i, j):
+    """The local holding an entry, or None for a structural zero."""
+    return table.get((i, j))
+
+
+def _dot(pairs):
+    """Printed sum of products of the pairs of locals (None factors left out), or None."""
+    terms = [f"{a}*{b}" for a, b in pairs if a is not None and b is not None]
+    return " + ".join(terms) if terms else None
+
+
+def _minus(base, terms):
+    """``base - (terms)``: each part may be None (a structural zero)."""
+    if terms is None:
+        return base
+    if base is None:
+        return f"-({terms})"
+    return f"{base} - ({terms})"
+
+
+def _ldl(n, a, prefix, indent):
+    """Unrolled sparse L D L^T of the symmetric matrix whose entries (i >= j) are
+    ``a[(i, j)]`` (locals, or absent for structural zeros): lines, the table of L's strict
+    lower entries and the names of 1/d_j. Each pivot is tested against its diagonal."""
+    lines, L, W, inv = [], {}, {}, []
+    factor = repr(SADDLE_PIVOT_FACTOR)
+    for j in range(n):
+        diag = a.get((j, j))
+        d = _minus(diag, _dot((L.get((j, k)), W.get((j, k))) for k in range(j)))
+        lines.append(f"{indent}_p = {d if d is not None else '0.0'}")
+        lines.append(f"{indent}if not _p*{factor} > {diag or '0.0'}: raise ArithmeticError")
+        inv.append(f"_{prefix}i{j}")
+        lines.append(f"{indent}{inv[j]} = 1.0/_p")
+        for i in range(j + 1, n):
+            w = _minus(a.get((i, j)), _dot((L.get((i, k)), W.get((j, k))) for k in range(j)))
+            if w is None:
+                continue
+            W[i, j], L[i, j] = f"_{prefix}w{i}_{j}", f"_{prefix}l{i}_{j}"
+            lines.append(f"{indent}{W[i, j]} = {w}")
+            lines.append(f"{indent}{L[i, j]} = {W[i, j]}*{inv[j]}")
+    return lines, L, inv
+
+
+def _ldl_solve(n, L, inv, rhs, out, indent):
+    """Lines solving L D L^T x = rhs (a list of n locals or None): L y = rhs, then
+    L^T x = D^-1 y, x in locals named ``out + str(i)``; returns (lines, x) with None for the
+    structural zeros of x."""
+    lines, y = [], []
+    for i in range(n):
+        v = _minus(rhs[i], _dot((L.get((i, k)), y[k]) for k in range(i)))
+        if v is None:
+            y.append(None)
+            continue
+        y.append(f"{out}y{i}")
+        lines.append(f"{indent}{y[i]} = {v}")
+    x = [None] * n
+    for i in reversed(range(n)):
+        z = None if y[i] is None else f"{y[i]}*{inv[i]}"
+        v = _minus(z, _dot((L.get((k, i)), x[k]) for k in range(i + 1, n)))
+        if v is None:
+            continue
+        x[i] = f"{out}{i}"
+        lines.append(f"{indent}{x[i]} = {v}")
+    return lines, x
+
+
+def saddle_lines(n, m, entry, rhs, indent="    "):
+    """The unrolled range-space solve (module docstring) of the saddle-point system of size
+    n + m whose matrix entries are the locals ``entry[(i, j)]`` (absent: a structural zero;
+    M given by its entries i >= j < n, A by its rows n..n+m-1, columns < n) and right-hand
+    side the locals ``rhs[k]``. The lines end by returning the solution (x, lam) as a numpy
+    array, or raise ArithmeticError (a pivot too small against its diagonal entry, a
+    non-finite result): the caller catches it and takes its general path."""
+    M = {(i, j): entry[i, j] for i in range(n) for j in range(i + 1) if (i, j) in entry}
+    lines, L, inv = _ldl(n, M, "m", indent)
+    A = [[entry.get((n + r, c)) for c in range(n)] for r in range(m)]
+    X = []
+    for r in range(m):
+        more, x = _ldl_solve(n, L, inv, A[r], f"_x{r}_", indent)
+        lines += more
+        X.append(x)
+    more, xf = _ldl_solve(n, L, inv, rhs[:n], "_xf", indent)
+    lines += more
+    S = {}
+    for r in range(m):
+        for s in range(r + 1):
+            v = _dot(zip(A[r], X[s], strict=True))
+            if v is not None:
+                S[r, s] = f"_s{r}_{s}"
+                lines.append(f"{indent}{S[r, s]} = {v}")
+    g = []
+    for r in range(m):
+        v = _minus(_dot(zip(A[r], xf, strict=True)), rhs[n + r])
+        g.append(None if v is None else f"_g{r}")
+        if v is not None:
+            lines.append(f"{indent}{g[r]} = {v}")
+    more, LS, invS = _ldl(m, S, "s", indent)
+    lines += more
+    more, lam = _ldl_solve(m, LS, invS, g, "_lam", indent)
+    lines += more
+    out = []
+    for i in range(n):
+        v = _minus(xf[i], _dot((X[r][i], lam[r]) for r in range(m)))
+        out.append(v if v is not None else "0.0")
+    out += [v if v is not None else "0.0" for v in lam]
+    lines.append(f"{indent}_out = [{', '.join(out)}]")
+    lines.append(f"{indent}_s = sum(_out)")
+    lines.append(f"{indent}if not _s - _s == 0.0: raise ArithmeticError")
+    lines.append(f"{indent}return numpy.array(_out)")
+    return lines
