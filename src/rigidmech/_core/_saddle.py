@@ -23,6 +23,8 @@ to the caller's general path (LU of the equilibrated matrix with its singularity
 which solves it or refuses it: a singular configuration is decided there only.
 """
 
+import re
+
 __all__: list[str] = []
 
 #: The unrolled range-space solve is used when every pivot of the eliminations of M and of
@@ -37,9 +39,31 @@ __all__: list[str] = []
 SADDLE_PIVOT_FACTOR = 10001.0
 
 
-def _entry(table, i, j):
-    """The local holding an entry, or None for a structural zero."""
-    return table.get((i, j))
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z_0-9]*")
+
+
+class _Lines:
+    """The generated lines, every local assigned once: a right-hand side that is a bare local
+    is not copied (its name is used), and one already assigned is not computed again (the
+    name that holds it is used) -- rows of A that agree on some columns (constraints
+    through the same body) then share their partial products."""
+
+    def __init__(self, indent):
+        self.indent, self.lines, self.memo = indent, [], {}
+
+    def emit(self, name, expr):
+        """Assign `expr` to `name` unless it is a local or already held; return the name
+        that holds it."""
+        if _IDENTIFIER.fullmatch(expr):
+            return expr
+        held = self.memo.get(expr)
+        if held is None:
+            self.lines.append(f"{self.indent}{name} = {expr}")
+            held = self.memo[expr] = name
+        return held
+
+    def add(self, line):
+        self.lines.append(f"{self.indent}{line}")
 
 
 def _dot(pairs):
@@ -57,93 +81,77 @@ def _minus(base, terms):
     return f"{base} - ({terms})"
 
 
-def _ldl(n, a, prefix, indent):
+def _ldl(n, a, prefix, out):
     """Unrolled sparse L D L^T of the symmetric matrix whose entries (i >= j) are
-    ``a[(i, j)]`` (locals, or absent for structural zeros): lines, the table of L's strict
-    lower entries and the names of 1/d_j. Each pivot is tested against its diagonal."""
-    lines, L, W, inv = [], {}, {}, []
+    ``a[(i, j)]`` (locals, or absent for structural zeros), written to `out`: the table of
+    L's strict lower entries and the names of 1/d_j. Each pivot is tested against its
+    diagonal entry."""
+    L, W, inv = {}, {}, []
     factor = repr(SADDLE_PIVOT_FACTOR)
     for j in range(n):
         diag = a.get((j, j))
         d = _minus(diag, _dot((L.get((j, k)), W.get((j, k))) for k in range(j)))
-        lines.append(f"{indent}_p = {d if d is not None else '0.0'}")
-        lines.append(f"{indent}if not _p*{factor} > {diag or '0.0'}: raise ArithmeticError")
-        inv.append(f"_{prefix}i{j}")
-        lines.append(f"{indent}{inv[j]} = 1.0/_p")
+        d = out.emit(f"_{prefix}d{j}", d) if d is not None else "0.0"
+        out.add(f"if not {d}*{factor} > {diag or '0.0'}: raise ArithmeticError")
+        inv.append(out.emit(f"_{prefix}i{j}", f"1.0/{d}"))
         for i in range(j + 1, n):
             w = _minus(a.get((i, j)), _dot((L.get((i, k)), W.get((j, k))) for k in range(j)))
             if w is None:
                 continue
-            W[i, j], L[i, j] = f"_{prefix}w{i}_{j}", f"_{prefix}l{i}_{j}"
-            lines.append(f"{indent}{W[i, j]} = {w}")
-            lines.append(f"{indent}{L[i, j]} = {W[i, j]}*{inv[j]}")
-    return lines, L, inv
+            W[i, j] = out.emit(f"_{prefix}w{i}_{j}", w)
+            L[i, j] = out.emit(f"_{prefix}l{i}_{j}", f"{W[i, j]}*{inv[j]}")
+    return L, inv
 
 
-def _ldl_solve(n, L, inv, rhs, out, indent):
-    """Lines solving L D L^T x = rhs (a list of n locals or None): L y = rhs, then
-    L^T x = D^-1 y, x in locals named ``out + str(i)``; returns (lines, x) with None for the
-    structural zeros of x."""
-    lines, y = [], []
+def _ldl_solve(n, L, inv, rhs, name, out):
+    """Solve L D L^T x = rhs (a list of n locals or None): L y = rhs, then L^T x = D^-1 y,
+    written to `out`; returns x, the locals (None for the structural zeros of x)."""
+    y = []
     for i in range(n):
         v = _minus(rhs[i], _dot((L.get((i, k)), y[k]) for k in range(i)))
-        if v is None:
-            y.append(None)
-            continue
-        y.append(f"{out}y{i}")
-        lines.append(f"{indent}{y[i]} = {v}")
+        y.append(None if v is None else out.emit(f"{name}y{i}", v))
     x = [None] * n
     for i in reversed(range(n)):
         z = None if y[i] is None else f"{y[i]}*{inv[i]}"
         v = _minus(z, _dot((L.get((k, i)), x[k]) for k in range(i + 1, n)))
-        if v is None:
-            continue
-        x[i] = f"{out}{i}"
-        lines.append(f"{indent}{x[i]} = {v}")
-    return lines, x
+        if v is not None:
+            x[i] = out.emit(f"{name}{i}", v)
+    return x
 
 
 def saddle_lines(n, m, entry, rhs, indent="    "):
     """The unrolled range-space solve (module docstring) of the saddle-point system of size
     n + m whose matrix entries are the locals ``entry[(i, j)]`` (absent: a structural zero;
-    M given by its entries i >= j < n, A by its rows n..n+m-1, columns < n) and right-hand
-    side the locals ``rhs[k]``. The lines end by returning the solution (x, lam) as a numpy
-    array, or raise ArithmeticError (a pivot too small against its diagonal entry, a
-    non-finite result): the caller catches it and takes its general path."""
+    M given by its entries i >= j < n, A by its rows n..n+m-1, columns < n; entries equal
+    by construction may share a local) and right-hand side the locals ``rhs[k]``. The lines
+    end by returning the solution (x, lam) as a numpy array, or raise ArithmeticError (a
+    pivot too small against its diagonal entry, a non-finite result): the caller catches it
+    and takes its general path."""
+    out = _Lines(indent)
     M = {(i, j): entry[i, j] for i in range(n) for j in range(i + 1) if (i, j) in entry}
-    lines, L, inv = _ldl(n, M, "m", indent)
+    L, inv = _ldl(n, M, "m", out)
     A = [[entry.get((n + r, c)) for c in range(n)] for r in range(m)]
-    X = []
-    for r in range(m):
-        more, x = _ldl_solve(n, L, inv, A[r], f"_x{r}_", indent)
-        lines += more
-        X.append(x)
-    more, xf = _ldl_solve(n, L, inv, rhs[:n], "_xf", indent)
-    lines += more
+    X = [_ldl_solve(n, L, inv, A[r], f"_x{r}_", out) for r in range(m)]
+    xf = _ldl_solve(n, L, inv, rhs[:n], "_xf", out)
     S = {}
     for r in range(m):
         for s in range(r + 1):
             v = _dot(zip(A[r], X[s], strict=True))
             if v is not None:
-                S[r, s] = f"_s{r}_{s}"
-                lines.append(f"{indent}{S[r, s]} = {v}")
+                S[r, s] = out.emit(f"_s{r}_{s}", v)
     g = []
     for r in range(m):
         v = _minus(_dot(zip(A[r], xf, strict=True)), rhs[n + r])
-        g.append(None if v is None else f"_g{r}")
-        if v is not None:
-            lines.append(f"{indent}{g[r]} = {v}")
-    more, LS, invS = _ldl(m, S, "s", indent)
-    lines += more
-    more, lam = _ldl_solve(m, LS, invS, g, "_lam", indent)
-    lines += more
-    out = []
+        g.append(None if v is None else out.emit(f"_g{r}", v))
+    LS, invS = _ldl(m, S, "s", out)
+    lam = _ldl_solve(m, LS, invS, g, "_lam", out)
+    result = []
     for i in range(n):
         v = _minus(xf[i], _dot((X[r][i], lam[r]) for r in range(m)))
-        out.append(v if v is not None else "0.0")
-    out += [v if v is not None else "0.0" for v in lam]
-    lines.append(f"{indent}_out = [{', '.join(out)}]")
-    lines.append(f"{indent}_s = sum(_out)")
-    lines.append(f"{indent}if not _s - _s == 0.0: raise ArithmeticError")
-    lines.append(f"{indent}return numpy.array(_out)")
-    return lines
+        result.append(v if v is not None else "0.0")
+    result += [v if v is not None else "0.0" for v in lam]
+    out.add(f"_out = [{', '.join(result)}]")
+    out.add("_s = sum(_out)")
+    out.add("if not _s - _s == 0.0: raise ArithmeticError")
+    out.add("return numpy.array(_out)")
+    return out.lines

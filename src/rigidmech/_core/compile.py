@@ -761,8 +761,12 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True,
         [entry.get((i, j), "0.0") for i in range(n) for j in range(n)], (n, n))
     unrolled = symmetric and n <= UNROLLED_CHOLESKY_MAX_N
     if saddle is not None:
+        # entries printed alike (the same point's rows of several loops) share one local,
+        # so that the elimination computes their products once
+        first, printed = {}, dict(zip(a_locals, prepared.math_reduced, strict=False))
+        shared = {ij: first.setdefault(printed[local], local) for ij, local in entry.items()}
         fast = (["    try:"]
-                + _saddle.saddle_lines(saddle, n - saddle, entry, b_locals, indent="        ")
+                + _saddle.saddle_lines(saddle, n - saddle, shared, b_locals, indent="        ")
                 + ["    except ArithmeticError:", "        pass"])
     else:
         fast = _cholesky_lines(n) if unrolled else []
