@@ -182,6 +182,7 @@ def projector(eqs, values, rates=True):
     hol, phi_f, A_f, c_f = closure_functions(eqs)
     consts, inputs, _ = eqs._values(values)
     n = len(q_s)
+    rows = None if len(hol) == len(eqs.constraints) else hol  # None: every row holonomic
 
     def project(t, y):
         w = [v(t) if callable(v) else v for v in inputs]
@@ -194,7 +195,9 @@ def projector(eqs, values, rates=True):
                 if not size < last or size == 0.0:
                     break
                 last = size
-                J = np.asarray(A_f(t, q, *consts, *w), dtype=float)[hol]
+                J = np.asarray(A_f(t, q, *consts, *w), dtype=float)
+                if rows is not None:
+                    J = J[rows]
                 q -= _least_norm(J, r)
         if not rates:
             return np.concatenate((q, u))
