@@ -118,3 +118,12 @@ def test_saddle_and_symmetric_exclude_each_other():
     with pytest.raises(ValueError, match="exclude each other"):
         compile_linear_solve(K, sp.Matrix([1, 2, 3]), [sp.Symbol("x")], saddle=2,
                              symmetric=True)
+
+
+def test_saddle_solve_survives_pickle():
+    import pickle
+
+    K, F, syms, values = _saddle_system(4, 2, 5)
+    solve = compile_linear_solve(K, F, [syms], saddle=4)
+    again = pickle.loads(pickle.dumps(solve))
+    np.testing.assert_array_equal(again(np.array(values)), solve(np.array(values)))
