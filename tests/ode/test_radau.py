@@ -77,3 +77,17 @@ def test_batch_jacobian_and_dense_output():
     exact = expm(1.0 * M) @ Y0
     # collocation polynomial (order 3 in x, stage order 3): 1e-6 relative inside steps
     assert_allclose(r.sol(1.0)[:, 0], exact, rtol=1e-6, atol=1e-9)
+
+
+def test_projection_keeps_the_jacobian():
+    """A projection moves the state by about the tolerance: radau keeps its Jacobian and
+    factorisations across it (one more evaluation per step, for the derivative at the
+    projected state), it does not form them again after every step. With a projection that
+    changes nothing, the run is the unprojected one."""
+    free = ode.solve(vdp, (0.0, 300.0), [2.0, 0.0], method="radau", rtol=1e-6, atol=1e-6)
+    same = ode.solve(vdp, (0.0, 300.0), [2.0, 0.0], method="radau", rtol=1e-6, atol=1e-6,
+                     project=lambda t, y: y)
+    assert same.nsteps == free.nsteps
+    assert same.stats["njev"] == free.stats["njev"]
+    assert same.nfev == free.nfev + same.nsteps
+    assert_allclose(same.y[:, -1], free.y[:, -1], rtol=1e-12)

@@ -22,7 +22,7 @@ pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integratio
 import numpy as np
 import sympy
 
-from . import _codegen
+from . import _codegen, _saddle
 from ._codegen import (
     _batched_cholesky_lines,
     _check_name,
@@ -609,7 +609,29 @@ def _singular_members(stack, symmetric):
     return singular | ~(1.0 / (norm * norm_inverse) > tol)
 
 
-def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True):
+def _check_saddle(A, n, symmetric):
+    """Refuse a matrix that is not [[M, C^T], [C, 0]] with M of size n (entry by entry)."""
+    if symmetric:
+        raise ArgumentError("`saddle` and `symmetric` exclude each other: a saddle-point "
+                            "matrix is symmetric but not positive definite; pass one of them.")
+    size = A.rows
+    if isinstance(n, bool) or not isinstance(n, int) or not 0 < n < size:
+        raise ArgumentError(f"`saddle` must be the size of the leading block, an integer "
+                            f"between 1 and {size - 1}; got {n!r}.")
+    for i in range(size):
+        for j in range(i):
+            if A[i, j] != A[j, i] or (i >= n and j >= n and A[i, j] != 0):
+                raise ArgumentError(
+                    f"`A` is not a saddle-point matrix [[M, C^T], [C, 0]] with M of size {n}: "
+                    f"entries ({i}, {j}) and ({j}, {i}) are {A[i, j]} and {A[j, i]}. Pass "
+                    "saddle=None to solve it as a general matrix.")
+    if any(A[i, i] != 0 for i in range(n, size)):
+        raise ArgumentError(f"`A` is not a saddle-point matrix: its trailing block (from row "
+                            f"{n}) is not zero. Pass saddle=None to solve it as a general "
+                            "matrix.")
+
+
+def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True, saddle=None):
     """Compile the solution x of the linear system A x = b, with A and b functions of `args`.
 
     Made for equations of motion M(q) q'' = f(q, q', t): A and b are evaluated in one
@@ -632,6 +654,15 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
         Name used in the generated source and the repr.
     cse : bool, optional
         Whether to share common subexpressions with ``sympy.cse`` (default True).
+    saddle : int, optional
+        Declare A the saddle-point matrix [[M, C^T], [C, 0]] of a constrained system, M its
+        leading ``saddle`` x ``saddle`` block, symmetric positive definite (checked:
+        A symmetric and its trailing block zero, entry by entry). The single-state path
+        then solves it by an unrolled range-space elimination that leaves out the
+        products with the entries that are zero in A (:mod:`rigidmech._core._saddle`),
+        and hands it to the general path (LU of the equilibrated matrix, with its
+        singularity test) when a pivot is at most 1/``SADDLE_PIVOT_FACTOR`` (about
+        1e-4) of its diagonal entry. Not with ``symmetric``.
 
     Returns
     -------
@@ -707,7 +738,12 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
         if len(b_items) != n:
             raise ArgumentError(f"`b` must have {n} entries to match `A`; got {len(b_items)}.")
     symmetric = bool(symmetric)
-    if symmetric:
+    if saddle is not None:
+        _check_saddle(A, saddle, symmetric)
+        a_index = ([(i, j) for i in range(saddle) for j in range(i + 1)]
+                   + [(i, j) for i in range(saddle, n) for j in range(saddle)])
+        a_index = [ij for ij in a_index if A[ij] != 0]
+    elif symmetric:
         a_index = [(j, i) for j in range(n) for i in range(j, n)]
     else:
         a_index = [(i, j) for i in range(n) for j in range(n)]
@@ -719,10 +755,21 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
     a_locals = [f"_a{i}_{j}" for i, j in a_index]
     b_locals = [f"_b{i}" for i in range(n)]
     entry = dict(zip(a_index, a_locals, strict=True))
-    if symmetric:
+    if symmetric or saddle is not None:
         entry.update({(i, j): name_ for (j, i), name_ in zip(a_index, a_locals, strict=True)})
-    a_literal = _codegen.nested_literal([entry[i, j] for i in range(n) for j in range(n)], (n, n))
+    a_literal = _codegen.nested_literal(
+        [entry.get((i, j), "0.0") for i in range(n) for j in range(n)], (n, n))
     unrolled = symmetric and n <= UNROLLED_CHOLESKY_MAX_N
+    if saddle is not None:
+        # entries printed alike (the same point's rows of several loops) share one local,
+        # so that the elimination computes their products once
+        first, printed = {}, dict(zip(a_locals, prepared.math_reduced, strict=False))
+        shared = {ij: first.setdefault(printed[local], local) for ij, local in entry.items()}
+        fast = (["    try:"]
+                + _saddle.saddle_lines(saddle, n - saddle, shared, b_locals, indent="        ")
+                + ["    except ArithmeticError:", "        pass"])
+    else:
+        fast = _cholesky_lines(n) if unrolled else []
     single_lines = (
         [f"def {name}_single({', '.join(single_params)}):"]
         + prepared.math_body()
@@ -730,7 +777,7 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
             f"    {local} = {printed}"
             for local, printed in zip(a_locals + b_locals, prepared.math_reduced, strict=True)
         ]
-        + (_cholesky_lines(n) if unrolled else [])
+        + fast
         + [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]
     )
     batched_lines = (
@@ -754,10 +801,13 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True)
         for i in range(n):
             batched_lines.append(f"    _B[{i}] = _b{i}")
     else:
-        batched_lines += [f"    _A = numpy.empty(({n}, {n}) + _batch)",
+        batched_lines += [f"    _A = numpy.{'zeros' if saddle is not None else 'empty'}"
+                          f"(({n}, {n}) + _batch)",
                           f"    _B = numpy.empty(({n},) + _batch)"]
         for (i, j), e in zip(a_index, reduced, strict=False):
-            batched_lines.append(f"    _A[{i}, {j}] = {_codegen.print_expr(printer_array, e)}")
+            target = f"_A[{i}, {j}]" + (f" = _A[{j}, {i}]" if saddle is not None and i != j
+                                        else "")
+            batched_lines.append(f"    {target} = {_codegen.print_expr(printer_array, e)}")
         for i, e in enumerate(reduced[len(a_index) :]):
             batched_lines.append(f"    _B[{i}] = {_codegen.print_expr(printer_array, e)}")
     batched_lines.append("    return _A, _B")

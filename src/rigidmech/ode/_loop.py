@@ -404,9 +404,11 @@ class _Loop:
         return out if np.isfinite(out).all() else None
 
     def restart(self, t, y):
-        """The stepper restarted from the projected state `y` (its derivative evaluated)."""
+        """The stepper restarted from the projected state `y` (its derivative evaluated; a
+        stepper's own ``restart`` if it has one, which may keep what the move leaves valid)."""
         prob = self.prob
-        return self.stepper.begin(prob, t, y, prob(t, y, np.empty_like(y)))
+        again = getattr(self.stepper, "restart", None) or self.stepper.begin
+        return again(prob, t, y, prob(t, y, np.empty_like(y)))
 
     def run(self, t, y, f, h_abs):
         """The loop; on any exit (an interruption too) ``t``, ``nrej`` and ``attempts`` hold

@@ -352,8 +352,9 @@ def solve(fun: Callable, t_span, y0, method: str = "dop853", *, step: float | No
         and the states given to event functions at the steps' ends are the projected
         ones, while the dense output *between* two steps (``sol``, samples of ``t_eval``
         inside a step, event location) is that of the unprojected step. A non-finite
-        projection is ignored for that step; ``radau`` forms its Jacobian again after each
-        projected step. Only for the first-order methods of the one integration loop
+        projection is ignored for that step; ``radau`` keeps its Jacobian and factorisations
+        across a projection (formed again when Newton converges slowly, as after any step).
+        Only for the first-order methods of the one integration loop
         (``dopri5``, ``dop853``, ``bs32``, ``gbs``, ``radau``); refused by the others.
     **options
         Options specific to the method (e.g. ``nstiff`` for ``"dop853"``, ``jac`` for

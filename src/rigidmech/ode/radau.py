@@ -188,6 +188,14 @@ class _RadauStepper:
         self.J = self._jacobian(t0, y0, f0)
         return y0, f0
 
+    def restart(self, prob, t, y, f):
+        """After a projection of the state (a move of the order of the tolerance, see
+        :func:`rigidmech.ode.solve`'s ``project``): the derivative at the projected state,
+        the Jacobian and its factorisations kept (formed again, as after any step, when
+        Newton converges slowly or fails)."""
+        self.f, self.current_jac = f, False
+        return y, f
+
     def _predictor(self, h, size):
         if self.Zprev is None:
             return np.zeros((3, size))
