@@ -24,9 +24,10 @@ function here (and only here):
   when they do not decide, one with float constants by its value at two sample points, at most
   ``SAMPLE_ZERO`` (1e-9) of the largest magnitude met while evaluating it (the relative motion
   a joint allows, closure conditions, energies that vanish identically);
-* :func:`fold_numbers` -- zero when the value at two random points, in 64-digit arithmetic, is
-  below 1e-40 of the largest intermediate value (large matrices compiled for numbers, where
-  ``simplify`` costs minutes and ``evalf`` of a zero costs seconds).
+* :func:`fold_numbers` -- the decision of ``sampled_zero_decision`` (values at two random
+  points, in 64-digit arithmetic, below 1e-40 of the largest intermediate value, and an
+  expression meromorphic in its symbols), without ``simplify`` (large matrices compiled for
+  numbers, where ``simplify`` costs minutes and ``evalf`` of a zero costs seconds).
 """
 
 from __future__ import annotations
