@@ -144,3 +144,42 @@ def test_point_verdict_thresholds_at_their_boundaries():
         assert _point_verdict(mpmath.mpf(0), mpmath.mpf(0)) is True
         assert _point_verdict(None, largest) is None
         assert _point_verdict(mpmath.inf, mpmath.inf) is None
+
+
+def test_unevaluated_derivatives_follow_the_chain_rule():
+    """An unevaluated derivative of an expression (not of a coordinate) is not an independent
+    atom: d/dt sin(q) - cos(q) q' is the chain rule, zero; d/dt sin(q) - q' is not."""
+    q = coordinates("q")
+    identity = sp.Derivative(sp.sin(q), t) - sp.cos(q) * q.diff(t)
+    assert not symbolic.nonzero_somewhere(identity)
+    assert vanishes(identity)
+    assert vanishes(sp.Derivative(q**2 * sp.cos(q), t) - q.diff(t) * sp.diff(q**2 * sp.cos(q), q))
+    assert symbolic.nonzero_somewhere(sp.Derivative(sp.sin(q), t) - q.diff(t))
+    assert not vanishes(sp.Derivative(sp.sin(q), t) - q.diff(t))
+    # a derivative with respect to a symbol, and a second derivative of a coordinate (a leaf)
+    assert vanishes(sp.Derivative(a * sp.sin(b), a) - sp.sin(b))
+    assert not vanishes(sp.Derivative(q, (t, 2)) - q.diff(t))
+
+
+def test_fold_numbers_folds_to_zero_only_what_the_sampled_rule_calls_zero():
+    """fold_numbers and sampled_zero_decision make the same decision by the same rule: an
+    expression that vanishes on the sampled interval only (Abs(v) - v is 0 for v > 0, and every
+    sample of a symbol without a sign is in (0.5, 1.5)) is not folded to 0; an identity is."""
+    v = sp.Symbol("v")
+    pythagoras = sp.sin(v) ** 2 + sp.cos(v) ** 2 - 1
+    cases = [sp.Abs(v) - v, sp.atan(sp.tan(v)) - v, sp.sqrt(v**2) - v, pythagoras,
+             sp.Abs(m) - m]
+    folded = symbolic.fold_numbers(cases)
+    assert folded[0] == sp.Abs(v) - v
+    assert folded[1] != 0 and folded[2] != 0
+    assert folded[3] == 0 and folded[4] == 0
+    assert [f == 0 for f in folded] == [sampled_zero_decision(e) is True for e in cases]
+
+
+def test_fold_numbers_respects_integer_symbols_as_the_sampled_rule_does():
+    """An integer symbol is not sampled (the rule of sampled_zero_decision): n - 1 is not 0
+    (it was folded to 0, n being given the value 1 at both points)."""
+    n = sp.Symbol("n", integer=True)
+    v = sp.Symbol("v")
+    assert sampled_zero_decision(n - 1) is None
+    assert symbolic.fold_numbers([n - 1, v * (n - 1)]) == [n - 1, v * (n - 1)]

@@ -255,3 +255,19 @@ def test_contact_of_two_float_circles_relative_threshold(gap, touches):
     else:
         with pytest.raises(rm.errors.ConnectionError_, match="not in contact"):
             contact_geometry(a, b)
+
+
+@pytest.mark.parametrize("height, touches", [(0.7 - 0.6, True), (0.1 + 1e-6, False)])
+def test_contact_of_symbolic_data_with_floats_uses_the_one_zero_rule(height, touches):
+    """A sphere of radius 0.1 r on the plane z = 0, centre at `height` r (r a symbol): the gap
+    (0.7 - 0.6) r - 0.1 r arrives as -2.8e-17 r, rounding of the floats: a contact, decided by
+    the rule of every exact-or-rounded zero (``_core.symbolic.vanishes``), not refused because
+    ``simplify`` cannot make -2.8e-17 r zero; a gap of 1e-6 r is refused."""
+    R0 = rm.Frame("R0")
+    sphere, plane = Sphere(R0.point("C", 0, 0, height * r), 0.1 * r), rm.Plane(R0.origin, R0.k)
+    if touches:
+        assert contact_geometry(sphere, plane).normal == R0.k
+    else:
+        with pytest.raises(rm.errors.ConnectionError_, match="not in contact"):
+            contact_geometry(sphere, plane)
+

@@ -18,7 +18,7 @@ import mpmath
 import sympy as sp
 
 __all__ = ["FOLD_DIGITS", "FOLD_ZERO_RELATIVE", "SAMPLED_NONZERO_RELATIVE",
-           "sampled_zero_decision"]
+           "sampled_zero_decision", "sampled_decisions"]
 
 #: Working precision (decimal digits) and relative threshold of the zero test at probe points
 #: (:func:`~rigidmech._core.symbolic.fold_numbers`, :func:`sampled_zero_decision`): an
@@ -145,43 +145,50 @@ def _branch_free(base) -> bool:
         _connected(a) for a in base.atoms(sp.Symbol, sp.core.function.AppliedUndef))
 
 
-def _leaves(expr, skip):
-    """The leaves to sample (symbols but those in ``skip``, applied functions ``q(t)``,
-    derivatives of them) and whether ``expr`` is meromorphic in them over a connected set of
-    admissible values (see :func:`sampled_zero_decision`)."""
-    leaves, seen, analytic = set(), set(), True
-    stack = [expr]
-    while stack:
-        e = stack.pop()
-        if e in seen:
-            continue
-        seen.add(e)
-        if e.is_Symbol:
-            if e in skip:
-                analytic = False
-            else:
-                leaves.add(e)
-        elif isinstance(e, sp.core.function.AppliedUndef):
+def _node(e, skip, leaves):
+    """Whether the node ``e`` itself keeps an expression meromorphic (see
+    :func:`sampled_zero_decision`), and the arguments to look into; a leaf to sample (a symbol
+    but those in ``skip``, an applied function ``q(t)``, a derivative of one) joins ``leaves``."""
+    if e.is_Symbol:
+        if e in skip:
+            return False, ()
+        leaves.add(e)
+        return True, ()
+    if isinstance(e, sp.core.function.AppliedUndef):
+        leaves.add(e)
+        return True, ()
+    if isinstance(e, sp.Derivative):
+        if isinstance(e.expr, sp.core.function.AppliedUndef):
             leaves.add(e)
-        elif isinstance(e, sp.Derivative):
-            if isinstance(e.expr, sp.core.function.AppliedUndef):
-                leaves.add(e)
-            else:
-                analytic = False
-        elif e.is_Number or e.is_NumberSymbol or e is sp.S.ImaginaryUnit:
+            return True, ()
+        return False, ()
+    if e.is_Number or e.is_NumberSymbol or e is sp.S.ImaginaryUnit:
+        return True, ()
+    if e.is_Add or e.is_Mul or e.func in _MEROMORPHIC:
+        return True, e.args
+    if e.is_Pow:
+        return bool(e.exp.is_Integer or not e.free_symbols or _branch_free(e.base)), e.args
+    return (not e.free_symbols or (e.func is sp.log and _branch_free(e.args[0]))), e.args
+
+
+def _leaves(exprs, skip):
+    """The leaves to sample in ``exprs`` and, for every distinct node, whether it is
+    meromorphic in them over a connected set of admissible values (see
+    :func:`sampled_zero_decision`). One iterative walk over the shared DAG."""
+    leaves, analytic = set(), {}
+    stack = list(exprs)
+    while stack:
+        e = stack[-1]
+        if e in analytic:
+            stack.pop()
             continue
-        elif e.is_Add or e.is_Mul:
-            stack.extend(e.args)
-        elif e.is_Pow:
-            if not (e.exp.is_Integer or not e.free_symbols or _branch_free(e.base)):
-                analytic = False
-            stack.extend(e.args)
-        elif e.func in _MEROMORPHIC:
-            stack.extend(e.args)
-        else:
-            if e.free_symbols and not (e.func is sp.log and _branch_free(e.args[0])):
-                analytic = False
-            stack.extend(e.args)
+        own, inner = _node(e, skip, leaves)
+        pending = [x for x in inner if x not in analytic]
+        if pending:
+            stack.extend(pending)
+            continue
+        stack.pop()
+        analytic[e] = own and all(analytic[x] for x in inner)
     return sorted(leaves, key=sp.default_sort_key), analytic
 
 
@@ -261,22 +268,45 @@ def sampled_zero_decision(expr, skip=(), *, seed=0) -> bool | None:
     expr = sp.sympify(expr)
     if expr.is_Number:
         return bool(expr == 0)
-    leaves, analytic = _leaves(expr, frozenset(skip))
+    with mpmath.workdps(FOLD_DIGITS):
+        return sampled_decisions([expr], skip, seed=seed)[0][0]
+
+
+def sampled_decisions(exprs, skip=(), *, seed=0):
+    """The decisions of :func:`sampled_zero_decision` on every expression of ``exprs`` (the
+    same rule: points, thresholds, analyticity), sampled at the same points, and the values
+    at them: ``(decisions, (values, largest, constant))``, as :func:`_probe_values` gives
+    them (for :func:`~rigidmech._core.symbolic.fold_numbers`). An atom that cannot be sampled
+    (see :func:`sampled_zero_decision`) is given no value: an expression with it is not
+    decided. Call it with mpmath's precision set to ``FOLD_DIGITS``.
+
+    Examples
+    --------
+    >>> a = sp.Symbol("a")
+    >>> with mpmath.workdps(FOLD_DIGITS):
+    ...     decisions, _ = sampled_decisions([sp.sin(a)**2 + sp.cos(a)**2 - 1, sp.Abs(a) - a, a])
+    >>> decisions
+    [True, None, False]
+    """
+    exprs = [sp.sympify(e) for e in exprs]
+    leaves, analytic = _leaves(exprs, frozenset(skip))
     rng = random.Random(seed)
     points = {}
     for atom in leaves:
         sign = _sign(atom)
         samples = [rng.uniform(0.5, 1.5) for _ in range(SAMPLED_POINTS)]
-        if sign is None or 1.0 in samples:
-            return None
-        points[atom] = [mpmath.mpf(sign * x) for x in samples]
-    with mpmath.workdps(FOLD_DIGITS):
-        values, largest, _ = _probe_values([expr], points)
-        value, size = values[expr], largest[expr]
+        if sign is not None and 1.0 not in samples:
+            points[atom] = [mpmath.mpf(sign * x) for x in samples]
+    values, largest, constant = _probe_values(exprs, points)
+    decisions = []
+    for e in exprs:
+        value, size = values[e], largest[e]
         verdicts = [None] if value is None else [
             _point_verdict(v, m) for v, m in zip(value, size, strict=True)]
-    if False in verdicts:
-        return False
-    if analytic and all(v is True for v in verdicts):
-        return True
-    return None
+        if False in verdicts:
+            decisions.append(False)
+        elif analytic[e] and all(v is True for v in verdicts):
+            decisions.append(True)
+        else:
+            decisions.append(None)
+    return decisions, (values, largest, constant)

@@ -24,16 +24,16 @@ function here (and only here):
   when they do not decide, one with float constants by its value at two sample points, at most
   ``SAMPLE_ZERO`` (1e-9) of the largest magnitude met while evaluating it (the relative motion
   a joint allows, closure conditions, energies that vanish identically);
-* :func:`fold_numbers` -- zero when the value at two random points, in 64-digit arithmetic, is
-  below 1e-40 of the largest intermediate value (large matrices compiled for numbers, where
-  ``simplify`` costs minutes and ``evalf`` of a zero costs seconds).
+* :func:`fold_numbers` -- the decision of ``sampled_zero_decision`` (values at two random
+  points, in 64-digit arithmetic, below 1e-40 of the largest intermediate value, and an
+  expression meromorphic in its symbols), without ``simplify`` (large matrices compiled for
+  numbers, where ``simplify`` costs minutes and ``evalf`` of a zero costs seconds).
 """
 
 from __future__ import annotations
 
 import cmath
 import math
-import random
 
 import mpmath
 import sympy as sp
@@ -42,7 +42,7 @@ from .probes import (
     FOLD_DIGITS,
     FOLD_ZERO_RELATIVE,
     _point_verdict,
-    _probe_values,
+    sampled_decisions,
     sampled_zero_decision,
 )
 from .rules import magnitude
@@ -338,6 +338,15 @@ def _sample_values(atoms, seed):
     return {a: complex(_sample(a, seed + 0.1 * (i % 8), i)) for i, a in enumerate(atoms)}
 
 
+def _derivatives_done(expr):
+    """``expr`` with its derivatives of expressions evaluated by the chain rule
+    (``Derivative(sin(q), t)`` -> ``cos(q) q'``): only derivatives of functions ``q(t)`` are
+    atoms a value can be given to independently. Unchanged (no rebuild) when there is none."""
+    done = {d: d.doit() for d in atoms_shared([expr])[2]
+            if not isinstance(d.expr, sp.core.function.AppliedUndef)}
+    return expr.xreplace(done) if done else expr
+
+
 def _sample_atoms(expr, skip):
     return [*sorted(expr.atoms(sp.Derivative), key=str),
             *sorted(expr.atoms(sp.core.function.AppliedUndef), key=str),
@@ -358,7 +367,7 @@ def nonzero_somewhere(expr, skip=()) -> bool:
     >>> nonzero_somewhere(sp.sin(a)**2 + sp.cos(a)**2 - 1), nonzero_somewhere(sp.sin(a))
     (False, True)
     """
-    expr = sp.sympify(expr)
+    expr = _derivatives_done(sp.sympify(expr))
     if expr == 0:
         return False
     atoms = _sample_atoms(expr, skip)
@@ -417,6 +426,7 @@ def vanishes(expr, skip=(), scale=None) -> bool:
     if is_exactly_zero(expr):
         return True
     if not expr.atoms(sp.Float):
+        expr = _derivatives_done(expr)
         if nonzero_somewhere(expr, skip):
             return False
         decided = sampled_zero_decision(expr, skip)
@@ -443,16 +453,20 @@ def vanishes(expr, skip=(), scale=None) -> bool:
 def fold_numbers(exprs, *, seed=0):
     """Prepare expressions for compilation to floating point: every constant subexpression
     becomes one Float (its value to 64 digits, correctly rounded to 17), and every expression
-    that vanishes at two random points becomes an exact 0.
+    decided zero by :func:`~rigidmech._core.probes.sampled_zero_decision` becomes an exact 0.
 
     Made for large matrices compiled for numbers (linearised equations of motion): sympy's
     ``evalf`` of an entry that is zero costs seconds (it raises the precision until it gives
     up: ``0.e-253``) and ``simplify`` minutes, while the float arithmetic of the generated code
-    would leave a rounding residue (1e-17) where the entry is zero. The test: evaluated with
-    ``FOLD_DIGITS`` digits at two points (every symbol drawn in (0.5, 1.5) with the sign its
-    assumptions give, integers for integer symbols), the magnitude is at most
-    ``FOLD_ZERO_RELATIVE`` times the largest magnitude met in the evaluation, at both points.
-    A function without an mpmath counterpart here leaves its expression unchanged.
+    would leave a rounding residue (1e-17) where the entry is zero. The test is the one of
+    :func:`~rigidmech._core.probes.sampled_zero_decision`, on all the expressions at the same
+    points (:func:`~rigidmech._core.probes.sampled_decisions`): evaluated with ``FOLD_DIGITS``
+    digits at two points (every symbol, ``q(t)`` and ``q'(t)`` drawn in (0.5, 1.5) with the
+    sign its assumptions give; integer symbols not sampled), the magnitude is at most
+    ``FOLD_ZERO_RELATIVE`` times the largest magnitude met in the evaluation, at both points,
+    and the expression is meromorphic in its atoms (``Abs(v) - v`` vanishes at every sample
+    point but is not zero: it is kept). A function without an mpmath counterpart here leaves
+    its expression unchanged.
 
     Parameters
     ----------
@@ -472,16 +486,11 @@ def fold_numbers(exprs, *, seed=0):
     [0, 4.4428829381583662*a + 0.43388373911755812]
     """
     exprs = [sp.sympify(e) for e in exprs]
-    symbols = sorted(free_symbols_shared(exprs), key=lambda s: s.name)
-    rng = random.Random(seed)
     with mpmath.workdps(FOLD_DIGITS):
-        points = {s: [mpmath.mpf(_sample(s, rng.uniform(0.5, 1.5), i)) for _ in range(2)]
-                  for i, s in enumerate(symbols)}
-        values, largest, constant = _probe_values(exprs, points)
-        zero = [_vanishes(values[e], largest[e]) for e in exprs]
+        decisions, probe = sampled_decisions(exprs, seed=seed)
         memo = {}
-        out = [sp.S.Zero if z else _folded(e, (values, largest, constant), memo)
-               for e, z in zip(exprs, zero, strict=True)]
+        out = [sp.S.Zero if zero is True else _folded(e, probe, memo)
+               for e, zero in zip(exprs, decisions, strict=True)]
     return out
 
 
@@ -506,6 +515,8 @@ def _folded(e, probe, memo):
     values, _, constant = probe
     if not e.args or e.is_Symbol:
         out = e if not e.is_NumberSymbol else _constant(e, probe) or e
+    elif e not in constant:     # inside a sampled leaf (the (t, 1) of Derivative(q(t), t))
+        out = e
     elif constant[e]:
         out = _constant(e, probe) or e
     elif e.is_Add or e.is_Mul:

@@ -20,9 +20,10 @@ sphere / sphere   C1C2 = r1 + r2 or abs(r1 - r2)          as for circles
 
 Planes and lines are :class:`~rigidmech.vectors.Plane` and :class:`~rigidmech.vectors.Line`;
 spheres, cylinders and circles are the value types of this module. Radii must be positive.
-Contact is decided exactly: a gap is shown non-zero by its value at sample points (cheap), and
-zero by algebra (a trigonometric canonical form, then ``sympy.simplify``); surfaces that are
-not provably in contact are refused, with the gap in the message. For a disc on a plane, d is
+Contact is decided by the library's one rule for "does this expression vanish": its values at
+random points, in 64-digit arithmetic for exact data, with algebra only when they do not
+decide; float data count to their rounding. Surfaces that are not provably in contact are
+refused, with the gap in the message. For a disc on a plane, d is
 written along a basis vector of the frames of the problem when it can be (d = lambda e, for example
 e = j of the frame after the precession and the nutation of Euler angles), so that no
 square root is needed; the normal is the plane's, turned towards the disc when the sign of the
@@ -36,7 +37,7 @@ from typing import NamedTuple
 import sympy as sp
 
 from .._core.errors import ArgumentError, ArgumentTypeError, ConnectionError_
-from .._core.symbolic import nonzero_somewhere, simplifies_to_zero
+from .._core.symbolic import vanishes
 from ..vectors import Line, Plane, Point, Vector
 from ..vectors.points import check_point
 
@@ -75,11 +76,11 @@ _GAP_RTOL = 1e-12
 
 
 def _zero(x, scale=None) -> bool:
-    """Exact decision for symbols: a value at a sample point proves a gap is not zero
-    (cheap, where ``simplify`` of a non-zero expression is slow); a zero is proved by algebra.
-    A number is zero when its magnitude is at most _GAP_RTOL times the number ``scale`` (the
-    size the gap is a difference of: a radius, a squared distance), exactly zero without
-    one."""
+    """Whether the gap ``x`` is zero. With symbols, the rule of every such decision in the
+    library, :func:`~rigidmech._core.symbolic.vanishes` (values at random points, algebra only
+    when they do not decide; float constants to their rounding). A number is zero when its
+    magnitude is at most _GAP_RTOL times the number ``scale`` (the size the gap is a
+    difference of: a radius, a squared distance), exactly zero without one."""
     x = sp.sympify(x)
     if x == 0:
         return True
@@ -87,9 +88,7 @@ def _zero(x, scale=None) -> bool:
         size = sp.sympify(scale)
         if size.is_number:
             return abs(complex(x)) <= _GAP_RTOL * abs(complex(size))
-    if nonzero_somewhere(x):
-        return False
-    return simplifies_to_zero(x)
+    return vanishes(x)
 
 
 class Sphere:
