@@ -18,8 +18,8 @@ import sympy as sp
 from .. import ode
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError, ArgumentTypeError, CompilationError
-from .._core.rules import magnitude
 from .._core.lazy import lazy_functions
+from .._core.rules import magnitude
 from .._core.symbolic import atoms_shared, xreplace_shared
 from ..ode._fixed import step_count
 from ..ode._progress import for_run
