@@ -161,6 +161,14 @@ def test_unevaluated_derivatives_follow_the_chain_rule():
     assert not vanishes(sp.Derivative(q, (t, 2)) - q.diff(t))
 
 
+def test_unevaluated_derivatives_follow_the_chain_rule_with_floats():
+    """The same decision on the float path of vanishes (an expression with Float constants):
+    0.5 d/dt sin(q) - 0.5 cos(q) q' is zero by the chain rule, 0.5 d/dt sin(q) - 0.5 q' is not."""
+    q = coordinates("q")
+    assert vanishes(0.5 * sp.Derivative(sp.sin(q), t) - 0.5 * sp.cos(q) * q.diff(t))
+    assert not vanishes(0.5 * sp.Derivative(sp.sin(q), t) - 0.5 * q.diff(t))
+
+
 def test_fold_numbers_folds_to_zero_only_what_the_sampled_rule_calls_zero():
     """fold_numbers and sampled_zero_decision make the same decision by the same rule: an
     expression that vanishes on the sampled interval only (Abs(v) - v is 0 for v > 0, and every

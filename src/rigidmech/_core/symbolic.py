@@ -425,8 +425,8 @@ def vanishes(expr, skip=(), scale=None) -> bool:
     expr = sp.sympify(expr)
     if is_exactly_zero(expr):
         return True
+    expr = _derivatives_done(expr)  # the chain rule on both paths (one rule)
     if not expr.atoms(sp.Float):
-        expr = _derivatives_done(expr)
         if nonzero_somewhere(expr, skip):
             return False
         decided = sampled_zero_decision(expr, skip)
