@@ -65,7 +65,6 @@ from __future__ import annotations
 
 import math
 import warnings
-from fractions import Fraction
 
 import numpy as np
 from numpy.exceptions import ComplexWarning
@@ -73,425 +72,45 @@ from numpy.exceptions import ComplexWarning
 from rigidmech._core.errors import ArgumentError
 
 from . import _registry
+from ._adams_run import (
+    RUN_DECIDE,
+    RUN_NONFINITE,
+    RUN_REJECTED,
+    _array_run,
+    _float_run,
+    _lower_order,
+    _next_order,
+    _next_ratio,
+)
+from ._adams_tables import (  # noqa: F401  (the tables the tests read stay importable here)
+    _DELTA,
+    _G,
+    _GS,
+    _PECE_REAL_INTERVAL,
+    _REINTERP,
+    _STIFF_BORDER,
+    HISTORY,
+    RESAMPLE_DOUBLING_MAX_ORDER,
+    STIFF_MAX_ORDER,
+    STIFF_MIN_ESTIMATE,
+    _lazy_dense,
+    _reinterpolation_matrix,
+    _resample_cached,
+    resample_matrix,
+)
+from ._adams_tables import MAX_ORDER as _MAX_ORDER
 from ._driver import Recorder, SampleRecorder, flat_tolerance
-from ._floatpath import FLOAT_PATH_MAX_N, cached, compile_function
+from ._floatpath import FLOAT_PATH_MAX_N
 from ._loop import _complex_failure, _probe, check_progress, underflow_failure
 from ._warnings import stiffness_count
 from .adaptive import _check_nstiff
-from .multistep import adams_gamma
 
 __all__ = ["adams", "resample_matrix", "MAX_ORDER"]
 
 #: Highest order of the Adams formulas used (as in DE/STEP: beyond it the stability region of
-#: the PECE pair becomes too small to gain anything).
-MAX_ORDER = 12
-
-#: Up to this order the step may be doubled before the known values of f reach back over 2k
-#: steps (the interpolation polynomial is then extrapolated backwards); above it, the doubling
-#: waits for them.
-RESAMPLE_DOUBLING_MAX_ORDER = 4
-
-#: Number of past values of f (with their times) kept for changes of the step size.
-HISTORY = 4 * MAX_ORDER + 1
-
-#: Stiffness test (see :func:`adams`): only steps of order <= STIFF_MAX_ORDER are examined
-#: (stiffness drives an Adams code to low orders, as Shampine and Gordon's DE uses), against
-#: 0.8 times the real stability interval of the PECE pair of order k (k = 1 .. 4), the roots
-#: of its step on y' = lambda y (recomputed in the tests).
-STIFF_MAX_ORDER = 4
-#: ... and only steps whose error estimate is at least this fraction of the tolerance: below,
-#: the difference of the two evaluations is mostly rounding and h rho means nothing.
-STIFF_MIN_ESTIMATE = 1e-3
-_PECE_REAL_INTERVAL = {1: 2.0, 2: 2.4, 3: 1.935, 4: 1.411}
-_STIFF_BORDER = {k: 0.8 * v for k, v in _PECE_REAL_INTERVAL.items()}
-
-#: gamma_j of Adams-Bashforth and |gamma*_j| of Adams-Moulton, j = 0 .. MAX_ORDER + 1
-_G = [float(adams_gamma(j)) for j in range(MAX_ORDER + 2)]
-_GS = [abs(float(adams_gamma(j, implicit=True))) for j in range(MAX_ORDER + 2)]
-
-
-def _backward_difference_matrix(m):
-    """``Delta`` with ``Delta @ [v_0, v_1, ..., v_m] = [nabla^0 v_0, ..., nabla^m v_0]``."""
-    D = np.zeros((m + 1, m + 1))
-    for j in range(m + 1):
-        for i in range(j + 1):
-            D[j, i] = (-1) ** i * math.comb(j, i)
-    return D
-
-
-_DELTA = [_backward_difference_matrix(m) for m in range(MAX_ORDER + 2)]
-
-
-def resample_matrix(m: int, ratio: float) -> np.ndarray:
-    r"""Map the backward differences at spacing :math:`h` to those at spacing ``ratio * h``.
-
-    The differences :math:`\nabla^j f_n` (:math:`j = 0, \dots, m`) define Newton's backward
-    interpolation polynomial (book, 26.3.2)
-
-    .. math:: P(t_n + s h) = \sum_{j=0}^{m}\binom{s + j - 1}{j}\nabla^j f_n ;
-
-    sampled at :math:`t_n - i\,r h` (:math:`i = 0, \dots, m`) it gives new values whose backward
-    differences are the new :math:`\nabla^j f_n`. The map is linear; this is its matrix.
-
-    Parameters
-    ----------
-    m : int
-        Highest difference, ``0 <= m <= MAX_ORDER + 1``.
-    ratio : float
-        New step over old step, ``> 0``.
-
-    Returns
-    -------
-    ndarray, shape (m + 1, m + 1)
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> f = lambda t: 1.0 + 2.0 * t + 3.0 * t**2          # degree 2: resampling is exact
-    >>> def diffs(h):
-    ...     v = np.array([f(-i * h) for i in range(3)])
-    ...     return np.array([v[0], v[0] - v[1], v[0] - 2 * v[1] + v[2]])
-    >>> bool(np.allclose(resample_matrix(2, 0.5) @ diffs(0.2), diffs(0.1)))
-    True
-    """
-    s = -ratio * np.arange(m + 1, dtype=float)
-    B = np.ones((m + 1, m + 1))
-    for j in range(1, m + 1):  # binom(s + j - 1, j) = binom(s + j - 2, j - 1) (s + j - 1) / j
-        B[:, j] = B[:, j - 1] * (s + (j - 1)) / j
-    return _DELTA[m] @ B
-
-
-_REINTERP = {}
-_REINTERP_MAX = 4096  # cached matrices (the patterns of past times repeat: ratios are few)
-
-
-def _reinterpolation_matrix(T, k, h_new):
-    """Differences on the grid ``T[-1] - i h_new`` (i = 0..k) from values at past times.
-
-    `T` holds the times of the known values of f, oldest first (the last is the current
-    point; at least k + 1 of them). Chosen: the last k + 1 when they reach back over the new
-    span (a reduction), else, walking back, for each grid node the nearest older time (a
-    doubling). Returns ``(M, idx)``: the backward differences on the grid are ``M @ f[idx]``
-    (negative indices into `T`), ``M = Delta_k L`` with ``L`` Lagrange's interpolation matrix
-    from the chosen times to the grid (exact on polynomials of degree k; its first row is
-    ``e_0``: the current value is kept). Matrices are cached by the chosen times relative to
-    the grid, which repeat along an integration.
-    """
-    m = len(T)
-    tn = T[-1]
-    span = k * abs(h_new)
-    if m >= k + 1 and abs(tn - T[-k - 1]) >= span * (1.0 - 1e-12):
-        idx = list(range(-1, -k - 2, -1))
-    else:  # walk back: for each node the nearest older time, leaving enough for the rest
-        idx = [-1]
-        j = -1
-        for i in range(1, k + 1):
-            node = tn - i * h_new
-            j -= 1
-            lowest = -m + (k - i)
-            while j > lowest and abs(T[j - 1] - node) <= abs(T[j] - node):
-                j -= 1
-            idx.append(j)
-    u = [(T[j] - tn) / h_new for j in idx]  # chosen times, in new steps from the current one
-    key = (k, *(round(x, 12) for x in u))
-    M = _REINTERP.get(key)
-    if M is None:
-        n1 = k + 1
-        ua = np.array(key[1:])  # from the key: the matrix depends on it alone
-        du = ua[:, None] - ua[None, :]
-        du.flat[:: n1 + 1] = 1.0
-        w = 1.0 / du.prod(axis=1)  # barycentric weights
-        # L[i, j] = w_j prod_{m != j} (v_i - u_m) at v_i = -i, by prefix and suffix products
-        # (no division: exact where a grid node falls on a known time)
-        dv = -np.arange(n1, dtype=float)[:, None] - ua[None, :]
-        pre = np.ones((n1, n1 + 1))
-        suf = np.ones((n1, n1 + 1))
-        np.cumprod(dv, axis=1, out=pre[:, 1:])
-        np.cumprod(dv[:, ::-1], axis=1, out=suf[:, 1:])
-        L = pre[:, :-1] * suf[:, -2::-1] * w
-        L[0] = 0.0  # the grid starts at the current point: its value is kept, bit for bit
-        L[0, 0] = 1.0
-        M = _DELTA[k] @ L
-        if len(_REINTERP) >= _REINTERP_MAX:
-            _REINTERP.clear()
-        _REINTERP[key] = M
-    return M, idx
-
-
-def _dense_table():
-    """``C[j]``: power coefficients in x (x**1 .. x**(j+1)) of ``c_j(x - 1) - c_j(-1)``.
-
-    ``c_j(theta) = int_0^theta binom(s + j - 1, j) ds``, so that over the step ending at
-    ``t_{n+1}``, ``y(t_{n+1} + theta h) = y_{n+1} + h sum_j c_j(theta) nabla^j f_{n+1}``
-    (``theta`` in [-1, 0], ``x = theta + 1``).
-    """
-    table = []
-    for j in range(MAX_ORDER + 2):
-        p = [Fraction(1)]  # binom(s + j - 1, j) as a polynomial in s, ascending
-        for i in range(j):
-            q = [Fraction(0)] * (len(p) + 1)
-            for d, a in enumerate(p):
-                q[d] += a * i
-                q[d + 1] += a
-            p = q
-        p = [a / math.factorial(j) for a in p]
-        c = [Fraction(0)] + [a / (d + 1) for d, a in enumerate(p)]  # integral from 0
-        # substitute theta = x - 1: sum_d c_d (x - 1)^d
-        out = [Fraction(0)] * len(c)
-        for d, a in enumerate(c):
-            for e in range(d + 1):
-                out[e] += a * math.comb(d, e) * (-1) ** (d - e)
-        table.append(np.array([float(a) for a in out[1:]]))  # drop the constant term
-    return table
-
-
-_DENSE = _dense_table()
-
-
-# --- the step ------------------------------------------------------------------------------
-#
-# One attempted step of order k from (t, y) with the differences D_0 .. D_{k+1} at spacing h:
-#   q_j = D_j + q_{j+1} (q_{k-1} = D_{k-1})       predicted differences at t + h
-#   p = y + h sum_{j<k} gamma_j D_j                 Adams-Bashforth predictor
-#   e = f(t + h, p) - q_0                           nabla^k f^p_{n+1}
-#   err = |h| (gamma_{k-1} - gamma_k) ||e|| = erk = |h| |gamma*_k| ||e||  (gamma*_k =
-#   gamma_k - gamma_{k-1}: the error of order k is the estimate at order k, one number),
-#   erkm1 = |h| |gamma*_{k-1}| ||q_{k-1} + e||, erkm2 = |h| |gamma*_{k-2}| ||q_{k-2} + e||
-# and, if err <= 1:
-#   y_new = p + h gamma_k e;  c = f(t + h, y_new) - q_0
-#   D'_j = q_j + c (j < k), D'_k = c, D'_{k+1} = c - D_k,
-#   erkp1 = |h| |gamma*_{k+1}| ||D'_{k+1}||
-# A rejected attempt leaves the differences as they were.
-#
-# A *run* repeats such steps at constant spacing, changing the order by the driver's rules
-# (`_lower_order`, `_next_order`) as it goes, for as long as `_next_ratio` keeps the spacing.
-# It returns at the first step after which the spacing would change (before changing the
-# order: the driver takes that decision whole), at a rejection, before a step reaching
-# `t_stop`, after `limit` steps, or after one step if `single`. It returns
-#   (code, t, y, D, k, ns, nacc, n_order, k_max, err, erk, erkm1, erkm2, erkp1, hrho)
-# with code RUN_STOPPED (no decision needed), RUN_REJECTED (the state is the last accepted
-# one), RUN_DECIDE (the last accepted step needs the driver's decisions) or RUN_NONFINITE
-# (t and y are the failed step's); nacc counts the steps the run accepted, n_order its
-# changes of order, k_max the highest order it reached, ns the steps since the last change of
-# spacing. Every accepted step is passed to ``ts_append``, ``ys_append`` (t and a fresh y) and
-# ``hist_append`` (f at the new point).
-
-RUN_STOPPED, RUN_REJECTED, RUN_DECIDE, RUN_NONFINITE = 0, 1, 2, 3
-
-
-def _hrho(dF, e, gamma_k):
-    r"""Estimate of :math:`h\rho` (step times the local Lipschitz constant of f) from a step.
-
-    The two evaluations of a PECE step are at the predicted and the corrected values, which
-    differ by :math:`h\gamma_k e`: :math:`h\rho \approx \|dF\| / (\gamma_k \|e\|)` with
-    :math:`dF = f(y_{n+1}) - f(p)` (Euclidean norms; 0 if :math:`e = 0`). On a stiff problem
-    the stiff components dominate both, and the estimate approaches :math:`h|\lambda|`.
-    """
-    num = math.fsum(float(v) * float(v) for v in np.ravel(dF))
-    den = math.fsum(float(v) * float(v) for v in np.ravel(e))
-    return math.sqrt(num / den) / gamma_k if den > 0.0 else 0.0
-
-
-def _float_run_source(n):
-    """Source of the plain-float run for `n` equations: every order unrolled, one function.
-
-    Why generated code: for a few equations the cost of an Adams step is Python's, not the
-    arithmetic's. With every difference a local variable, unrolled for each order, and the
-    order changed inside the run, a step costs about as much as the two calls of ``fun``
-    (damped oscillator, docs' performance page); loops over lists of differences, or a return
-    to the driver at every change of order, cost several times more. The error estimates are
-    kept squared inside the run (no square roots; the comparisons are the same). The body of
-    order k is :func:`_attempt_lines`, :func:`_accept_lines` and :func:`_order_lines`, chosen
-    by a binary tree of tests on k.
-    """
-    r = range(n)
-    rows = _rows(n)
-    L = [
-        f"def adams_run_{n}(fun, t, h, y, D, k, ns, limit, t_stop, single, kmax, rtol, atols,"
-        " max_step, ts_append, ys_append, hist_append):",
-        f"    {', '.join(f'y{i}' for i in r)}, = y",
-        f"    {rows}, = D + _ZEROS[len(D):]",
-        f"    {', '.join(f'at{i}' for i in r)}, = atols",
-        "    h2 = h*h",
-        "    double_ok = 4.0*h2 <= max_step*max_step",
-        "    nacc = nord = kmaxu = 0",
-        "    erkm1 = erkm2 = erkp1 = 0.0",
-        "    while True:",
-        "        t_new = t + h",
-        "        if (t_new - t_stop)*h >= 0.0 or nacc >= limit:",
-        f"            return {RUN_STOPPED}, t, {_state(n)}, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0",
-    ]
-
-    def tree(lo, hi, ind):
-        if lo == hi:
-            return [ind + line for line in (_attempt_lines(lo, n) + _accept_lines(lo, n)
-                                            + _order_lines(lo, n))]
-        mid = (lo + hi) // 2
-        return ([f"{ind}if k <= {mid}:"] + tree(lo, mid, ind + "    ")
-                + [f"{ind}else:"] + tree(mid + 1, hi, ind + "    "))
-
-    L += tree(1, MAX_ORDER, "        ")
-    return "\n".join(L)
-
-
-#: the squared estimates returned by a run: err (= erk), erk, erkm1, erkm2
-_EST = "_sqrt(erk), _sqrt(erk), _sqrt(erkm1), _sqrt(erkm2)"
-
-
-def _rows(n):
-    return ", ".join(f"D{j}_{i}" for j in range(MAX_ORDER + 2) for i in range(n))
-
-
-def _state(n):
-    return "y, [" + _rows(n) + f"][:(k + 2)*{n}], k, ns, nacc, nord, kmaxu"
-
-
-def _q(k, j, i):
-    """The predicted difference q_j of component i (q_{k-1} is D_{k-1} itself)."""
-    return f"D{k - 1}_{i}" if j == k - 1 else f"q{j}_{i}"
-
-
-def _sq(expr, c, n):
-    """``c h^2 sum (v_i w_i)^2 = (|h| sqrt(c n) ||v||)^2``: a squared RMS norm."""
-    terms = " + ".join(f"(a{i} := ({expr(i)})*w{i})*a{i}" for i in range(n))
-    return f"{c / n!r}*h2*({terms})"
-
-
-def _attempt_lines(k, n):
-    """Order k: predict, evaluate, estimate at orders k, k-1, k-2; return if rejected."""
-    r, out = range(n), []
-    for i in r:
-        for j in range(k - 2, -1, -1):
-            out.append(f"q{j}_{i} = D{j}_{i} + {_q(k, j + 1, i)}")
-        terms = " + ".join(("" if j == 0 else f"{_G[j]!r}*") + f"D{j}_{i}" for j in range(k))
-        out.append(f"p{i} = y{i} + h*({terms})")
-    out.append(f"{', '.join(f'f{i}' for i in r)}, = "
-               f"_tolist(fun(t_new, _arr([{', '.join(f'p{i}' for i in r)}])))")
-    for i in r:
-        out.append(f"e{i} = f{i} - {_q(k, 0, i)}")
-        out.append(f"w{i} = 1.0/(at{i} + rtol*(y{i} if y{i} >= 0.0 else -y{i}))")
-    out.append(f"erk = {_sq(lambda i: f'e{i}', _GS[k] ** 2, n)}")  # also the step's error
-    if k >= 2:
-        out.append(f"erkm1 = {_sq(lambda i: f'{_q(k, k - 1, i)} + e{i}', _GS[k - 1] ** 2, n)}")
-    if k >= 3:
-        out.append(f"erkm2 = {_sq(lambda i: f'{_q(k, k - 2, i)} + e{i}', _GS[k - 2] ** 2, n)}")
-    out.append("if not erk <= 1.0:")
-    out.append(f"    return {RUN_REJECTED}, t, {_state(n)}, {_EST}, 0.0, 0.0")
-    return out
-
-
-def _accept_lines(k, n):
-    """Order k, accepted: correct, evaluate, update the differences, record the step."""
-    r, out = range(n), []
-    for i in r:
-        out.append(f"yn{i} = p{i} + {_G[k]!r}*h*e{i}")
-    yn = ", ".join(f"yn{i}" for i in r)
-    out.append(f"yn = [{yn}]")
-    out.append(f"{', '.join(f'c{i}' for i in r)}, = _tolist(fun(t_new, _arr(yn)))")
-    out.append(f"if {' + '.join(f'0.0*yn{i}' for i in r)} != 0.0:  # inf or nan")
-    out.append(f"    return {RUN_NONFINITE}, t_new, yn, [{_rows(n)}][:(k + 2)*{n}], k, ns, nacc, "
-               f"nord, kmaxu, {_EST}, 0.0, 0.0")
-    for i in r:
-        out.append(f"c{i} = c{i} - {_q(k, 0, i)}")
-        out.append(f"D{k + 1}_{i} = c{i} - D{k}_{i}")
-        out.append(f"D{k}_{i} = c{i}")
-        for j in range(k - 1, -1, -1):
-            out.append(f"D{j}_{i} = {_q(k, j, i)} + c{i}")
-    out += ["t = t_new", "y = yn", f"{', '.join(f'y{i}' for i in r)}, = {yn},", "ns += 1",
-            "nacc += 1", "ts_append(t)", "ys_append(yn)",
-            f"hist_append([{', '.join(f'D0_{i}' for i in r)}])"]
-    return out
-
-
-def _order_lines(k, n):
-    """Order k, after an accepted step: the next order (``_lower_order``, then
-    ``_next_order``, out of the first phase, which is `single`); return to the driver where
-    the spacing would change."""
-    r, out = range(n), []
-    erkp1 = _sq(lambda i: f"D{k + 1}_{i}", _GS[k + 1] ** 2, n)
-    hrho = "0.0"  # the stiffness test looks at low orders only
-    if k <= STIFF_MAX_ORDER:
-        hrho = (f"_hrho(({', '.join(f'c{i} - e{i}' for i in r)},), "
-                f"({', '.join(f'e{i}' for i in r)},), {_G[k]!r})")
-    decide = f"return {RUN_DECIDE}, t, {_state(n)}, {_EST}, _sqrt(erkp1), {hrho}"
-    out += ["if single:", f"    erkp1 = {erkp1}", f"    {decide}"]
-
-    def choose(kk, e, ind):  # next order kk with estimate e; leave the run if h would change
-        # (a wanted doubling leaves the run even when the driver will wait for the known
-        # values of f to reach back far enough: the driver alone knows them)
-        return [ind + line for line in (
-            f"k2, e2 = {kk}, {e}",
-            f"if not 0.25 >= e2 or (double_ok and 0.25 >= {4.0 ** (kk + 1)!r}*e2):",
-            f"    {decide}")]
-
-    if k >= 3:
-        out.append("if erkm1 <= erk and erkm2 <= erk:")
-    elif k == 2:
-        out.append("if erkm1 <= 0.25*erk:")
-    if k >= 2:
-        out += choose(k - 1, "erkm1", "    ")
-        out.append(f"elif ns > {k}:")
-    else:
-        out.append(f"if ns > {k}:")
-    out.append(f"    erkp1 = {erkp1}")
-    if k == 1:
-        out.append("    if kmax > 1 and erkp1 < 0.25*erk:")
-        out += choose(2, "erkp1", "        ")
-    else:
-        out.append("    if erkm1 <= erk and erkm1 <= erkp1:")
-        out += choose(k - 1, "erkm1", "        ")
-        out.append(f"    elif erkp1 < erk and kmax > {k}:")
-        out += choose(k + 1, "erkp1", "        ")
-    out.append("    else:")
-    out += choose(k, "erk", "        ")
-    out.append("else:")
-    out += choose(k, "erk", "    ")
-    out += [f"if k2 != {k}:", "    nord += 1", "    k = k2"]
-    if k < MAX_ORDER:
-        out += [f"    if k2 > {k}:  # one more difference, unknown",
-                f"        {', '.join(f'D{k + 2}_{i}' for i in r)} = {', '.join('0.0' for i in r)}",
-                "        if k2 > kmaxu:", "            kmaxu = k2"]
-    return out
-
-
-def _float_run(n):
-    """The plain-float run for `n` equations (generated once by the shared compiler)."""
-    return cached(("adams", n), lambda: compile_function(
-        _float_run_source(n).split("\n"), f"adams_run_{n}", f"adams, {n} equations",
-        {"_sqrt": math.sqrt, "_hrho": _hrho, "_ZEROS": [0.0] * ((MAX_ORDER + 2) * n)}))
-
-
-def _array_run(k, call, norm, t, h, y, D, ns, rtol, atol, ts_append, ys_append, hist_append):
-    """One step on arrays (batches, larger systems): `D` of shape (k + 2, N).
-
-    Returns after one attempt (as a ``single`` run), with the codes of the plain-float run.
-    """
-    ah = abs(h)
-    t_new = t + h
-    q = np.cumsum(D[k - 1::-1], axis=0)[::-1]  # q_j = sum_{m=j}^{k-1} D_m, j = 0..k-1
-    p = y + h * (np.asarray(_G[:k]) @ D[:k])
-    e = call(t_new, p) - q[0]
-    w = 1.0 / (atol + rtol * np.abs(y))
-    erk = err = _GS[k] * ah * norm(e * w)  # err = erk (see "the step" above)
-    erkm1 = _GS[k - 1] * ah * norm((q[k - 1] + e) * w) if k >= 2 else 0.0
-    erkm2 = _GS[k - 2] * ah * norm((q[k - 2] + e) * w) if k >= 3 else 0.0
-    est = (err, erk, erkm1, erkm2)
-    if not err <= 1.0:
-        return (RUN_REJECTED, t, y, D, k, ns, 0, 0, 0) + est + (0.0, 0.0)
-    y_new = p + (h * _G[k]) * e
-    c = call(t_new, y_new) - q[0]
-    if not np.isfinite(y_new).all():
-        return (RUN_NONFINITE, t_new, y_new, D, k, ns, 0, 0, 0) + est + (0.0, 0.0)
-    Dn = np.empty_like(D)
-    Dn[:k] = q + c
-    Dn[k] = c
-    Dn[k + 1] = c - D[k]
-    erkp1 = _GS[k + 1] * ah * norm(Dn[k + 1] * w)
-    ts_append(t_new)
-    ys_append(y_new)
-    hist_append(Dn[0])
-    hrho = _hrho(c - e, e, _G[k]) if k <= STIFF_MAX_ORDER else 0.0
-    return (RUN_DECIDE, t_new, y_new, Dn, k, ns + 1, 1, 0, 0) + est + (erkp1, hrho)
+#: the PECE pair becomes too small to gain anything). The tables (``_adams_tables``), the steps
+#: and the rules of order and step (``_adams_run``) and this driver are split by concern.
+MAX_ORDER = _MAX_ORDER
 
 
 # --- the driver ----------------------------------------------------------------------------
@@ -506,21 +125,6 @@ def _check_max_order(max_order):
         )
     return int(max_order)
 
-
-def _dense_coefficients(y_old, y_new, D, k, h):
-    """Power-form coefficients ``Q`` (``y(x) = y_old + sum_m Q[m] x**(m+1)``) of one step."""
-    Q = np.zeros((MAX_ORDER + 1, y_old.size))  # one shape for every step, whatever k
-    for j in range(k + 1):
-        Q[: j + 1] += np.multiply.outer(_DENSE[j], h * D[j])
-    # the integrated polynomial anchored at y_new, moved to pass through y_old at x = 0:
-    # y(x) = y_old + x (y_new - y_old - sum(Q)) + sum_m Q[m] x^(m+1)
-    Q[0] += (y_new - y_old) - Q.sum(axis=0)
-    return Q
-
-
-def _lazy_dense(y_old, y_new, D, k, h):
-    """A zero-argument callable computing :func:`_dense_coefficients` when needed."""
-    return lambda: _dense_coefficients(y_old, y_new, D, k, h)
 
 
 def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
@@ -582,68 +186,6 @@ def adams(fun, t_span, y0, *, step=None, rtol=1e-6, atol=1e-9, first_step=None,
                           events=events, max_order=max_order, nstiff=nstiff,
                           progress=progress, t_eval=t_eval)
 
-
-#: cache of re-sampling matrices for the usual ratios: 0.25, 0.5 ... 0.9, 2 (the ratios of a
-#: reduction are rounded down to tenths for that); other ratios (the last step) are not kept
-_RESAMPLE = {}
-_USUAL_RATIOS = frozenset([0.25, 0.5, 0.6, 0.7, 0.8, 0.9, 2.0])
-
-
-def _resample_cached(k, ratio):
-    if ratio not in _USUAL_RATIOS:
-        return resample_matrix(k, ratio)
-    T = _RESAMPLE.get((k, ratio))
-    if T is None:
-        T = _RESAMPLE[(k, ratio)] = resample_matrix(k, ratio)
-    return T
-
-
-def _next_order(k, knew, phase1, ns, erk, erkm1, erkp1, max_order):
-    """Order of the next step after an accepted one, DE/STEP's block 4.
-
-    Returns ``(k_next, erk_next, phase1)``: the order, the error estimate at that order, and
-    whether the first phase (raising the order and doubling the step at every step) goes on.
-    `knew` is ``k - 1`` when the attempt's estimates asked for a lower order.
-    """
-    if knew == k - 1 or k == max_order:
-        phase1 = False
-    if phase1:
-        return k + 1, erkp1, True
-    if knew == k - 1:
-        return k - 1, erkm1, False
-    if k + 1 <= ns:
-        if k == 1:
-            if erkp1 < 0.5 * erk and max_order > 1:
-                return 2, erkp1, False
-        elif erkm1 <= min(erk, erkp1):
-            return k - 1, erkm1, False
-        elif erkp1 < erk and k < max_order:
-            return k + 1, erkp1, False
-    return k, erk, False
-
-
-def _lower_order(k, erk, erkm1, erkm2):
-    """The order the attempt's estimates ask for: ``k`` or ``k - 1`` (DE/STEP, block 2)."""
-    if k > 2:
-        return k - 1 if max(erkm1, erkm2) <= erk else k
-    if k == 2 and erkm1 <= 0.5 * erk:
-        return 1
-    return k
-
-
-def _next_ratio(k, erk, phase1, reach, h_abs, max_step):
-    """New spacing over old after an accepted step of order `k` (DE/STEP, block 4).
-
-    Doubled when the estimate is 2**(k+1) below half the tolerance (above order
-    RESAMPLE_DOUBLING_MAX_ORDER only once the known values of f `reach` back over 2k steps),
-    kept while it is below half, else reduced by 0.5..0.9 rounded down to tenths.
-    """
-    if ((phase1 or 0.5 >= erk * 2.0 ** (k + 1)) and 2.0 * h_abs <= max_step
-            and (k <= RESAMPLE_DOUBLING_MAX_ORDER or reach >= 2 * k * h_abs)):
-        return 2.0
-    if 0.5 >= erk:
-        return 1.0
-    return max(0.5, min(0.9, math.floor(10.0 * (0.5 / erk) ** (1.0 / (k + 1))) / 10.0))
 
 
 def _start(fun, t_span, y0, rtol, atol, first_step, max_step, dense_output, events, t_eval):

@@ -33,7 +33,7 @@ import sympy as sp
 
 from .._core.errors import ArgumentError
 from .._core.lazy import lazy_functions
-from .one_dof import _as, _lib, _positive
+from ._scalars import _as, _lib, _positive
 
 # lazy: import cost (scipy takes as long as sympy to import; see docs/performance)
 (ellipkm1,) = lazy_functions(globals(), "scipy.special", "ellipkm1")

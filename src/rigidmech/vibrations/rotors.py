@@ -22,7 +22,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError
-from .one_dof import _as, _lib, _positive
+from ._scalars import _as, _lib, _positive
 
 __all__ = ["rotor_bearing_action", "bearing_forces", "balancing_masses",
            "equivalent_length", "centre_of_percussion", "kater_conjugate",
