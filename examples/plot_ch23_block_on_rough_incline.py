@@ -67,11 +67,11 @@ def rough_incline(angle):
     x, y = rm.coordinates("x y")
     R0 = rm.Frame("R0")
     G = R0.point("G", x, y, 0)
+    Rb = R0.translated("Rb", G)                         # the block's frame
     s = rm.System(galilean=R0)
-    s.connect(R0, rm.Body("block", frame=R0.translated("Rb", G), mass=1.0, centre=G),
-              FrictionContact(ContactKinematics(R0.translated("Rb", G), R0,
-                                                at=R0.point("I", x, y, 0), normal=R0.j),
-                              friction=law))
+    s.connect(R0, rm.Body("block", frame=Rb, mass=1.0, centre=G),
+              FrictionContact(ContactKinematics(Rb, R0, at=R0.point("I", x, y, 0),
+                                                normal=R0.j), friction=law))
     s.act(rm.gravity(g * (math.sin(angle) * R0.i - math.cos(angle) * R0.j)))
     return s
 
