@@ -6,7 +6,7 @@ The restricted three-body problem: a probe P of negligible mass moves in the pla
 orbit of the Earth E and the Moon M, which turn on circles about their barycentre O. Units:
 the Earth-Moon distance D and the constant of gravitation G are 1, the masses
 :math:`m_E = 1 - \\mu` and :math:`m_M = \\mu = 0.01215`, so that the pair turns at
-:math:`\\Omega = \\sqrt{m_E + m_M} = 1` (Kepler's third law; the time unit is 4.35 days).
+:math:`\\Omega = \\sqrt{m_E + m_M} = 1` (Kepler's third law; the time unit is 4.34 days).
 The Galilean frame :math:`R_0 = (O; \\mathbf{i}, \\mathbf{j})`; the frame :math:`R_1` of the
 pair turns by :math:`\\Omega t` about :math:`\\mathbf{k}`, E at :math:`-\\mu\\,\\mathbf{i}_1`,
 M at :math:`(1 - \\mu)\\,\\mathbf{i}_1`.
@@ -91,7 +91,7 @@ ax1.set_ylabel(r"$\eta$ [D]")
 ax1.set_title("path in the Earth-Moon frame $R_1$", fontsize=10)
 ax1.legend(loc="lower left", fontsize=8)
 ax2.semilogy(t[1:], np.maximum(drift[1:], 1e-17))
-ax2.set_xlabel("t [4.35 days]")
+ax2.set_xlabel("t [4.34 days]")
 ax2.set_ylabel(r"$|C_J(t) - C_J(0)|\ /\ |C_J(0)|$")
 ax2.set_title("Jacobi's integral along the motion", fontsize=10)
 plt.show()

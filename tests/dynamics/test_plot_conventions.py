@@ -157,4 +157,4 @@ def test_a_scene_in_other_units_says_so(tmp_path):
     fig = scenes.plot_simulation(rep.simulation, tmp_path / "probe.png", units=sc.units,
                                  time_unit=sc.time_unit)
     assert [a.get_ylabel() for a in fig.axes][:2] == ["$x$ [D]", "$y$ [D]"]
-    assert fig.axes[-1].get_xlabel() == "t [4.35 days]" and _texts_outside(fig) == []
+    assert fig.axes[-1].get_xlabel() == "t [4.34 days]" and _texts_outside(fig) == []

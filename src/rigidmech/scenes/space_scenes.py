@@ -155,7 +155,7 @@ SPACE_SCENES = (
                       ("mE", 1.0 - EARTH_MOON_MU, "mass of the Earth (G = 1)"),
                       ("mM", EARTH_MOON_MU, "mass of the Moon (G = 1)")),
           q0=(0.1 - EARTH_MOON_MU, 0.0), u0=(0.0, 4.2), t_end=6.0, rtol=1e-11, atol=1e-12,
-          builder=_moon_probe, units={"x": "D", "y": "D"}, time_unit="4.35 days",
+          builder=_moon_probe, units={"x": "D", "y": "D"}, time_unit="4.34 days",
           notes="x, y: position of the probe in the barycentric Galilean frame; units: the "
                 "Earth-Moon distance D and G = 1 (with the default masses, t = 2 pi is 27.3 "
                 "days). The Earth and the Moon move on circular orbits; Jacobi's integral "
