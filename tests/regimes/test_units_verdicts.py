@@ -5,28 +5,16 @@ gets the same regimes, and motions equal up to the factor 1000. The start's "sli
 is zero" was 1e-12 (|q'| + 1) in the units of q': a speed of 1e-13 m/s stuck in metres and
 slid in millimetres (1e-10 mm/s)."""
 
+import friction_block
 import pytest
 
-import rigidmech as rm
-from rigidmech.actions import Coulomb, FrictionContact, Spring
-from rigidmech.kinematics import ContactKinematics
 from rigidmech.regimes import contact_motion
 
 LIMIT = 0.15
 
 
 def block(unit):
-    x, y = rm.coordinates("x y")
-    R0 = rm.Frame("R0")
-    G = R0.point("G", x, y, 0)
-    R1 = R0.translated("R1", G)
-    b = rm.Body("block", frame=R1, mass=1, centre=G)
-    s = rm.System(galilean=R0)
-    s.connect(R0, b, FrictionContact(ContactKinematics(
-        R1, R0, at=R0.point("I", x, y, 0), normal=R0.j), friction=Coulomb(LIMIT)))
-    s.act(rm.gravity(-unit * R0.j))
-    s.act(Spring(1, 0, a=R0.origin, b=G, on_b=b))
-    return s
+    return friction_block.block(LIMIT, g=unit)
 
 
 def _runs(x0, v0):
