@@ -103,6 +103,9 @@ def test_critical_speeds_of_the_papers_matrices():
     from its own matrices, against an independent root finding on the 4 x 4 state matrix."""
     weave, capsize = critical_speeds(M_PAPER, C1_PAPER, K0_PAPER, K2_PAPER, 9.81)
     assert weave == pytest.approx(4.2924, abs=5e-4) and capsize == pytest.approx(6.0243, abs=5e-4)
+    # the paper's speeds to all the digits it gives (Meijaard et al. 2007, from its matrices
+    # above at g = 9.81): v_w = 4.29238253634111, v_c = 6.02426201538837 m/s
+    assert abs(weave - 4.29238253634111) < 1e-10 and abs(capsize - 6.02426201538837) < 1e-10
     Mi = np.linalg.inv(M_PAPER)
 
     def eig(v):
