@@ -151,3 +151,28 @@ def test_an_inclined_orbit_is_drawn_in_its_perifocal_axes():
 def test_bad_arguments_are_named(kwargs, match):
     with pytest.raises(ArgumentError, match=match):
         _ellipse().plot(**kwargs)
+
+
+@pytest.mark.parametrize("r1, r2", [(6678.0, 42164.0), (42164.0, 6678.0)])
+def test_a_hohmann_transfer_draws_its_three_orbits_touching_at_the_burns(r1, r2):
+    from rigidmech.kinematics.kepler import HohmannTransfer
+
+    ax = HohmannTransfer(398600.0, r1, r2).plot(unit="km")
+    lines = {line.get_label(): line.get_xydata() for line in ax.lines}
+    np.testing.assert_allclose(np.hypot(*lines["departure circle"].T), r1, rtol=1e-12)
+    np.testing.assert_allclose(np.hypot(*lines["arrival circle"].T), r2, rtol=1e-12)
+    transfer = lines["transfer"]
+    # the ellipse with a focus at the centre and apsides r1, r2: p = 2 r1 r2 / (r1 + r2)
+    r_p, r_a = min(r1, r2), max(r1, r2)
+    e, p = (r_a - r_p) / (r_a + r_p), 2 * r_a * r_p / (r_a + r_p)
+    r = np.hypot(*transfer.T)
+    direction = np.array([1.0, 0.0]) if r2 > r1 else np.array([-1.0, 0.0])
+    np.testing.assert_allclose(r, p / (1 + e * (transfer @ direction) / r), rtol=1e-12)
+    # departure burn on +x at r1, arrival burn on -x at r2
+    np.testing.assert_allclose(lines["periapsis" if r2 > r1 else "apoapsis"][0], [r1, 0.0],
+                               atol=1e-9 * r1)
+    np.testing.assert_allclose(lines["apoapsis" if r2 > r1 else "periapsis"][0], [-r2, 0.0],
+                               atol=1e-9 * r2)
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("x [km]", "y [km]")
+    assert ax.get_legend() is None and len(ax.figure.legends) == 1
+    assert _texts_outside(ax.figure) == []

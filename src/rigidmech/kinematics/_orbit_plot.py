@@ -86,6 +86,65 @@ def _basis(orbit):
     return P, np.cross(orbit.normal, P), ("ξ", "η")
 
 
+def _check(points, extent, unit):
+    if isinstance(points, bool) or not isinstance(points, numbers.Integral) or points < 3:
+        raise ArgumentError(f"`points` must be an integer >= 3 (points on the curve); got "
+                            f"{points!r}.")
+    if not (isinstance(extent, numbers.Real) and math.isfinite(extent) and extent > 1):
+        raise ArgumentError(f"`extent` must be a finite number > 1 (the open branch is drawn "
+                            f"out to extent * periapsis); got {extent!r}.")
+    if unit is not None and not (isinstance(unit, str) and unit):
+        raise ArgumentError(f"`unit` must be a non-empty string such as 'km'; got {unit!r}. "
+                            "Leave it out for plain 'x', 'y' labels.")
+
+
+def _new_axes(path):
+    """A new figure in a constrained layout (labels never cut): off-screen when a path is
+    given, pyplot's otherwise."""
+    if path is not None:
+        from matplotlib.figure import Figure  # imported on use (slow import)
+
+        fig = Figure(figsize=(6.5, 5), layout="constrained")
+    else:
+        import matplotlib.pyplot as plt  # imported on use (slow import)
+
+        fig = plt.figure(figsize=(6.5, 5), layout="constrained")
+    return fig.add_subplot()
+
+
+def _draw(orbit, ax, *, points, focus, apsides, extent, label, basis, **style):
+    e1, e2, _ = basis
+    xyz = conic_points(orbit, points, extent)
+    text = label if label is not None else f"{orbit.kind}, e = {orbit.eccentricity:.4g}"
+    ax.plot(xyz @ e1, xyz @ e2, label=text, **style)
+    if focus:
+        ax.plot([0.0], [0.0], "k+", markersize=10, linestyle="none", label="centre")
+    if apsides and orbit.kind != "circle":         # a circle has no apsides
+        peri = orbit.periapsis * orbit.periapsis_direction
+        ax.plot([peri @ e1], [peri @ e2], "v", color="C3", linestyle="none",
+                label="periapsis")
+        if orbit.is_bound:
+            apo = -orbit.apoapsis * orbit.periapsis_direction
+            ax.plot([apo @ e1], [apo @ e2], "^", color="C2", linestyle="none",
+                    label="apoapsis")
+
+
+def _finish(ax, own, basis, unit, path):
+    """Equal aspect, labels with the unit, the legend off the data, the file."""
+    ax.set_aspect("equal", adjustable="datalim")
+    suffix = f" [{unit}]" if unit else ""
+    ax.set_xlabel(basis[2][0] + suffix)
+    ax.set_ylabel(basis[2][1] + suffix)
+    ax.grid(True, alpha=0.3)
+    if own:
+        ax.figure.legend(*ax.get_legend_handles_labels(), loc="outside right upper")
+    else:   # outside the axes, on their right (off the data)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    if path is not None:
+        ax.figure.savefig(path, dpi=100)
+    return ax
+
+
 def plot_orbit(orbit, ax=None, *, points=200, focus=True, apsides=True, path=None,
                unit=None, extent=10.0, label=None):
     """The body of :meth:`Orbit.plot <rigidmech.kinematics.orbits.Orbit.plot>`.
@@ -99,49 +158,48 @@ def plot_orbit(orbit, ax=None, *, points=200, focus=True, apsides=True, path=Non
     ('x [AU]', 'y [AU]')
     >>> plt.close("all")
     """
-    if isinstance(points, bool) or not isinstance(points, numbers.Integral) or points < 3:
-        raise ArgumentError(f"`points` must be an integer >= 3 (points on the curve); got "
-                            f"{points!r}.")
-    if not (isinstance(extent, numbers.Real) and math.isfinite(extent) and extent > 1):
-        raise ArgumentError(f"`extent` must be a finite number > 1 (the open branch is drawn "
-                            f"out to extent * periapsis); got {extent!r}.")
-    if unit is not None and not (isinstance(unit, str) and unit):
-        raise ArgumentError(f"`unit` must be a non-empty string such as 'km'; got {unit!r}. "
-                            "Leave it out for plain 'x', 'y' labels.")
+    _check(points, extent, unit)
     own = ax is None
     if own:
-        if path is not None:
-            from matplotlib.figure import Figure  # imported on use (slow import)
+        ax = _new_axes(path)
+    basis = _basis(orbit)
+    _draw(orbit, ax, points=points, focus=focus, apsides=apsides, extent=extent, label=label,
+          basis=basis)
+    return _finish(ax, own, basis, unit, path)
 
-            fig = Figure(figsize=(6.5, 5), layout="constrained")
-        else:
-            import matplotlib.pyplot as plt  # imported on use (slow import)
 
-            fig = plt.figure(figsize=(6.5, 5), layout="constrained")
-        ax = fig.add_subplot()
-    e1, e2, names = _basis(orbit)
-    xyz = conic_points(orbit, points, extent)
-    text = label if label is not None else f"{orbit.kind}, e = {orbit.eccentricity:.4g}"
-    ax.plot(xyz @ e1, xyz @ e2, label=text)
-    if focus:
-        ax.plot([0.0], [0.0], "k+", markersize=10, linestyle="none", label="centre")
-    if apsides and orbit.kind != "circle":         # a circle has no apsides
-        peri = orbit.periapsis * orbit.periapsis_direction
-        ax.plot([peri @ e1], [peri @ e2], "v", color="C3", linestyle="none",
-                label="periapsis")
-        if orbit.is_bound:
-            apo = -orbit.apoapsis * orbit.periapsis_direction
-            ax.plot([apo @ e1], [apo @ e2], "^", color="C2", linestyle="none",
-                    label="apoapsis")
-    ax.set_aspect("equal", adjustable="datalim")
-    suffix = f" [{unit}]" if unit else ""
-    ax.set_xlabel(names[0] + suffix)
-    ax.set_ylabel(names[1] + suffix)
-    ax.grid(True, alpha=0.3)
+def plot_transfer(transfer, ax=None, *, points=200, path=None, unit=None):
+    """The body of :meth:`HohmannTransfer.plot <rigidmech.kinematics.kepler.HohmannTransfer.plot>`:
+    the departure and arrival circles and the transfer ellipse, its apsides on them, the
+    departure on the x axis.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> from rigidmech.kinematics.kepler import HohmannTransfer
+    >>> ax = plot_transfer(HohmannTransfer(1.0, 1.0, 4.0))
+    >>> [line.get_label() for line in ax.lines]
+    ['departure circle', 'centre', 'arrival circle', 'transfer', 'periapsis', 'apoapsis']
+    >>> plt.close("all")
+    """
+    from .orbits import Orbit  # orbits imports kepler: the class only on demand
+
+    _check(points, 10.0, unit)
+    own = ax is None
     if own:
-        ax.figure.legend(*ax.get_legend_handles_labels(), loc="outside right upper")
-    else:   # outside the axes, on their right (off the data)
-        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-    if path is not None:
-        ax.figure.savefig(path, dpi=100)
-    return ax
+        ax = _new_axes(path)
+    mu, r1, r2 = transfer.mu, transfer.r1, transfer.r2
+    sign = 1.0 if r2 >= r1 else -1.0             # the departure point on +x
+    ellipse = Orbit.from_apsides(min(r1, r2), max(r1, r2), mu=mu,
+                                 argument_of_periapsis=0.0 if r2 >= r1 else math.pi)
+    basis = _basis(ellipse)
+    for orbit, text, focus in (
+            (Orbit([r1, 0.0, 0.0], [0.0, sign * math.sqrt(mu / r1), 0.0], mu=mu),
+             "departure circle", True),
+            (Orbit([r2, 0.0, 0.0], [0.0, sign * math.sqrt(mu / r2), 0.0], mu=mu),
+             "arrival circle", False)):
+        _draw(orbit, ax, points=points, focus=focus, apsides=False, extent=10.0, label=text,
+              basis=basis, color="0.5", linestyle=":" if focus else "--")
+    _draw(ellipse, ax, points=points, focus=False, apsides=True, extent=10.0,
+          label="transfer", basis=basis, color="C0")
+    return _finish(ax, own, basis, unit, path)
