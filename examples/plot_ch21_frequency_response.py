@@ -46,12 +46,12 @@ print(lin.M, lin.C, lin.K, lin.B)
 # --------------------------------------------
 # m = 1 kg, k = 100 N/m: w0 = 10 rad/s. The amplitude is that of x for a unit force.
 omega = np.linspace(0.5, 25, 600)
-fig, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
+fig, axes = plt.subplots(2, 1, sharex=True, figsize=(8, 6), layout="constrained")
 for c_value in (0.5, 2.0, 6.0):
     values = {"m": 1.0, "k": 100.0, "c": c_value}
     zeta = damping_ratio(c_value, 100.0, 1.0)
     H = lin.frequency_response(omega, input="F", **values)
-    plot_frequency_response(omega, H, labels=[f"zeta = {zeta:.3f}"], ax=axes)
+    plot_frequency_response(omega, H, labels=[f"zeta = {zeta:.3f}"], ax=axes, unit="m/N")
     w0 = natural_frequency(100.0, 1.0)
     wr, Xr = resonance(w0, zeta, static_deflection=1 / 100.0)
     axes[0].plot([wr], [Xr], "k.")
@@ -59,4 +59,3 @@ for c_value in (0.5, 2.0, 6.0):
         w1, w2 = half_power_frequencies(w0, zeta)
         axes[0].plot([w1, w2], [Xr / np.sqrt(2)] * 2, "k|-", lw=0.8)
 axes[0].set_title("steady response of m x'' + c x' + k x = F cos(w t), per unit force")
-fig.tight_layout()

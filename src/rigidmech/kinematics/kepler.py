@@ -200,6 +200,38 @@ class HohmannTransfer:
         """pi sqrt(a^3 / mu), half a period of the transfer ellipse."""
         return math.pi * math.sqrt(self.semi_major_axis**3 / self._mu)
 
+    def plot(self, ax=None, *, points=200, path=None, unit=None):
+        """Draw the departure circle, the arrival circle and the transfer ellipse (ch. 27.3),
+        the centre and the two burns at the apsides, on the conventions of
+        :meth:`Orbit.plot <rigidmech.kinematics.orbits.Orbit.plot>`: equal aspect, axes
+        ``x [unit]``, ``y [unit]``, a new figure in a constrained layout with its legend
+        outside the axes. The departure is on the +x axis, the motion counter-clockwise.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+        points : int
+            Points on each curve (>= 3).
+        path : str or path, optional
+            Save the figure there (a new figure is then drawn off-screen).
+        unit : str, optional
+            The length unit of the labels.
+
+        Returns
+        -------
+        Axes
+
+        Examples
+        --------
+        >>> ax = HohmannTransfer(398600.0, 6678.0, 42164.0).plot(unit="km")
+        >>> ax.get_xlabel(), len(ax.figure.legends)
+        ('x [km]', 1)
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
+        from ._orbit_plot import plot_transfer
+
+        return plot_transfer(self, ax, points=points, path=path, unit=unit)
+
     def __repr__(self):
         return (f"HohmannTransfer(mu={self._mu:g}, r1={self._r1:g}, r2={self._r2:g}: "
                 f"dv1={self.delta_v1:.6g}, dv2={self.delta_v2:.6g}, time={self.time:.6g})")

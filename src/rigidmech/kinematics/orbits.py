@@ -34,6 +34,7 @@ import numpy as np
 
 from .._core.errors import ArgumentError
 from ._orbit_elements import periapsis_speed, perifocal_basis
+from ._orbit_plot import in_xy_plane, plot_orbit
 from ._universal import propagate, time_from_periapsis
 from .kepler import (  # moved there (split); re-exported so they stay importable here
     HohmannTransfer,
@@ -339,7 +340,7 @@ class Orbit:
         the plane z = 0) to the periapsis, in the sense of the motion."""
         w = self.normal
         node = np.cross([0.0, 0.0, 1.0], w)
-        if np.linalg.norm(node) < 1e-14:
+        if in_xy_plane(w):
             node = np.array([1.0, 0.0, 0.0])
         node = node / np.linalg.norm(node)
         angle = math.atan2(np.cross(node, self._P) @ w, node @ self._P)
@@ -426,6 +427,55 @@ class Orbit:
             pos[index], vel[index] = propagate(self._r0, self._v0, alpha, self._mu, dt,
                                                float(ti))
         return pos, vel
+
+    def plot(self, ax=None, *, points=200, focus=True, apsides=True, path=None, unit=None,
+             extent=10.0, label=None):
+        """Draw the conic in its plane (ch. 8.2): the curve, the attracting centre at its
+        focus, the periapsis and the apoapsis.
+
+        On the conventions of the library's other plots: axes labelled with their name and
+        unit, equal aspect, a new figure in a constrained layout (no label is cut) with its
+        legend outside the axes, on the right (on given axes the legend goes to their right).
+        An orbit in the plane z = 0 is drawn in the axes x, y of its frame; any other in its
+        perifocal axes, ξ towards the periapsis and η 90 degrees ahead in the sense of the
+        motion. The points satisfy r = p / (1 + e cos nu) (:meth:`radius_at`) to rounding.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Default a new figure (pyplot's, or off-screen when ``path`` is given).
+        points : int
+            Points on the curve (>= 3). An ellipse is closed (uniform in the eccentric
+            anomaly); a parabola or a hyperbola is drawn over the true anomalies where
+            r <= ``extent`` * periapsis (always inside the asymptotes, so finite).
+        focus, apsides : bool
+            Mark the attracting centre; the periapsis (and the apoapsis of an ellipse; a
+            circle has none).
+        path : str or path, optional
+            Save the figure there.
+        unit : str, optional
+            The length unit of the labels (``"x [km]"``); plain ``x``, ``y`` if not given.
+        extent : float
+            > 1, the reach of an open branch in periapsis distances (default 10).
+        label : str, optional
+            The curve's legend entry (default its kind and eccentricity).
+
+        Returns
+        -------
+        Axes
+
+        Examples
+        --------
+        >>> o = Orbit.from_apsides(7000.0, 42000.0, mu=398600.0)
+        >>> ax = o.plot(unit="km")
+        >>> ax.get_xlabel(), ax.get_ylabel()
+        ('x [km]', 'y [km]')
+        >>> [t.get_text() for t in ax.figure.legends[0].get_texts()]
+        ['ellipse, e = 0.7143', 'centre', 'periapsis', 'apoapsis']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
+        return plot_orbit(self, ax, points=points, focus=focus, apsides=apsides, path=path,
+                          unit=unit, extent=extent, label=label)
 
     def __repr__(self):
         return (f"Orbit({self._kind}: e={self._e:.6g}, p={self._p:.6g}, "

@@ -345,21 +345,38 @@ def harmonic_response_direct(mass, damping, stiffness, force, omega):
     return out
 
 
-def plot_frequency_response(omega, response, *, labels=None, ax=None, path=None, log=True):
-    """Bode-style plot: amplitude (top) and phase lag (bottom) against the frequency.
+def plot_frequency_response(omega, response, *, labels=None, ax=None, path=None, log=True,
+                            unit=None, degrees=False):
+    """Bode-style plot: amplitude (top) and phase lag (bottom) against the angular
+    frequency, on the conventions of :meth:`Simulation.plot
+    <rigidmech.dynamics.Simulation.plot>` (ch. 21).
+
+    The axes are labelled with their quantity and unit ("ω [rad/s]", "amplitude [m]",
+    "phase lag [rad]"); a new figure has a constrained layout (no label is cut) and its
+    legend outside the axes, on the right; on given axes the legend is placed to the right
+    of the amplitude axes, off the data.
 
     Parameters
     ----------
     omega : array (m,)
+        Angular frequencies, in rad/s.
     response : complex array (m,) or (n, m)
         Complex amplitudes (from :meth:`Modes.harmonic_response`,
         :func:`harmonic_response_direct` or :meth:`LinearSystem.frequency_response`).
     labels : list of str, optional
+        One per row of ``response`` (default ``q1``, ``q2``, ... for several rows, none for
+        one).
     ax : pair of matplotlib Axes, optional
+        Amplitude and phase axes; default a new figure.
     path : str, optional
-        Save the figure there (drawn off-screen).
+        Save the figure there (a new figure is then drawn off-screen).
     log : bool
         Logarithmic amplitude axis.
+    unit : str, optional
+        The unit of the amplitudes (``"m"``, ``"m/N"``): the amplitude axis reads
+        ``amplitude [unit]``; plain ``amplitude`` when not given.
+    degrees : bool
+        Phase lag in degrees (``phase lag [deg]``) instead of radians.
 
     Returns
     -------
@@ -371,8 +388,12 @@ def plot_frequency_response(omega, response, *, labels=None, ax=None, path=None,
     >>> w = np.linspace(0.1, 3.0, 50)
     >>> H = 1.0 / (1.0 - w**2 + 0.2j * w)
     >>> ax_amp, ax_phase = plot_frequency_response(w, H, path=None, ax=None)
+    >>> ax_amp.get_ylabel(), ax_phase.get_ylabel(), ax_phase.get_xlabel()
+    ('amplitude', 'phase lag [rad]', 'ω [rad/s]')
+    >>> ax_amp, _ = plot_frequency_response(w, H, unit="m/N", degrees=True)
     >>> ax_amp.get_ylabel()
-    'amplitude'
+    'amplitude [m/N]'
+    >>> import matplotlib.pyplot as plt; plt.close("all")
     """
     H = np.atleast_2d(np.asarray(response))
     w = np.asarray(omega, dtype=float)
@@ -380,26 +401,37 @@ def plot_frequency_response(omega, response, *, labels=None, ax=None, path=None,
         raise ArgumentError(
             f"`response` must have {w.size} values per row (one per frequency); got shape "
             f"{H.shape}.")
-    if ax is None:
-        from matplotlib.figure import Figure  # imported on use (slow import)
+    if labels is not None and len(labels) != H.shape[0]:
+        raise ArgumentError(f"`labels` must give {H.shape[0]} labels (one per row of "
+                            f"`response`); got {len(labels)}.")
+    if unit is not None and not (isinstance(unit, str) and unit):
+        raise ArgumentError(f"`unit` must be a non-empty string such as 'm' or 'm/N'; got "
+                            f"{unit!r}. Leave it out for a plain 'amplitude' label.")
+    from ..dynamics._files import _axes  # the conventions of Simulation.plot
 
-        fig = Figure(figsize=(7, 5))
-        ax = fig.subplots(2, 1, sharex=True)
-    ax_amp, ax_phase = ax
+    own = ax is None
+    if not own and (not isinstance(ax, (list, tuple, np.ndarray)) or len(ax) != 2):
+        raise ArgumentError("`ax` must be a pair (amplitude Axes, phase Axes); got "
+                            f"{ax!r}. Leave it out to get a new figure.")
+    ax_amp, ax_phase = _axes(2, path, ax, (7, 5))
+    scale = 180.0 / np.pi if degrees else 1.0
     for n, row in enumerate(H):
         label = labels[n] if labels is not None else (f"q{n + 1}" if H.shape[0] > 1 else None)
         ax_amp.plot(w, np.abs(row), label=label)
-        ax_phase.plot(w, -np.unwrap(np.angle(row)), label=label)
+        ax_phase.plot(w, -scale * np.unwrap(np.angle(row)), label=label)
     if log:
         ax_amp.set_yscale("log")
-    ax_amp.set_ylabel("amplitude")
-    ax_phase.set_ylabel("phase lag (rad)")
-    ax_phase.set_xlabel("angular frequency (rad/s)")
+    ax_amp.set_ylabel(f"amplitude [{unit}]" if unit else "amplitude")
+    ax_phase.set_ylabel("phase lag [deg]" if degrees else "phase lag [rad]")
+    ax_phase.set_xlabel("ω [rad/s]")
     for a in (ax_amp, ax_phase):
         a.grid(True, alpha=0.3)
     if H.shape[0] > 1 or labels is not None:
-        ax_amp.legend()
+        if own:
+            ax_amp.figure.legend(*ax_amp.get_legend_handles_labels(),
+                                 loc="outside right upper")
+        else:   # outside the amplitude axes, on their right (off the data)
+            ax_amp.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     if path is not None:
-        ax_amp.figure.tight_layout()
         ax_amp.figure.savefig(path, dpi=100)
     return ax_amp, ax_phase
