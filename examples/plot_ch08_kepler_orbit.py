@@ -76,7 +76,7 @@ assert abs(areal[0] ** 2 / Kc - orbit.semi_latus_rectum) < 1e-12
 # Twelve sectors swept in twelve equal intervals of time: the narrow ones near the periapsis
 # and the wide ones near the apoapsis have the same area :math:`C\,T/24`.
 fine = np.array([orbit.state_at(t)[0] for t in np.linspace(0, orbit.period, 600)])
-fig, ax = plt.subplots(figsize=(7, 5.5), constrained_layout=True)
+fig, ax = plt.subplots(figsize=(8, 5.5), layout="constrained")
 ax.plot(fine[:, 0], fine[:, 1], "k", lw=1)
 for n in range(12):
     arc = np.array([orbit.state_at(t)[0] for t in np.linspace(times[n], times[n + 1], 30)])
@@ -86,5 +86,5 @@ ax.plot(r[:, 0], r[:, 1], "ko", ms=3)
 ax.plot(0, 0, "*", color="orange", ms=14, label="centre O")
 ax.set(xlabel="x (units of $r_0$)", ylabel="y (units of $r_0$)", aspect="equal",
        title=f"Kepler orbit, e = {orbit.eccentricity:.3f}: equal areas in equal times")
-ax.legend(loc="upper right")
+fig.legend(loc="outside right upper")  # outside the axes: the orbit is not covered
 plt.show()
