@@ -1,6 +1,6 @@
 """
 The free-body diagram of a swinging pendulum along its motion (ch. 18.2, 20)
-===========================================================================
+============================================================================
 
 A homogeneous bar OA of mass :math:`m` and length :math:`L` turns about a pivot at :math:`O`
 under gravity. Isolated, it receives two actions: its weight :math:`m\\mathbf{g}` at its mass

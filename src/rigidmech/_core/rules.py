@@ -8,7 +8,7 @@ smaller, gets the same verdicts as the same model in metres.
   is at most :data:`ON_CONSTRAINTS` (1e-9) of the magnitude of its terms -- for a position
   condition Φ(q, t) the value of :func:`magnitude` (Φ with every sum taken term by term in
   absolute value, sines and cosines counted 1), for a velocity condition A q' + a the same
-  of its expression with every rate at the largest |q'_j| (:func:`rates_for_scale`). A
+  of its expression with every rate at the largest ``|q'_j|`` (:func:`rates_for_scale`). A
   circle x² + y² - r² = 0 of radius 1e-10 is judged against x² + y² + r², not against an
   absolute 1e-9. A residual that is not finite is off.
 * **Rank of a Jacobian** (:func:`numeric_rank`): the number of singular values above
@@ -36,7 +36,7 @@ import sympy as sp
 __all__ = ["ON_CONSTRAINTS", "RANK_RTOL", "ROUNDING_FLOOR", "magnitude", "on_constraints",
            "rates_for_scale", "equilibrated", "numeric_rank", "rank_of"]
 
-#: Relative tolerance of a state on the constraints: |residual| <= ON_CONSTRAINTS * (the
+#: Relative tolerance of a state on the constraints: ``|residual| <= ON_CONSTRAINTS *`` (the
 #: magnitude of the condition's terms).
 ON_CONSTRAINTS = 1e-9
 
@@ -54,7 +54,7 @@ def magnitude(expr) -> sp.Expr:
     magnitudes of its terms, every product by the product of the magnitudes of its factors,
     an integer power by the power of its base's magnitude (an even power of a real value is
     kept), a sine or cosine by 1 (its range: the rounding of a sine that vanishes, sin(pi)
-    = 1.2e-16, is of that size), anything else by its absolute value. It bounds |expr| and
+    = 1.2e-16, is of that size), anything else by its absolute value. It bounds ``|expr|`` and
     is the scale against which ``expr`` = 0 is judged: for a closure condition of lengths
     and angles, the sum of the lengths of its terms (a cancellation of large terms leaves
     rounding of their size).
@@ -83,7 +83,7 @@ def magnitude(expr) -> sp.Expr:
 
 def rates_for_scale(u) -> np.ndarray:
     """The rates at which the magnitude of a velocity condition's terms is evaluated: every
-    rate at the largest |q'_j|. Rates solved from the conditions (the dependent ones) carry
+    rate at the largest ``|q'_j|``. Rates solved from the conditions (the dependent ones) carry
     rounding of that size, also where the terms that contain them are small.
 
     Examples
