@@ -12,8 +12,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
-from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
-from matplotlib.text import Text  # noqa: E402
+from plot_checks import texts_outside as _texts_outside  # noqa: E402
 
 import rigidmech as rm  # noqa: E402
 from rigidmech import scenes  # noqa: E402
@@ -26,39 +25,6 @@ EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "examples"
 def _close_figures():
     yield
     plt.close("all")
-
-
-def _hidden_tick_labels(fig):
-    """The labels of ticks beyond the view limits: matplotlib keeps them but does not draw
-    them."""
-    hidden = set()
-    for ax in fig.axes:
-        for axis in (ax.xaxis, ax.yaxis):
-            lo, hi = sorted(axis.get_view_interval())
-            span = (hi - lo) * 1e-9
-            for tick in axis.get_major_ticks() + axis.get_minor_ticks():
-                if not lo - span <= tick.get_loc() <= hi + span:
-                    hidden |= {id(tick.label1), id(tick.label2)}
-    return hidden
-
-
-def _texts_outside(fig):
-    """The drawn texts whose window extent leaves the figure (a cut label), after a draw."""
-    if not hasattr(fig.canvas, "get_renderer"):      # a Figure made without pyplot
-        FigureCanvasAgg(fig)
-    fig.canvas.draw()
-    renderer = fig.canvas.get_renderer()
-    box = fig.bbox
-    hidden = _hidden_tick_labels(fig)
-    out = []
-    for t in fig.findobj(Text):
-        if not t.get_visible() or not t.get_text() or id(t) in hidden:
-            continue
-        e = t.get_window_extent(renderer)
-        if e.x0 < box.x0 - 0.5 or e.y0 < box.y0 - 0.5 or e.x1 > box.x1 + 0.5 \
-                or e.y1 > box.y1 + 0.5:
-            out.append(t.get_text())
-    return out
 
 
 def _polar_mass():

@@ -3,9 +3,7 @@ polar equation r = p / (1 + e cos nu) (closed form, ch. 8.2), the centre and the
 marked where they are, equal aspect, axes "x [unit]", "y [unit]", the legend off the data,
 no label cut, open and nearly parabolic conics finite."""
 
-import importlib.util
 import math
-import pathlib
 
 import matplotlib
 
@@ -15,17 +13,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
+from plot_checks import texts_outside as _texts_outside  # noqa: E402
 
 from rigidmech.errors import ArgumentError  # noqa: E402
 from rigidmech.kinematics.orbits import Orbit  # noqa: E402
-
-# the image checks of Simulation.plot's test, imported from it (one rule for "nothing cut")
-_spec = importlib.util.spec_from_file_location(
-    "_plot_conventions",
-    pathlib.Path(__file__).resolve().parents[1] / "dynamics" / "test_plot_conventions.py")
-_conventions = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_conventions)
-_texts_outside = _conventions._texts_outside
 
 
 @pytest.fixture(autouse=True)

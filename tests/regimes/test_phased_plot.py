@@ -2,9 +2,7 @@
 component labelled with its name and unit, degrees on demand, the phases shaded in their
 regime's colour and named in a legend off the data, no label cut, a tuple of Axes."""
 
-import importlib.util
 import math
-import pathlib
 
 import matplotlib
 
@@ -14,19 +12,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
+from plot_checks import texts_outside as _texts_outside  # noqa: E402
 
 from rigidmech.actions.contact_laws import Coulomb  # noqa: E402
 from rigidmech.errors import ArgumentError  # noqa: E402
 from rigidmech.regimes import Guard, Regime, integrate_phases  # noqa: E402
 from rigidmech.regimes.friction import coulomb_oscillator  # noqa: E402
-
-# the image checks of Simulation.plot's test, imported from it (one rule for "nothing cut")
-_spec = importlib.util.spec_from_file_location(
-    "_plot_conventions",
-    pathlib.Path(__file__).resolve().parents[1] / "dynamics" / "test_plot_conventions.py")
-_conventions = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_conventions)
-_texts_outside = _conventions._texts_outside
 
 
 @pytest.fixture(autouse=True)

@@ -2,8 +2,6 @@
 with quantity and unit ("ω [rad/s]", "amplitude [unit]", "phase lag [rad]" or "[deg]"), a
 constrained layout, the legend off the data, no label cut, the old call kept working."""
 
-import importlib.util
-import pathlib
 
 import matplotlib
 
@@ -13,17 +11,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from numpy.testing import assert_allclose  # noqa: E402
+from plot_checks import texts_outside as _texts_outside  # noqa: E402
 
 from rigidmech.errors import ArgumentError  # noqa: E402
 from rigidmech.vibrations import harmonic_response_direct, plot_frequency_response  # noqa: E402
-
-# the image checks of Simulation.plot's test, imported from it (one rule for "nothing cut")
-_spec = importlib.util.spec_from_file_location(
-    "_plot_conventions",
-    pathlib.Path(__file__).resolve().parents[1] / "dynamics" / "test_plot_conventions.py")
-_conventions = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(_conventions)
-_texts_outside = _conventions._texts_outside
 
 
 @pytest.fixture(autouse=True)
