@@ -70,10 +70,17 @@ def test_nonzero_somewhere_decides_cheaply_and_soundly():
 
 def test_fold_numbers_zero_threshold_at_its_boundary():
     """An expression vanishes for fold_numbers when its value is at most FOLD_ZERO_RELATIVE
-    times the largest magnitude met evaluating it, at both probe points."""
+    times the largest magnitude met evaluating it, at both probe points (the per-point rule
+    fold_numbers applies through probes.sampled_decisions)."""
     import mpmath
 
-    from rigidmech._core.symbolic import FOLD_DIGITS, FOLD_ZERO_RELATIVE, _vanishes
+    from rigidmech._core.probes import _point_verdict
+    from rigidmech._core.symbolic import FOLD_DIGITS, FOLD_ZERO_RELATIVE
+
+    def _vanishes(value, largest):
+        if value is None:
+            return False
+        return all(_point_verdict(v, m) is True for v, m in zip(value, largest, strict=True))
 
     with mpmath.workdps(FOLD_DIGITS):
         edge = FOLD_ZERO_RELATIVE * 7

@@ -41,7 +41,6 @@ import sympy as sp
 from .probes import (
     FOLD_DIGITS,
     FOLD_ZERO_RELATIVE,
-    _point_verdict,
     sampled_decisions,
     sampled_zero_decision,
 )
@@ -536,10 +535,3 @@ def _folded(e, probe, memo):
     memo[e] = out
     return out
 
-
-def _vanishes(value, largest):
-    """The zero test of :func:`fold_numbers` on the values of one expression at the points:
-    the rule of :func:`~rigidmech._core.probes.sampled_zero_decision` at every point."""
-    if value is None:
-        return False
-    return all(_point_verdict(v, m) is True for v, m in zip(value, largest, strict=True))
