@@ -27,30 +27,18 @@ about :math:`A`: :math:`N_B L\\sin\\alpha + T_B L\\cos\\alpha = W \\frac{L}{2}\\
 # %%
 # The ladder and its two contacts with friction
 # ---------------------------------------------
+# The catalogue builds it (:func:`rigidmech.models.ladder`): a problem of statics, its two
+# contacts labelled ``"A"`` (ground) and ``"B"`` (wall), the angle ``alpha`` a constant.
 import math
 
 import matplotlib.pyplot as plt
-import sympy as sp
 
-import rigidmech as rm
-from rigidmech.actions import ContactLaws, Coulomb
+from rigidmech import models
 from rigidmech.drawing import free_body_diagram, limiting_values
 
 f1, f2 = 0.4, 0.3                              # ground, wall
-alpha = sp.Symbol("alpha", positive=True)
-m, g, L = rm.constants("m g L", positive=True)
-R0 = rm.Frame("R0")
-A = R0.point("A", L * sp.cos(alpha), 0, 0)
-B = R0.point("B", 0, L * sp.sin(alpha), 0)
-G = R0.point("G", L * sp.cos(alpha) / 2, L * sp.sin(alpha) / 2, 0)
-ladder = rm.Body("ladder", frame=R0, mass=m, centre=G)
-
-statics = rm.statics.Statics(R0)
-statics.connect(R0, ladder, ContactLaws(at=A, normal=R0.j, tangent=R0.i,
-                                        friction=Coulomb(f1)), label="A")
-statics.connect(R0, ladder, ContactLaws(at=B, normal=R0.i, tangent=R0.j,
-                                        friction=Coulomb(f2)), label="B")
-statics.act(rm.gravity(-g * R0.j))
+model = models.ladder(f1, f2)
+statics, ladder, alpha = model.system, model.body("ladder"), model.constant("alpha")
 values = {"m": 10.0, "g": 9.81, "L": 4.0}
 print("unknowns:", statics.unknowns,
       "| hyperstaticity at 60 deg:",

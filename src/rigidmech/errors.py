@@ -25,6 +25,7 @@ from ._core.errors import (
     CompilationError,
     ConnectionError_,
     FrameError,
+    HyperstaticWarning,
     NumericalError,
     RigidmechError,
     RigidmechWarning,
@@ -45,4 +46,5 @@ __all__ = [
     "SceneError",
     "RigidmechWarning",
     "SingularityWarning",
+    "HyperstaticWarning",
 ]

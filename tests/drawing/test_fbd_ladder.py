@@ -25,11 +25,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
-import sympy as sp
 from matplotlib.testing.decorators import image_comparison
 
 import rigidmech as rm
-from rigidmech.actions import ContactLaws, Coulomb
+from rigidmech import models
 from rigidmech.drawing import external_actions, free_body_diagram, limiting_values
 
 F1, F2 = 0.4, 0.3
@@ -44,20 +43,9 @@ def _close():
 
 
 def ladder_statics():
-    alpha = sp.Symbol("alpha", positive=True)
-    m, g, L = rm.constants("m g L", positive=True)
-    R0 = rm.Frame("R0")
-    A = R0.point("A", L * sp.cos(alpha), 0, 0)
-    B = R0.point("B", 0, L * sp.sin(alpha), 0)
-    G = R0.point("G", L * sp.cos(alpha) / 2, L * sp.sin(alpha) / 2, 0)
-    ladder = rm.Body("ladder", frame=R0, mass=m, centre=G)
-    st = rm.statics.Statics(R0)
-    st.connect(R0, ladder, ContactLaws(at=A, normal=R0.j, tangent=R0.i,
-                                       friction=Coulomb(F1)), label="A")
-    st.connect(R0, ladder, ContactLaws(at=B, normal=R0.i, tangent=R0.j,
-                                       friction=Coulomb(F2)), label="B")
-    st.act(rm.gravity(-g * R0.j))
-    return st, ladder, alpha
+    """The catalogue's ladder (rigidmech.models.ladder), the conventions above."""
+    lad = models.ladder(F1, F2)
+    return lad.system, lad.body("ladder"), lad.constant("alpha")
 
 
 @pytest.fixture(scope="module")

@@ -138,3 +138,20 @@ class SingularityWarning(RigidmechWarning, RuntimeWarning):
     >>> issubclass(SingularityWarning, RuntimeWarning)
     True
     """
+
+
+class HyperstaticWarning(RigidmechWarning, UserWarning):
+    """A connection action was computed in a hyperstatic mounting (book, ch. 13.2, 14.2): some
+    components of the action of a loop-closing joint are not determined by the fundamental
+    principle (two coaxial pivots; a planar loop of spatial pivots, whose out-of-plane
+    components are hyperstatic). They are taken zero in the closing joint, the tree joints
+    carrying the load: one admissible split among infinitely many, which depends on the
+    stiffness of the parts. The message names those unknowns (``<label>.<component>``, as
+    ``System.hyperstatic_unknowns``); the other components are determined. After reading it,
+    silence it with ``warnings.simplefilter("ignore", HyperstaticWarning)``.
+
+    Examples
+    --------
+    >>> issubclass(HyperstaticWarning, UserWarning)
+    True
+    """

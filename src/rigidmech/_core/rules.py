@@ -15,6 +15,11 @@ smaller, gets the same verdicts as the same model in metres.
   :data:`RANK_RTOL` (1e-9) times the largest one, once each row and each column is scaled to
   a largest entry of 1 (:func:`equilibrated`; entries under 1e-14 of the largest are
   rounding): the same matrix with its rows or columns in other units keeps its rank.
+* **A residual with its tolerance** (:func:`vanishes`): where the caller states an absolute
+  tolerance (``linearize(..., tol=1e-9)``: the steadiness of a reference state, the
+  stationarity of a potential, the invariance of a steady motion), a number vanishes when
+  ``|x| <= tol + allowance`` (the boundary holds; ``allowance`` what the rounding of the
+  reference state leaves), an expression when it is identically zero.
 
 Examples
 --------
@@ -34,7 +39,7 @@ import numpy as np
 import sympy as sp
 
 __all__ = ["ON_CONSTRAINTS", "RANK_RTOL", "ROUNDING_FLOOR", "magnitude", "on_constraints",
-           "rates_for_scale", "equilibrated", "numeric_rank", "rank_of"]
+           "rates_for_scale", "equilibrated", "numeric_rank", "rank_of", "vanishes"]
 
 #: Relative tolerance of a state on the constraints: ``|residual| <= ON_CONSTRAINTS *`` (the
 #: magnitude of the condition's terms).
@@ -173,3 +178,29 @@ def rank_of(singular_values) -> int:
     if not s.size or s[0] == 0:
         return 0
     return int(np.count_nonzero(s > RANK_RTOL * s[0]))
+
+
+def vanishes(x, tol, allowance=0.0) -> bool:
+    """Whether the residual ``x`` is zero, given the caller's absolute tolerance ``tol``: a
+    number (real or complex) when ``|x| <= tol + allowance`` (the boundary holds;
+    ``allowance`` is what the rounding of the state it is evaluated at leaves, such as
+    ``rigidmech.vibrations.linearize.rounding_allowance``), an expression when it is
+    identically zero (:func:`rigidmech._core.symbolic.is_identically_zero`). One rule for the
+    steadiness of a reference state of a linearisation, the stationarity of a potential, the
+    invariance of a steady motion and the reduced stiffness of a constrained linearisation.
+
+    Examples
+    --------
+    >>> vanishes(1e-9, 1e-9), vanishes(1.000001e-9, 1e-9), vanishes(-2e-9, 1e-9, 1e-9)
+    (True, False, True)
+    >>> a = sp.Symbol("a")
+    >>> vanishes(sp.sin(a)**2 + sp.cos(a)**2 - 1, 1e-9), vanishes(1e-30 * a, 1e-9)
+    (True, False)
+    """
+    x = sp.sympify(x)
+    if x.is_number:
+        return bool(abs(complex(x)) <= tol + allowance)
+    # imported here: rigidmech._core.symbolic imports this module (for magnitude)
+    from .symbolic import is_identically_zero
+
+    return is_identically_zero(x)

@@ -223,6 +223,59 @@ def _coincide(a: Point, b: Point) -> bool:
     return ab.is_zero or all(vanishes(c) for c in ab.components(a.root))
 
 
+# -- actions between two points (Spring, and Damper in dampers.py): their ends -------------
+def _set_ends(action, a, b, on_a, on_b, what):
+    """Check and store the ends of an action between point ``a`` of ``on_a`` and point ``b``
+    of ``on_b`` (None: a point fixed in the reference, not both); ``what`` names it."""
+    check_point(a, "a")
+    check_point(b, "b")
+    if on_a is None and on_b is None:
+        raise ArgumentError(f"`on_a` and `on_b` cannot both be None: the {what} would act on "
+                            "nothing.")
+    for s, name in ((on_a, "on_a"), (on_b, "on_b")):
+        if s is not None:
+            _check_solid(s, name)
+    action._a, action._b, action._on_a, action._on_b = a, b, on_a, on_b
+
+
+def _along_ab(action, ab, factor):
+    """The contributions of a force -factor AB on b and +factor AB on a (ends on a solid)."""
+    out = []
+    if action._on_b is not None:
+        out.append((action._on_b, slider(-factor * ab, action._b)))
+    if action._on_a is not None:
+        out.append((action._on_a, slider(factor * ab, action._a)))
+    return out
+
+
+def _ends(action) -> tuple:
+    """The points (a, b) the action joins.
+
+    Examples
+    --------
+    >>> from rigidmech import Frame
+    >>> from rigidmech.actions import Damper, Spring
+    >>> from rigidmech.kinematics import Solid
+    >>> R0 = Frame("R0"); B = R0.point("B", 1, 0, 0); S = Solid("S", frame=R0)
+    >>> [p.name for p in Spring(1, 0, a=R0.origin, b=B, on_b=S).ends]
+    ['O_R0', 'B']
+    >>> Damper(2, a=R0.origin, b=B, on_b=S).ends == (R0.origin, B)
+    True
+    """
+    return (action._a, action._b)
+
+
+#: The handles of the ends, the same properties in Spring and Damper.
+_END_PROPERTIES = (
+    property(lambda self: self._a, doc="The end point a (on ``on_a``)."),
+    property(lambda self: self._b, doc="The end point b (on ``on_b``)."),
+    property(lambda self: self._on_a,
+             doc="The solid that carries a (None: a point fixed in the reference)."),
+    property(lambda self: self._on_b,
+             doc="The solid that carries b (None: a point fixed in the reference)."),
+    property(_ends))
+
+
 class Spring(Action):
     """A linear spring of stiffness ``stiffness`` and free length ``free_length`` between
     point ``a`` of solid ``on_a`` and point ``b`` of solid ``on_b`` (ch. 11.2).
@@ -247,38 +300,11 @@ class Spring(Action):
     __slots__ = ("_k", "_l0", "_a", "_b", "_on_a", "_on_b")
 
     def __init__(self, stiffness, free_length, *, a: Point, b: Point, on_a=None, on_b=None):
-        check_point(a, "a")
-        check_point(b, "b")
-        if on_a is None and on_b is None:
-            raise ArgumentError("`on_a` and `on_b` cannot both be None: the spring would act "
-                                "on nothing.")
-        for s, name in ((on_a, "on_a"), (on_b, "on_b")):
-            if s is not None:
-                _check_solid(s, name)
+        _set_ends(self, a, b, on_a, on_b, "spring")
         self._k = nonnegative(stiffness, "stiffness")
         self._l0 = nonnegative(free_length, "free_length")
-        self._a, self._b, self._on_a, self._on_b = a, b, on_a, on_b
 
-    a = property(lambda self: self._a, doc="The end point a (on ``on_a``).")
-    b = property(lambda self: self._b, doc="The end point b (on ``on_b``).")
-    on_a = property(lambda self: self._on_a,
-                    doc="The solid that carries a (None: a point fixed in the reference).")
-    on_b = property(lambda self: self._on_b,
-                    doc="The solid that carries b (None: a point fixed in the reference).")
-
-    @property
-    def ends(self) -> tuple:
-        """The points (a, b) the spring joins.
-
-        Examples
-        --------
-        >>> from rigidmech import Frame
-        >>> from rigidmech.kinematics import Solid
-        >>> R0 = Frame("R0"); B = R0.point("B", 1, 0, 0)
-        >>> [p.name for p in Spring(1, 0, a=R0.origin, b=B, on_b=Solid("S", frame=R0)).ends]
-        ['O_R0', 'B']
-        """
-        return (self._a, self._b)
+    a, b, on_a, on_b, ends = _END_PROPERTIES
 
     @property
     def free_length(self):
@@ -300,12 +326,7 @@ class Spring(Action):
                 "the ends at distinct points, or use free_length=0.")
         else:
             tension = self._k * (length - self._l0) / length  # force on b is -tension * AB
-        out = []
-        if self._on_b is not None:
-            out.append((self._on_b, slider(-tension * ab, self._b)))
-        if self._on_a is not None:
-            out.append((self._on_a, slider(tension * ab, self._a)))
-        return out
+        return _along_ab(self, ab, tension)
 
     def potential_energy(self, solids, frame):
         return self._k * (self._length() - self._l0) ** 2 / 2

@@ -26,10 +26,17 @@ from __future__ import annotations
 import sympy as sp
 
 from .._core.errors import ArgumentError
-from ..torsors import couple, slider
+from ..torsors import couple
 from ..vectors import Point, Vector, t
-from ..vectors.points import check_point
-from .actions import Action, _check_solid, _coincide, _unit_vector
+from .actions import (
+    _END_PROPERTIES,
+    Action,
+    _along_ab,
+    _check_solid,
+    _coincide,
+    _set_ends,
+    _unit_vector,
+)
 
 __all__ = ["Damper", "TorsionalDamper", "TorsionSpring", "wire_torsional_stiffness"]
 
@@ -102,41 +109,14 @@ class Damper(Action):
 
     def __init__(self, damping, *, a: Point, b: Point, on_a=None, on_b=None):
         self._c = _coefficient(damping, "damping")
-        check_point(a, "a")
-        check_point(b, "b")
-        if on_a is None and on_b is None:
-            raise ArgumentError("`on_a` and `on_b` cannot both be None: the damper would act "
-                                "on nothing.")
-        for s, name in ((on_a, "on_a"), (on_b, "on_b")):
-            if s is not None:
-                _check_solid(s, name)
-        self._a, self._b, self._on_a, self._on_b = a, b, on_a, on_b
+        _set_ends(self, a, b, on_a, on_b, "damper")
 
-    a = property(lambda self: self._a, doc="The end point a (on ``on_a``).")
-    b = property(lambda self: self._b, doc="The end point b (on ``on_b``).")
-    on_a = property(lambda self: self._on_a,
-                    doc="The solid that carries a (None: a point fixed in the reference).")
-    on_b = property(lambda self: self._on_b,
-                    doc="The solid that carries b (None: a point fixed in the reference).")
+    a, b, on_a, on_b, ends = _END_PROPERTIES
 
     @property
     def damping(self):
         """The coefficient c."""
         return self._c
-
-    @property
-    def ends(self) -> tuple:
-        """The points (a, b) the damper joins.
-
-        Examples
-        --------
-        >>> import rigidmech as rm
-        >>> R0 = rm.Frame("R0"); B = R0.point("B", 1, 0, 0)
-        >>> b = rm.Body("b", frame=R0.translated("R1", B), mass=1)
-        >>> [p.name for p in Damper(2, a=R0.origin, b=B, on_b=b).ends]
-        ['O_R0', 'B']
-        """
-        return (self._a, self._b)
 
     def _ab_and_rate(self):
         ab = self._b - self._a
@@ -165,13 +145,7 @@ class Damper(Action):
         ab, rate = self._ab_and_rate()
         # ends coincident at all times: l' = 0, no force (and no 0/0)
         factor = 0 if _coincide(self._a, self._b) else self._c * rate / ab.dot(ab)
-        # force on b is -factor * AB
-        out = []
-        if self._on_b is not None:
-            out.append((self._on_b, slider(-factor * ab, self._b)))
-        if self._on_a is not None:
-            out.append((self._on_a, slider(factor * ab, self._a)))
-        return out
+        return _along_ab(self, ab, factor)                 # force on b is -factor * AB
 
     def potential_energy(self, solids, frame):
         """Zero: a damper stores no energy."""

@@ -17,9 +17,10 @@ components every tree joint cannot carry (a perfect joint's zero components: no 
 ball joint) give the linear equations that determine them, the statics-style solve of the
 loop's unknowns with the dynamic torsors on the left (ch. 14.2, 18.2). Those the equations
 leave undetermined are hyperstatic (two coaxial pivots): they are taken zero in the closing
-joint, the tree joints carrying the load, and :meth:`System.hyperstatic_unknowns
-<rigidmech.dynamics.System.hyperstatic_unknowns>` names them. Each action is cached in the
-system's cache.
+joint, the tree joints carrying the load, :meth:`System.hyperstatic_unknowns
+<rigidmech.dynamics.System.hyperstatic_unknowns>` names them, and every action that depends on
+them issues a :class:`~rigidmech.errors.HyperstaticWarning` naming them (cached or not). Each
+action is cached in the system's cache.
 
 Examples
 --------
@@ -35,10 +36,12 @@ g*m*R0.j
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import sympy as sp
 
-from .._core.errors import ConnectionError_
+from .._core.errors import ConnectionError_, HyperstaticWarning
 from ..actions import Joint
 from ..systems.mobility import GenericValues, numeric_rank
 from ..torsors import Torsor
@@ -75,6 +78,7 @@ def connection_action(system, parent, child, label):
     link = system._link(parent, child, label)
     key = ("action", id(link))
     if key in system._cache:
+        _warn_hyperstatic(system, link)
         return system._cache[key]
     actions = system._closure_actions()
     own = next((rows for k, rows in actions if k is link), None)
@@ -92,7 +96,37 @@ def connection_action(system, parent, child, label):
                         result.moment.xreplace(solution), result.point)
     system._cache[key] = Torsor(result.resultant.compact(), result.moment.compact(),
                                 result.point)
+    _warn_hyperstatic(system, link)
     return system._cache[key]
+
+
+def _symbols_of(torsor):
+    return {s for v in (torsor.resultant, torsor.moment) for _, comps in v._parts
+            for c in comps for s in sp.sympify(c).free_symbols}
+
+
+def _warn_hyperstatic(system, link):
+    """A HyperstaticWarning naming the undetermined unknowns the action through ``link``
+    depends on (taken zero), if any: the action of the closing joint itself, and those of
+    the tree joints that carry their load."""
+    _, undetermined = _silent_solution(system)
+    if not undetermined:
+        return
+    key = ("hyperstatic in action", id(link))
+    if key not in system._cache:
+        present = {s.name for s in _symbols_of(_raw_action(system, link))}
+        system._cache[key] = tuple(n for n in undetermined if n in present)
+    names = system._cache[key]
+    if names:
+        warnings.warn(
+            f"the connection action of {link.second.name} through {link.label!r} depends "
+            f"on {', '.join(names)}, components of the action of a loop-closing joint that "
+            f"the fundamental principle does not determine (a hyperstatic mounting, book "
+            f"ch. 14.2; see System.hyperstatic_unknowns()): they are taken zero, the tree "
+            f"joints carrying the load: one admissible split among infinitely many (it "
+            f"depends on the stiffness of the parts). The other components are determined. "
+            f"Silence this with warnings.simplefilter('ignore', "
+            f"rigidmech.errors.HyperstaticWarning).", HyperstaticWarning, stacklevel=4)
 
 
 def _raw_action(system, link):

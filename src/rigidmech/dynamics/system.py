@@ -513,8 +513,10 @@ class System(LinkedParameters):
         the bodies they carry. In a hyperstatic mounting (a shaft on two pivots) the split
         of the action between the redundant connections is not determined by the equations
         (see :meth:`mobility`): the one given takes the undetermined components of the
-        closing connection zero (nothing, for a second coaxial pivot), and
-        :meth:`hyperstatic_unknowns` names them.
+        closing connection zero (nothing, for a second coaxial pivot),
+        :meth:`hyperstatic_unknowns` names them, and an action that depends on them issues a
+        :class:`~rigidmech.errors.HyperstaticWarning` naming them (the planar four-bar of
+        spatial pivots: its out-of-plane components).
 
         Parameters
         ----------
@@ -554,7 +556,9 @@ class System(LinkedParameters):
         """The names (``<label>.<component>``) of the components of the actions of the
         loop-closing joints that the fundamental principle does not determine: the degree of
         hyperstaticity of those joints' blocked motions that the frames already block, taken
-        zero by :meth:`connection_action` (ch. 14.2). Empty for an isostatic loop.
+        zero by :meth:`connection_action`, which says so by a
+        :class:`~rigidmech.errors.HyperstaticWarning` (ch. 14.2). Empty for an isostatic
+        loop.
 
         Examples
         --------

@@ -13,7 +13,9 @@ the examples import these builders rather than building their own copies.
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
 * :mod:`~rigidmech.models.contacts`: a ball sliding then rolling, an eccentric disc rocking;
 * :mod:`~rigidmech.models.tops`: the symmetric heavy top on a ball joint;
-* :mod:`~rigidmech.models.bicycle`: the Whipple bicycle (Meijaard et al. 2007).
+* :mod:`~rigidmech.models.bicycle`: the Whipple bicycle (Meijaard et al. 2007);
+* :mod:`~rigidmech.models.friction`: a ladder against a wall with friction at both ends, a
+  problem of statics (its ``system`` is a :class:`~rigidmech.statics.Statics`).
 
 Examples
 --------
@@ -40,6 +42,7 @@ from .chains import (
     spherical_chain,
 )
 from .contacts import eccentric_disc, sliding_ball
+from .friction import ladder
 from .incline import block_on_incline
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
 from .loops import CHAIN_COUPLER, FOUR_BAR_LENGTHS, four_bar, four_bar_chain, slider_crank
@@ -53,7 +56,7 @@ __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "block_on_incline", "rolling_disc", "wheel_on_incline",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
            "sliding_ball", "eccentric_disc", "heavy_top",
-           "whipple_bicycle", "BENCHMARK_BICYCLE"]
+           "whipple_bicycle", "BENCHMARK_BICYCLE", "ladder"]
 
 
 class Entry(NamedTuple):
@@ -94,6 +97,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (eccentric_disc, "ch. 13.1, 23.4"),
     (heavy_top, "ch. 9.4.4, 20"),
     (whipple_bicycle, "ch. 13.1, 25.3.3"),
+    (ladder, "ch. 14.4.1"),
 ))
 _BY_NAME = {e.name: e for e in _ENTRIES}
 
@@ -105,7 +109,7 @@ def catalogue() -> tuple:
     --------
     >>> from rigidmech import models
     >>> sorted({e.family for e in models.catalogue()})
-    ['bicycle', 'chains', 'contacts', 'incline', 'knife', 'loops', 'rolling', 'tops']
+    ['bicycle', 'chains', 'contacts', 'friction', 'incline', 'knife', 'loops', 'rolling', 'tops']
     """
     return _ENTRIES
 
@@ -117,7 +121,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    19
+    20
     """
     return tuple(_BY_NAME)
 

@@ -23,8 +23,9 @@ class Model(NamedTuple):
 
     Attributes
     ----------
-    system : System
-        The assembled :class:`~rigidmech.dynamics.System` (symbol form).
+    system : System or Statics
+        The assembled :class:`~rigidmech.dynamics.System` (symbol form); for a problem of
+        statics (:func:`rigidmech.models.ladder`), the :class:`~rigidmech.statics.Statics`.
     coordinates : tuple
         The parameters of situation, in the order of the equations.
     constants : tuple

@@ -7,7 +7,7 @@
   the coupled motions of two solids;
 * ``triple-pendulum`` (ch. 25.3): three uniform rods on pivots, relative angles;
 * ``four-bar`` (ch. 13.2, 25.3.3): the four-bar linkage under gravity, parameters linked by
-  the closure of its loop (the dependent angles of q0 are moved onto the closure);
+  the closure of its loop (the default q0 closes it: the dependent angles in closed form);
 * ``slider-crank`` (ch. 13.2, 25.3.3): crank, connecting rod and slider;
 * ``wheel-on-incline`` (ch. 23.4): a disk rolling without slipping down an incline;
 * ``heavy-top`` (ch. 20, 25): the symmetric heavy top on a ball joint, Euler angles;
@@ -42,6 +42,43 @@ def _triple_pendulum() -> Built:
     return _built(models.n_link_pendulum(3))
 
 
+def _four_bar_closed(q1, lengths=models.FOUR_BAR_LENGTHS) -> tuple:
+    """(q1, q2, q3) of :func:`rigidmech.models.four_bar` on its loop for the crank angle
+    ``q1`` (book, ch. 13.2): C is where the circles of centres B = L1 (cos q1, sin q1),
+    radius BC = L2, and D = (L0, 0), radius DC = L3, meet, on the branch with C to the left
+    of B->D (the coupler's angle is that of B->D plus the angle at B of the triangle BDC).
+
+    Examples
+    --------
+    >>> q1, q2, q3 = _four_bar_closed(1.5)
+    >>> round(q2, 6), round(q3, 6)
+    (-1.246033, 1.566407)
+    """
+    L0, L1, L2, L3 = (float(v) for v in lengths)
+    bx, by = L1 * math.cos(q1), L1 * math.sin(q1)
+    dx, dy = L0 - bx, -by
+    bd = math.hypot(dx, dy)
+    at_b = math.acos((L2**2 + bd**2 - L3**2) / (2 * L2 * bd))   # law of cosines
+    coupler = math.atan2(dy, dx) + at_b                           # absolute angle of BC
+    cx, cy = bx + L2 * math.cos(coupler), by + L2 * math.sin(coupler)
+    return (q1, coupler - q1, math.atan2(cy, cx - L0))
+
+
+def _slider_crank_closed(q1, r=0.5, ell=1.5) -> tuple:
+    """(q1, q2, x) of :func:`rigidmech.models.slider_crank` on its loop for the crank angle
+    ``q1`` (book, ch. 13.2): the slider at x = r cos q1 + sqrt(ell^2 - r^2 sin^2 q1), the rod
+    from A = r (cos q1, sin q1) to (x, 0).
+
+    Examples
+    --------
+    >>> [round(v, 6) for v in _slider_crank_closed(1.0)]
+    [1.0, -1.284305, 1.709936]
+    """
+    ax, ay = r * math.cos(q1), r * math.sin(q1)
+    x = ax + math.sqrt(ell**2 - ay**2)
+    return (q1, math.atan2(-ay, x - ax) - q1, x)
+
+
 MACHINE_SCENES = (
     Scene("block-on-incline", "A block sliding without friction down an inclined plane",
           "ch. 23.2.5, 27.4",
@@ -73,14 +110,14 @@ MACHINE_SCENES = (
     Scene("four-bar", "Four-bar linkage under gravity (a closed loop)", "ch. 13.2, 25.3.3",
           coordinates=("q1", "q2", "q3"),
           parameters=(("m", 1.0, "mass of each bar"), ("g", 9.81, "gravity")),
-          q0=(1.5, -1.25, 1.57), t_end=5.0, builder=lambda: _built(models.four_bar()),
+          q0=_four_bar_closed(1.5), t_end=5.0, builder=lambda: _built(models.four_bar()),
           notes="lengths: ground 2, crank 1, coupler 2, rocker 1.5; q1 crank angle, q2 "
                 "coupler relative to the crank, q3 rocker angle; q2, q3 follow q1 through the "
-                "closure (moved onto it if q0 is off)."),
+                "closure (a q0 off it is moved onto it, q1 kept)."),
     Scene("slider-crank", "Slider-crank mechanism under gravity", "ch. 13.2, 25.3.3",
           coordinates=("q1", "q2", "x"),
           parameters=(("m", 1.0, "mass of each part"), ("g", 9.81, "gravity")),
-          q0=(1.0, -1.3, 1.3), t_end=5.0, builder=lambda: _built(models.slider_crank()),
+          q0=_slider_crank_closed(1.0), t_end=5.0, builder=lambda: _built(models.slider_crank()),
           units={"x": "m"},
           notes="crank 0.5, rod 1.5; q1 crank angle, q2 rod relative to the crank, x the "
                 "slider; q2 and x follow q1 through the closure."),

@@ -71,19 +71,12 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError
-from .._core.rules import magnitude, numeric_rank, on_constraints
+from .._core.rules import magnitude, numeric_rank, on_constraints, vanishes
 from .._core.symbolic import is_identically_zero, xreplace_shared
 from ..dynamics.reduced import plain_constraints, split_coordinates
 from ._jet import values_and_jacobian
 
 __all__ = ["linearize_constrained"]
-
-
-def _vanishes(x, tol):
-    x = sp.sympify(x)
-    if x.is_number:
-        return abs(complex(x)) <= tol
-    return is_identically_zero(x)
 
 
 def _rates(velocities, eqs, ind, norm):
@@ -198,7 +191,7 @@ def _holds(value, scale, tol):
     value, scale = sp.sympify(value), sp.sympify(scale)
     if value.is_number and scale.is_number:
         return bool(on_constraints([abs(complex(value))], [abs(complex(scale))])[0])
-    return _vanishes(value, tol)
+    return vanishes(value, tol)
 
 
 def _check_constraints(eqs, P, at, rates, given, tol, phi_rows, ind, phi):
@@ -330,7 +323,7 @@ def _on_independent(eqs, Kfull, P, phi_rows, ind, dep, tol):
         Kq = Kfull[:, rest]
     names = eqs.names
     for col, j in enumerate(rest):
-        if j not in ind and not all(_vanishes(_simple(Kq[i, col]), tol) for i in range(k)):
+        if j not in ind and not all(vanishes(_simple(Kq[i, col]), tol) for i in range(k)):
             raise ArgumentError(
                 f"the reduced equations depend on {names[j]} at the reference state, a "
                 f"parameter whose rate is fixed by a nonholonomic constraint: it cannot be "

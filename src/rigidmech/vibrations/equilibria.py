@@ -30,10 +30,11 @@ import sympy as sp
 
 from .._core.compile import compile_expressions
 from .._core.errors import ArgumentError
+from .._core.rules import vanishes
 from .._core.validation import as_declared
 from ._symbols import normalise
 from .critical import growth
-from .linearize import _ROUNDING, _residual_vanishes, _values, linearize, rounding_allowance
+from .linearize import _ROUNDING, _values, linearize, rounding_allowance
 from .modes import is_symmetric
 
 __all__ = ["equilibria", "stability", "potential_stability", "Bifurcation", "bifurcation"]
@@ -379,7 +380,7 @@ def potential_stability(eqs, potential, at, *, tol=1e-9, **params) -> str:
     H = sp.Matrix(len(norm.q), len(norm.q),
                   lambda i, j: sp.simplify(V.diff(norm.q[i], norm.q[j]).xreplace(point)
                                            .xreplace(subs)))
-    if not all(_residual_vanishes(x, tol, rounding_allowance(H.row(i), lin_point))
+    if not all(vanishes(x, tol, rounding_allowance(H.row(i), lin_point))
                for i, x in enumerate(grad)):
         raise ArgumentError(f"`at` is not a stationary point of the potential: dV/dq = {grad} "
                             f"(tolerance {tol}).")

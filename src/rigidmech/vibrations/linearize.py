@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError, SingularMassMatrixError
+from .._core.rules import vanishes
 from .._core.symbolic import is_identically_zero
 from .._core.validation import as_declared
 from ._jet import values_and_jacobian
@@ -53,25 +54,12 @@ def rounding_allowance(jac_row, values) -> float:
     return _ROUNDING * total
 
 
-def _residual_vanishes(x, tol, allowance=0.0):
-    """Whether a residual f(q*, q'*) or its rate along the motion is zero: within ``tol``
-    (absolute, boundary included) plus the ``allowance`` for the rounding of q*
-    (:func:`rounding_allowance`) for a number (a point found numerically), identically
-    otherwise (``is_identically_zero``). The one test of steadiness of both paths of
-    :func:`linearize` (with and without constraints), of the equilibria found numerically and
-    of the stationarity of a potential."""
-    x = sp.sympify(x)
-    if x.is_number:
-        return abs(complex(x)) <= tol + allowance
-    return is_identically_zero(x)
-
-
 def _steady(residual, rate, rates, tol, jac=None, q=None):
     """The one rule of steadiness, for the equations (no constraints) or the reduced ones:
     the residual f(q*, q'*) and its rate along the motion (df/dq) q'* both vanish
-    (:func:`_residual_vanishes`; with ``jac`` the rows df_i/dq and ``q`` = q*, the residual
-    may keep the rounding of q* and the rate that of q'*). Returns (ok, moving, residual,
-    rate), simplified."""
+    (:func:`rigidmech._core.rules.vanishes`; with ``jac`` the rows df_i/dq and ``q`` = q*,
+    the residual may keep the rounding of q* and the rate that of q'*). Returns (ok, moving,
+    residual, rate), simplified."""
     residual = [r if sp.sympify(r).is_number else sp.simplify(r) for r in residual]
     rate = [r if sp.sympify(r).is_number else sp.simplify(r) for r in rate]
     if jac is None:
@@ -79,9 +67,9 @@ def _steady(residual, rate, rates, tol, jac=None, q=None):
     else:
         slack_q = [rounding_allowance(row, q) for row in jac]
         slack_u = [rounding_allowance(row, rates) for row in jac]
-    ok = all(_residual_vanishes(r, tol, a) for r, a in zip(residual, slack_q, strict=True)) \
-        and all(_residual_vanishes(r, tol, a) for r, a in zip(rate, slack_u, strict=True))
-    moving = any(not _residual_vanishes(v, 0.0) for v in rates)
+    ok = all(vanishes(r, tol, a) for r, a in zip(residual, slack_q, strict=True)) \
+        and all(vanishes(r, tol, a) for r, a in zip(rate, slack_u, strict=True))
+    moving = any(not vanishes(v, 0.0) for v in rates)
     return ok, moving, residual, rate
 
 

@@ -38,11 +38,12 @@ import numpy as np
 import sympy as sp
 
 from .._core.errors import ArgumentError
+from .._core.rules import vanishes
 from .._core.symbolic import is_identically_zero
 from ._numeric import state_matrix
 from ._symbols import normalise
 from .equilibria import _DEFINITE_TOL, _accepted
-from .linearize import _residual_vanishes, linearize
+from .linearize import linearize
 from .modes import is_symmetric
 
 __all__ = ["SteadyMotion", "steady_motions", "steady_stability"]
@@ -222,7 +223,7 @@ def steady_motions(eqs, *, fixed, cyclic, within=None, samples=None, xtol=1e-12,
     out = []
     for sol in found:
         full = point | sol
-        if not all(_residual_vanishes(sp.sympify(e).diff(c).xreplace(full).xreplace(values),
+        if not all(vanishes(sp.sympify(e).diff(c).xreplace(full).xreplace(values),
                                       _TOL) for e in f for c in moving):
             raise ArgumentError(
                 f"the equations depend on the position of a coordinate that is not `fixed` "
