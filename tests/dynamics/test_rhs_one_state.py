@@ -61,8 +61,6 @@ def test_an_error_with_a_time_per_column_is_kept_with_the_earliest(fun):
 def test_a_float64_batch_equals_the_symbolic_accelerations(fun):
     # the integrators' batch path (the generated batched code writing the accelerations into
     # the rows of the output) against M^-1 f evaluated by sympy at 30 digits, random states
-    import sympy as sp
-
     from rigidmech.dynamics import _compiled
 
     eqs = models.n_link_pendulum(3).system.equations_of_motion()

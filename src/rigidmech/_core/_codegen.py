@@ -575,7 +575,7 @@ def _batched_cholesky_lines(n):
     only sends the batch to the checked solve); the solution rows are written in place.
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
-    lines = ["    _x = numpy.empty((%d,) + _batch) if _out is None else _out" % n,
+    lines = [f"    _x = numpy.empty(({n},) + _batch) if _out is None else _out",
              "    _ok = numpy.True_"]
     for line in _cholesky_steps(n, "    ", "_ok = _ok & (_p > {tol}*_a{j}_{j})",
                                 "1.0/numpy.sqrt(numpy.abs(_p))"):
