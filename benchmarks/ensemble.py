@@ -27,6 +27,7 @@ error (both sides alike), so the median is the fair figure. Prints ratios anchor
 
     python benchmarks/ensemble.py                       # ~5-10 min on a loaded 2-core machine
     python benchmarks/ensemble.py --size 200 --anchor-every 4 --repeats 1   # quick look
+    python benchmarks/ensemble.py --floor --repeats 5   # ours: machinery vs right-hand side
 """
 
 from __future__ import annotations
@@ -141,6 +142,64 @@ def run(label, amplitude, fun, args):
     return best["anchor"] / best["each"], best["anchor"] / best["shared"]
 
 
+def floor(amplitude, fun, args):
+    """Where ours' time goes (``--floor``): the run split into the solver's machinery and the
+    right-hand side, each timed alone on the same work, CPU time, best of ``--repeats``.
+
+    * machinery alone: the same run with ``fun`` replaced by a replay of the outputs recorded
+      in a first run (the same numbers, hence the same steps; a replayed call costs a copy,
+      subtracted);
+    * right-hand side alone: ``fun`` called on the recorded inputs, in order;
+    * of which the transcendental functions: numpy's sin and cos of the angles the double
+      pendulum's right-hand side needs (sin q1, sin q2, sin and cos of q1 - q2) on the same
+      inputs, what no rewriting of the arithmetic around them removes.
+    """
+    y0 = initial_states(amplitude, args.size)
+    t_end, rtol = args.t_end, args.rtol
+    calls = []
+
+    def record(t, y):
+        out = fun(t, y)
+        calls.append((np.array(t, copy=True), y.copy(), out.copy()))
+        return out
+
+    final, r = ours(record, y0, t_end, rtol, "each")
+
+    def replayed():
+        outputs = iter(calls)
+        return ours(lambda t, y: next(outputs)[2].copy(), y0, t_end, rtol, "each")
+
+    assert np.array_equal(replayed()[0], final)  # the same steps
+
+    def copies():
+        for _, _, out in calls:
+            out.copy()
+
+    def rhs_alone():
+        for t, y, _ in calls:
+            fun(t, y)
+
+    def trig_alone():
+        for _, y, _ in calls:
+            d = y[0] - y[1]
+            np.sin(y[0]), np.sin(y[1]), np.sin(d), np.cos(d)
+
+    def best(fn):
+        return min(timed(fn)[0] for _ in range(args.repeats))
+
+    whole = best(lambda: ours(fun, y0, t_end, rtol, "each"))
+    machinery = best(replayed) - best(copies)
+    rhs, trig = best(rhs_alone), best(trig_alone)
+    columns, passes = r.stats["nfev_columns"], r.nfev // 12  # dop853: 12 calls a pass
+    print(f"\nfloor, +-{amplitude} rad: {len(calls):,} calls of fun, {columns:,} column "
+          f"evaluations (mean width {columns / len(calls):.0f}), {passes} passes")
+    print(f"  {'part':<34} {'CPU [s]':>9} {'us/column':>10} {'us/call':>9}")
+    for name, sec in (("whole run (each)", whole), ("machinery alone (fun replayed)", machinery),
+                      ("right-hand side alone", rhs), ("  of which sin/cos (numpy)", trig)):
+        print(f"  {name:<34} {sec:>9.3f} {sec / columns * 1e6:>10.3f} "
+              f"{sec / len(calls) * 1e6:>9.1f}")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--size", type=int, default=1000)
@@ -151,11 +210,20 @@ def main(argv=None):
                     help="also time static groups of this many trajectories (0: no)")
     ap.add_argument("--anchor-every", type=int, default=1)
     ap.add_argument("--only", choices=("regular", "chaotic"), default=None)
+    ap.add_argument("--floor", action="store_true",
+                    help="instead of the comparison: ours split into the solver's machinery "
+                         "and the right-hand side, each timed alone")
     args = ap.parse_args(argv)
     print(f"load (uptime): {os.getloadavg()}")
     fun = compiled_rhs()
     fun(0.0, initial_states(0.5, 4))  # compiled before timing
     targets = {"regular": (0.5, 60.0), "chaotic": (2.5, 30.0)}
+    if args.floor:
+        for label, (amp, _) in targets.items():
+            if args.only in (None, label):
+                floor(amp, fun, args)
+        print(f"\nload (uptime): {os.getloadavg()}")
+        return
     results = {}
     for label, (amp, _) in targets.items():
         if args.only in (None, label):

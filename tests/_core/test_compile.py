@@ -479,3 +479,35 @@ def test_batched_symmetric_solve_matches_numpy_and_falls_back():
                                       symmetric=True)
     assert_allclose(indefinite(np.array([1.0, 2.0])),
                     [[2.0, 2.0], [-1.0, -3.0]], rtol=1e-14)
+
+
+def test_batched_symmetric_solve_writes_into_a_given_array():
+    """The generated batched code of a symmetric system takes an optional ``_out`` (the rows of
+    the compiled right-hand side's output it fills): the solution is written there and
+    returned, the numbers of a fresh call, of the single-state path and of sympy at 30 digits;
+    a member off the unrolled path (singular here) returns (A, b) for the checked solve."""
+    A = sympy.Matrix([[2 + x**2, x * y, 0], [x * y, 3 + y**2, sympy.cos(z)],
+                      [0, sympy.cos(z), 2 + sympy.sin(z) ** 2]])
+    rhs = sympy.Matrix([sympy.sin(x) + y, x * z - 1, sympy.exp(y / 3)])
+    solve = compile_linear_solve(A, rhs, [[x, y, z]], symmetric=True)
+    rng = np.random.default_rng(11)
+    values = rng.uniform(-2.0, 2.0, (3, 6))
+    buffer = np.full((3, 6), np.nan)
+    got = solve._batched(values, (6,), _out=buffer)
+    assert got is buffer
+    fresh = solve._batched(values, (6,))
+    assert fresh is not buffer and not np.shares_memory(fresh, buffer)
+    assert_allclose(fresh, buffer, rtol=0, atol=0)
+    for k in range(6):
+        point = dict(zip((x, y, z), values[:, k].tolist(), strict=True))
+        exact = A.subs(point).evalf(30).LUsolve(rhs.subs(point).evalf(30))
+        expected = np.array([float(v) for v in exact])
+        assert_allclose(buffer[:, k], expected, rtol=1e-12, atol=1e-12)
+        assert_allclose(solve(values[:, k]), expected, rtol=1e-12, atol=1e-12)
+    singular = compile_linear_solve(sympy.Matrix([[x, x], [x, x]]), [1, 2], [x],
+                                    symmetric=True)
+    with np.errstate(all="ignore"):  # as its callers run it: 1/sqrt(0) on the way
+        result = singular._batched(np.array([1.0, 2.0]), (2,), _out=np.empty((2, 2)))
+    assert type(result) is tuple
+    with pytest.raises(SingularMassMatrixError, match="batch index 0"):
+        singular(np.array([1.0, 2.0]))

@@ -557,20 +557,33 @@ def _cholesky_lines(n):
 
 def _batched_cholesky_lines(n):
     """Unrolled Cholesky solve over arrays (one system per batch element) of the symmetric
-    system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``; returns x stacked, shape (n,) + batch.
+    system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``; returns x, shape (n,) + batch, written
+    into the generated function's parameter ``_out`` when one is given (the rows of the
+    compiled right-hand side's output), else into a fresh array.
 
     LAPACK's batched ``numpy.linalg.solve`` costs about 4.6 us per 12x12 system; these n^3/6
     whole-array operations cost a fraction of that for batches of hundreds of states. A pivot
     that is not > n eps times its diagonal entry everywhere (:func:`pivot_tolerance`), or a
-    non-finite entry, leaves the unrolled path: the caller then builds A and b and goes
-    through its checked solve.
+    non-finite entry of A or x, leaves the unrolled path: the caller then builds A and b and
+    goes through its checked solve (``_out`` then holds no result).
+
+    Every whole-array operation costs about a microsecond of call overhead at the widths of
+    an ensemble (hundreds of columns), as much as its arithmetic, so the checks are
+    gathered: the pivot tests into one boolean array, reduced once at the end (the same
+    comparisons as the single-state path); the finiteness of A and x into one sum (finite
+    only if every term is: a nan or an infinity propagates; an overflow of the sum itself
+    only sends the batch to the checked solve); the solution rows are written in place.
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
-    lines = [f"    _ok = bool(numpy.isfinite({entries}).all())"]
-    lines += _cholesky_steps(n, "    ", "_ok = _ok and bool(numpy.all(_p > {tol}*_a{j}_{j}))",
-                             "1.0/numpy.sqrt(numpy.abs(_p))")
-    zs = ", ".join(f"_z{i}" for i in range(n))
-    lines.append(f"    _x = numpy.stack(numpy.broadcast_arrays({zs}, numpy.empty(_batch)))[:{n}]")
-    lines.append("    if _ok and numpy.isfinite(_x).all():")
-    lines.append("        return numpy.array(_x)")
+    lines = [f"    _x = numpy.empty(({n},) + _batch) if _out is None else _out",
+             "    _ok = numpy.True_"]
+    for line in _cholesky_steps(n, "    ", "_ok = _ok & (_p > {tol}*_a{j}_{j})",
+                                "1.0/numpy.sqrt(numpy.abs(_p))"):
+        if line.startswith("    _z"):  # the back substitution: each row also into _x
+            target, value = line.split(" = ", 1)
+            line = f"{target} = _x[{target[6:]}] = {value}"
+        lines.append(line)
+    lines.append(f"    _s = ({entries} + _x.sum(axis=0)).sum()")
+    lines.append("    if _ok.all() and _s - _s == 0.0:")
+    lines.append("        return _x")
     return lines

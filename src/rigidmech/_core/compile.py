@@ -780,6 +780,8 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True,
         + fast
         + [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]
     )
+    if symmetric:  # the solution written into `_out` if given (_batched_cholesky_lines)
+        batched_params = batched_params + ["_out=None"]
     batched_lines = (
         [f"def {name}_batched({', '.join(batched_params)}):"]
         + unpack

@@ -271,9 +271,13 @@ def rhs(eqs, params):
         # failure there, takes the general path below
         # likewise a batch (2n, m) of float64 with one time or a time per column (the
         # integrators' batches): the generated batched code without the argument checks
+        # (a symmetric system's batched code writes the accelerations into the rows of the
+        # output it is given: no concatenation after it)
         compiled = isinstance(solve, CompiledLinearSolve)
         single = solve._single if compiled else None
         batched = solve._batched if compiled else None
+        into = compiled and solve.symmetric
+        empty = np.empty
         tail = tuple(float(v) for v in values)
         size, f64, ndarray, scalar = 2 * n, np.float64, np.ndarray, (float, np.float64)
         errstate = np.errstate
@@ -292,13 +296,19 @@ def rhs(eqs, params):
                         return out
                 elif y.ndim == 2 and y.shape[0] == size and (type(t) in scalar or (
                         type(t) is ndarray and t.shape == y.shape[1:] and t.dtype == f64)):
+                    u = y[n:]
                     try:
                         with errstate(all="ignore"):
-                            acc = batched(t, y[:n], y[n:], *tail, y.shape[1:])
+                            if into:
+                                out = empty(y.shape)
+                                out[:n] = u
+                                acc = batched(t, y[:n], u, *tail, y.shape[1:], out[n:])
+                            else:
+                                acc = batched(t, y[:n], u, *tail, y.shape[1:])
                     except (ArithmeticError, ValueError, TypeError):
                         acc = None
                     if acc is not None and type(acc) is not tuple:
-                        return np.concatenate((y[n:], acc), axis=0)
+                        return out if into else np.concatenate((u, acc), axis=0)
             try:  # free unless raised
                 acc = solve(t, y[:n], y[n:], *values)
             except (ArithmeticError, ValueError, TypeError) as exc:
