@@ -488,6 +488,8 @@ class CompiledLinearSolve(_Compiled):
         Operation count of the generated evaluation of A and b (cse shared between them).
     source : str
         The generated Python source.
+    first_order_source : str or None
+        The generated source of :meth:`first_order` (None when there is none).
 
     Notes
     -----
@@ -536,6 +538,8 @@ class CompiledLinearSolve(_Compiled):
         ------
         ArgumentError
             If `values` does not hold one number per argument after x'.
+        ArgumentTypeError
+            If a value is not a real number.
 
         Examples
         --------
@@ -560,7 +564,7 @@ class CompiledLinearSolve(_Compiled):
         if len(values) != count:
             raise ArgumentError(
                 f"`values` must hold {count} numbers, one for each of "
-                f"{list(self._labels[3:])}; got {len(values)}.")
+                f"{list(self._labels[3:])}; got {len(values)}. Pass them in that order.")
         try:
             defaults = tuple(float(v) for v in values)
         except (TypeError, ValueError):
