@@ -533,13 +533,15 @@ def _cholesky_steps(n, indent, check_pivot, inverse_sqrt):
     return lines
 
 
-def _cholesky_lines(n):
+def _cholesky_lines(n, head=(), keep=None):
     """Unrolled Cholesky solve of the symmetric system in locals ``_a{j}_{i}`` (j <= i), ``_b{i}``.
 
     A non-finite entry (the sum of the entries is then inf or nan, so ``s - s != 0``) or a pivot
     that is not > n eps times its diagonal entry (not positive definite, or singular to working
     precision: :func:`pivot_tolerance`) raises ArithmeticError, caught by the generated code,
-    which then hands A and b to the caller's checked solve.
+    which then hands A and b to the caller's checked solve. The solution is returned as an
+    array, after the locals named in `head` and cut to its first `keep` entries if given (the
+    first-order form of :meth:`~rigidmech._core.compile.CompiledLinearSolve.first_order`).
     """
     entries = " + ".join(f"_a{j}_{i}" for j in range(n) for i in range(j, n))
     lines = [
@@ -549,7 +551,8 @@ def _cholesky_lines(n):
     ]
     lines += _cholesky_steps(n, "        ", "if not _p > {tol}*_a{j}_{j}: raise ArithmeticError",
                              "1.0/math.sqrt(_p)")
-    lines.append("        return numpy.array([" + ", ".join(f"_z{i}" for i in range(n)) + "])")
+    result = [*head, *(f"_z{i}" for i in range(n if keep is None else keep))]
+    lines.append("        return numpy.array([" + ", ".join(result) + "])")
     lines.append("    except ArithmeticError:")
     lines.append("        pass")
     return lines

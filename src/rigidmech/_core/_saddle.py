@@ -119,14 +119,16 @@ def _ldl_solve(n, L, inv, rhs, name, out):
     return x
 
 
-def saddle_lines(n, m, entry, rhs, indent="    "):
+def saddle_lines(n, m, entry, rhs, indent="    ", head=(), keep=None):
     """The unrolled range-space solve (module docstring) of the saddle-point system of size
     n + m whose matrix entries are the locals ``entry[(i, j)]`` (absent: a structural zero;
     M given by its entries i >= j < n, A by its rows n..n+m-1, columns < n; entries equal
     by construction may share a local) and right-hand side the locals ``rhs[k]``. The lines
     end by returning the solution (x, lam) as a numpy array, or raise ArithmeticError (a
     pivot too small against its diagonal entry, a non-finite result): the caller catches it
-    and takes its general path."""
+    and takes its general path. With `head` (names of locals) and `keep`, the array
+    returned is (head, the first `keep` entries of the solution) instead (the first-order
+    form of :meth:`~rigidmech._core.compile.CompiledLinearSolve.first_order`)."""
     out = _Lines(indent)
     M = {(i, j): entry[i, j] for i in range(n) for j in range(i + 1) if (i, j) in entry}
     L, inv = _ldl(n, M, "m", out)
@@ -150,8 +152,9 @@ def saddle_lines(n, m, entry, rhs, indent="    "):
         v = _minus(xf[i], _dot((X[r][i], lam[r]) for r in range(m)))
         result.append(v if v is not None else "0.0")
     result += [v if v is not None else "0.0" for v in lam]
-    out.add(f"_out = [{', '.join(result)}]")
+    out.add(f"_out = [{', '.join([*head, *result])}]")
     out.add("_s = sum(_out)")
     out.add("if not _s - _s == 0.0: raise ArithmeticError")
-    out.add("return numpy.array(_out)")
+    out.add("return numpy.array(_out)" if keep is None else
+            f"return numpy.array(_out[:{len(head) + keep}])")
     return out.lines

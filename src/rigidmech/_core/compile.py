@@ -19,6 +19,8 @@ Both paths return fresh arrays on every call: never a buffer that a later call o
 pitfall of PyDy's generated code, which silently corrupts Runge-Kutta integrations).
 """
 
+import types
+
 import numpy as np
 import sympy
 
@@ -214,7 +216,7 @@ class _Compiled:
 
     def _state(self):
         names = [s for s in _Compiled.__slots__ if s not in ("_single", "_batched")]
-        names += [s for s in type(self).__slots__]
+        names += [s for s in type(self).__slots__ if not s.startswith("_")]  # _: executed code
         return {key: getattr(self, key) for key in names}
 
     def __reduce__(self):
@@ -229,6 +231,44 @@ class _Compiled:
     def source(self):
         """The generated Python source of both code paths (single-state, then vectorised)."""
         return self.single_source + "\n\n" + self.batched_source
+
+    @property
+    def single(self):
+        """The generated single-state function, without the argument handling of a call: it
+        takes every argument flattened into Python floats, in order (a vector argument as its
+        k entries), and returns what a call returns for one state (a
+        :class:`CompiledLinearSolve`'s returns the tuple (A, b) instead when its unrolled
+        solve cannot decide, and its checked solve must). For callers that have checked their
+        arguments already, on a hot path; an error inside it (``ValueError``,
+        ``ArithmeticError``) means: call the object instead.
+
+        Examples
+        --------
+        >>> import sympy
+        >>> x, y = sympy.symbols("x y")
+        >>> f = compile_expressions(sympy.Matrix([x * y, x + y]), [[x, y]], name="f")
+        >>> f.single(2.0, 3.0).ravel()
+        array([6., 5.])
+        """
+        return self._single
+
+    @property
+    def batched(self):
+        """The generated vectorised function, without the argument handling of a call: it
+        takes each argument as a float array (a vector argument of shape ``(k, *batch)``),
+        then the broadcast batch shape, and returns what a call returns for that batch (a
+        :class:`CompiledLinearSolve`'s may return the stacked (A, b) instead, when its
+        checked solve must decide). Call it under ``numpy.errstate(all="ignore")``.
+
+        Examples
+        --------
+        >>> import numpy as np, sympy
+        >>> x, y = sympy.symbols("x y")
+        >>> f = compile_expressions(x * y, [[x, y]], name="f")
+        >>> f.batched(np.array([[2.0, 3.0], [4.0, 5.0]]), (2,))
+        array([ 8., 15.])
+        """
+        return self._batched
 
     def _args_repr(self):
         return "(" + ", ".join(self._labels) + ")"
@@ -448,6 +488,8 @@ class CompiledLinearSolve(_Compiled):
         Operation count of the generated evaluation of A and b (cse shared between them).
     source : str
         The generated Python source.
+    first_order_source : str or None
+        The generated source of :meth:`first_order` (None when there is none).
 
     Notes
     -----
@@ -465,7 +507,71 @@ class CompiledLinearSolve(_Compiled):
     array([2., 1.])
     """
 
-    __slots__ = ("n", "symmetric", "unrolled")
+    __slots__ = ("_first_order", "first_order_source", "n", "symmetric", "unrolled")
+
+    def first_order(self, values):
+        """The single-state path as the right-hand side ``f(t, y)`` of a first-order system,
+        the arguments after x' bound to `values`.
+
+        For a solve compiled with the arguments (t, x, x', c_1, ..., c_p), x and x' vectors
+        of one length k <= n (the coordinates and rates of a second-order system
+        x'' = (the first k entries of the solution)): ``f(t, y)``, with y = (x, x') a 1-D
+        float64 array of length 2k and t a float, returns y' = (x', x'') as a fresh array,
+        computed by the generated code directly (no argument handling, no array but the
+        result). When its unrolled solve cannot decide (a pivot too small, a non-finite
+        entry) it returns (A, b) instead: call the object then, which solves or refuses
+        them. Like :attr:`single`, it checks nothing: a caller passes it what it has
+        checked (an error inside it means: call the object instead).
+
+        Parameters
+        ----------
+        values : sequence of float
+            The values of c_1, ..., c_p, bound once.
+
+        Returns
+        -------
+        callable or None
+            None when the single-state path has no unrolled solve (it always hands A and b
+            back: the object's call is then as fast) or the arguments are not laid out so.
+
+        Raises
+        ------
+        ArgumentError
+            If `values` does not hold one number per argument after x'.
+        ArgumentTypeError
+            If a value is not a real number.
+
+        Examples
+        --------
+        >>> import numpy as np, sympy
+        >>> t, x, v, m, k = sympy.symbols("t x v m k")
+        >>> solve = compile_linear_solve(sympy.Matrix([[m]]), sympy.Matrix([-k * x]),
+        ...                              [t, [x], [v], m, k], symmetric=True)
+        >>> f = solve.first_order([2.0, 8.0])
+        >>> f(0.0, np.array([1.0, 3.0]))
+        array([ 3., -4.])
+        """
+        if self.first_order_source is None:
+            return None
+        template = getattr(self, "_first_order", None)
+        if template is None:
+            template = _codegen.exec_function(
+                self.first_order_source, f"{self._name}_first_order",
+                f"<rigidmech {self._name}>", False)
+            object.__setattr__(self, "_first_order", template)
+        count = len(self._sizes) - 3
+        values = tuple(values)
+        if len(values) != count:
+            raise ArgumentError(
+                f"`values` must hold {count} numbers, one for each of "
+                f"{list(self._labels[3:])}; got {len(values)}. Pass them in that order.")
+        try:
+            defaults = tuple(float(v) for v in values)
+        except (TypeError, ValueError):
+            raise ArgumentTypeError(
+                f"`values` must be real numbers; got {values!r}.") from None
+        return types.FunctionType(template.__code__, template.__globals__,
+                                  template.__name__, defaults or None)
 
     def __call__(self, *args):
         if len(args) == len(self._sizes):
@@ -765,21 +871,29 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True,
         # so that the elimination computes their products once
         first, printed = {}, dict(zip(a_locals, prepared.math_reduced, strict=False))
         shared = {ij: first.setdefault(printed[local], local) for ij, local in entry.items()}
-        fast = (["    try:"]
-                + _saddle.saddle_lines(saddle, n - saddle, shared, b_locals, indent="        ")
-                + ["    except ArithmeticError:", "        pass"])
+
+        def fast(head=(), keep=None):
+            return (["    try:"]
+                    + _saddle.saddle_lines(saddle, n - saddle, shared, b_locals,
+                                           indent="        ", head=head, keep=keep)
+                    + ["    except ArithmeticError:", "        pass"])
     else:
-        fast = _cholesky_lines(n) if unrolled else []
-    single_lines = (
-        [f"def {name}_single({', '.join(single_params)}):"]
-        + prepared.math_body()
-        + [
-            f"    {local} = {printed}"
-            for local, printed in zip(a_locals + b_locals, prepared.math_reduced, strict=True)
-        ]
-        + fast
-        + [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]
-    )
+        def fast(head=(), keep=None):
+            return _cholesky_lines(n, head, keep) if unrolled else []
+    body = prepared.math_body() + [
+        f"    {local} = {printed}"
+        for local, printed in zip(a_locals + b_locals, prepared.math_reduced, strict=True)
+    ]
+    handed_back = [f"    return numpy.array({a_literal}), numpy.array([{', '.join(b_locals)}])"]
+    single_lines = [f"def {name}_single({', '.join(single_params)}):"] + body + fast() + handed_back
+    first_order_source = None
+    layout = _first_order_layout(prepared)
+    if layout is not None and (saddle is not None or unrolled) and len(layout[1]) <= n:
+        time_name, positions, rates, rest = layout
+        first_order_source = "\n".join(
+            [f"def {name}_first_order({', '.join([time_name, '_state_vector', *rest])}):",
+             f"    {', '.join(positions + rates)} = _state_vector.tolist()"]
+            + body + fast(rates, len(positions)) + handed_back)
     if symmetric:  # the solution written into `_out` if given (_batched_cholesky_lines)
         batched_params = batched_params + ["_out=None"]
     batched_lines = (
@@ -825,5 +939,17 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True,
         n=n,
         symmetric=symmetric,
         unrolled=unrolled,
+        first_order_source=first_order_source,
     )
     return obj
+
+
+def _first_order_layout(prepared):
+    """(name of t, names of x, names of x', names of the rest) when the arguments are
+    (t, x, x', scalars...) with x and x' vectors of one length; else None."""
+    sizes = prepared.sizes
+    if (len(sizes) < 3 or sizes[0] != 0 or sizes[1] == 0 or sizes[2] != sizes[1]
+            or any(sizes[3:])):
+        return None
+    k, names = sizes[1], list(prepared.names)
+    return names[0], names[1:1 + k], names[1 + k:1 + 2 * k], names[1 + 2 * k:]

@@ -205,6 +205,7 @@ def constrained_solver(eqs):
             raise locked(eqs, exc, args) from exc
 
     solve.full = checked
+    solve.linear = full  # its generated first-order form for rhs (the errors as above)
     return solve
 
 
@@ -266,35 +267,37 @@ def rhs(eqs, params):
     if not any(callable(w) for w in inputs):
         values = values + inputs
         # one state of float64 (what the integrators pass, call after call): the generated
-        # single-state code called directly on Python floats, without the argument parsing
-        # of solve(...) (a quarter of an integration's time at n = 6); anything else, or a
-        # failure there, takes the general path below
+        # code's first-order form, y' = (q', q'') from y and the values bound once, without
+        # the argument parsing of solve(...) and the arrays around it (a quarter of an
+        # integration's time at n = 6, a third of a call of the squeezer's); anything else,
+        # or a failure there (A and b handed back: a pivot too small), takes the general
+        # path below
         # likewise a batch (2n, m) of float64 with one time or a time per column (the
         # integrators' batches): the generated batched code without the argument checks
         # (a symmetric system's batched code writes the accelerations into the rows of the
         # output it is given: no concatenation after it)
         compiled = isinstance(solve, CompiledLinearSolve)
-        single = solve._single if compiled else None
-        batched = solve._batched if compiled else None
+        linear = solve if compiled else getattr(solve, "linear", None)
+        batched = solve.batched if compiled else None
         into = compiled and solve.symmetric
         empty = np.empty
         tail = tuple(float(v) for v in values)
+        first_order = linear.first_order(tail) if linear is not None else None
         size, f64, ndarray, scalar = 2 * n, np.float64, np.ndarray, (float, np.float64)
-        errstate = np.errstate
+        shape, errstate = (size,), np.errstate
 
         def fun(t, y):
-            if single is not None and type(y) is ndarray and y.dtype == f64:
-                if y.shape == (size,) and type(t) in scalar:
-                    try:
-                        acc = single(t, *y.tolist(), *tail)
-                    except (ArithmeticError, ValueError, TypeError):
-                        acc = None
-                    if acc is not None and type(acc) is not tuple:
-                        out = np.empty(size)
-                        out[:n] = y[n:]
-                        out[n:] = acc
-                        return out
-                elif y.ndim == 2 and y.shape[0] == size and (type(t) in scalar or (
+            if type(y) is ndarray and y.dtype == f64:
+                if y.shape == shape and type(t) in scalar:
+                    if first_order is not None:
+                        try:
+                            dy = first_order(t, y)
+                        except (ArithmeticError, ValueError, TypeError):
+                            dy = None
+                        if type(dy) is ndarray:
+                            return dy
+                elif batched is not None and y.ndim == 2 and y.shape[0] == size and (
+                        type(t) in scalar or (
                         type(t) is ndarray and t.shape == y.shape[1:] and t.dtype == f64)):
                     u = y[n:]
                     try:

@@ -180,16 +180,27 @@ def closure_scales(eqs):
     return eqs._cache[key]
 
 
-def _least_norm(J, r):
-    """J^T (J J^T)^-1 r, the smallest dx with J dx = r: by LAPACK's Cholesky solve (dposv,
-    about a third of the cost of numpy.linalg.solve for a few rows, measured with
-    benchmarks/squeezer.py), by numpy.linalg.solve when J J^T is not positive definite to
-    LAPACK (a rank-deficient J: what numpy does with it, as before)."""
+def _row_solve(J):
+    """(J J^T)^-1 J, so that ``r @ X`` is J^T (J J^T)^-1 r, the smallest dx with J dx = r:
+    by LAPACK's Cholesky solve (dposv, about a third of the cost of numpy.linalg.solve for
+    a few rows, measured with benchmarks/squeezer.py), by numpy.linalg.solve when J J^T is
+    not positive definite to LAPACK (a rank-deficient J: what numpy does with it)."""
     G = np.dot(J, J.T)
-    _, x, info = _dposv(G, r)
+    _, X, info = _dposv(G, J)
     if info != 0:
-        x = np.linalg.solve(G, r)
-    return np.dot(J.T, x)
+        X = np.linalg.solve(G, J)
+    return X
+
+
+def _at(f, flat, args):
+    """f on one state: its generated single-state code on the floats `flat` (the arguments
+    `args` flattened; a state of a step), or the call f(*args) when that fails (a value the
+    floats cannot take: its vectorised path decides); a float array."""
+    try:
+        out = f.single(*flat)
+    except (ArithmeticError, ValueError, TypeError):
+        out = f(*args)
+    return np.asarray(out, dtype=float)
 
 
 def projector(eqs, values, rates=True):
@@ -199,7 +210,16 @@ def projector(eqs, values, rates=True):
     decreases), then the rates onto A(q, t) q' + a(q, t) = 0 by the same least-norm step
     (exact: c is linear in q'); with ``rates=False`` the positions only, the rest of the
     state kept (the independent speeds of reduced equations, free by construction). None if
-    `eqs` has no constraints."""
+    `eqs` has no constraints.
+
+    When every row is holonomic (A = J) and the iteration stopped by its rule (|Φ| no
+    longer decreasing: settled to rounding), the rates' step uses the factor of the last
+    position step, J at the q before its correction: that correction was the last of a
+    converged Newton iteration (the size of the residual it removed, at most about a
+    step's tolerance), A(q) differs from that J by as much relative, and the rates'
+    residual left, that difference times the residual removed, is of the second order.
+    One evaluation of A and one factorisation less per step; an iteration that used all
+    its steps evaluates A at the final q."""
     if eqs.constraints is None:
         return None
     q_s = eqs._stand_ins()[0]
@@ -210,25 +230,30 @@ def projector(eqs, values, rates=True):
 
     def project(t, y):
         w = [v(t) if callable(v) else v for v in inputs]
+        rest = [*consts, *w]
         q, u = y[:n].copy(), y[n:]
+        X = None  # (J J^T)^-1 J of the last position step
         if phi_f is not None:
             last = math.inf
             for _ in range(PROJECTION_ITERATIONS):
-                r = np.asarray(phi_f(t, q, *consts, *w), dtype=float).reshape(-1)
-                size = float(np.max(np.abs(r)))
-                if not size < last or size == 0.0:
-                    break
+                flat = [t, *q.tolist(), *rest]
+                r = _at(phi_f, flat, (t, q, *rest)).reshape(-1)
+                listed = r.tolist()  # max(|r|) on floats: a fifth of numpy's cost here
+                size, total = max(map(abs, listed)), sum(listed)
+                if not size < last or size == 0.0 or not total - total == 0.0:
+                    break  # settled, or a residual not finite (the sum: inf or nan)
                 last = size
-                J = np.asarray(A_f(t, q, *consts, *w), dtype=float)
-                if rows is not None:
-                    J = J[rows]
-                q -= _least_norm(J, r)
+                J = _at(A_f, flat, (t, q, *rest))
+                X = _row_solve(J if rows is None else J[rows])
+                q -= np.dot(r, X)
+            else:
+                X = None  # not settled in the steps allowed: A at the final q below
         if not rates:
             return np.concatenate((q, u))
-        A = np.asarray(A_f(t, q, *consts, *w), dtype=float)
-        r = np.asarray(c_f(t, q, u, *consts, *w), dtype=float).reshape(-1)
-        u = u - _least_norm(A, r)
-        return np.concatenate((q, u))
+        r = _at(c_f, [t, *q.tolist(), *u.tolist(), *rest], (t, q, u, *rest)).reshape(-1)
+        if X is None or rows is not None:
+            X = _row_solve(_at(A_f, [t, *q.tolist(), *rest], (t, q, *rest)))
+        return np.concatenate((q, u - np.dot(r, X)))
 
     return project
 
