@@ -98,3 +98,27 @@ def test_fold_numbers_keeps_small_values_that_are_not_zero():
     folded = fold_numbers([tiny * a, residue])
     assert folded[0] != 0 and folded[1] != 0
     assert float(folded[0].subs(a, 1)) == pytest.approx(1.4142135623730951e-30, rel=1e-15)
+
+
+def test_vanishes_with_scale_samples_the_symbols_of_the_expression(monkeypatch):
+    """With ``scale``, the float path of ``vanishes`` evaluates the expression and its
+    reference magnitude at the same sample point. The symbols were drawn from the magnitudes
+    only, which turn sin and cos into 1: an angle inside a sine had no value, and every such
+    row went to ``simplify(nsimplify(...))`` (a four-bar's closure conditions: 0.17 of its
+    0.2 s), where float rounding counts as a term. Now: the four-bar's open rows are not zero,
+    a rounding residue 6.9e-18 cos(q) next to terms cos(q) is, 1e-6 cos(q) is not, and
+    ``simplify`` is not called."""
+    import rigidmech as rm
+    from rigidmech._core.symbolic import vanishes
+
+    q1, q2, q3 = rm.coordinates("q1 q2 q3")
+    x = -2.0 * sp.cos(q1 + q2) - 1.0 * sp.cos(q1) + 1.5 * sp.cos(q3) + 2.0
+    y = -2.0 * sp.sin(q1 + q2) - 1.0 * sp.sin(q1) + 1.5 * sp.sin(q3)
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("sympy.simplify called")
+
+    monkeypatch.setattr(sp, "simplify", refuse)
+    assert not vanishes(x, scale=[x, y]) and not vanishes(y, scale=[x, y])
+    assert vanishes(6.9e-18 * sp.cos(q1), scale=[sp.cos(q1)])
+    assert not vanishes(1e-6 * sp.cos(q1), scale=[sp.cos(q1)])

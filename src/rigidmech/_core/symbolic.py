@@ -433,7 +433,9 @@ def vanishes(expr, skip=(), scale=None) -> bool:
             return decided
         return sp.simplify(expr) == 0
     refs = None if scale is None else [magnitude(e) for e in (expr, *scale)]
-    atoms = _sample_atoms(expr if refs is None else sp.Tuple(*refs), skip)
+    # the symbols of the expression and of its references (a magnitude turns sin(q) into 1:
+    # drawn from the references alone, q had no value and every such row went to simplify)
+    atoms = _sample_atoms(expr if refs is None else sp.Tuple(expr, *refs), skip)
     for seed in _SEEDS:
         values, memo = _sample_values(atoms, seed), {}
         try:

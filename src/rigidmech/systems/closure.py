@@ -93,8 +93,12 @@ def _zero(e, scale=None):
     cheaply (no simplify for the conditions that remain, the usual case); otherwise
     ``simplify`` decides; float constants count to their rounding, relative to the terms of
     ``scale`` (the quantities of the same kind: the positions of the points, the other
-    components of a velocity or rotation) when given."""
-    return vanishes(e, skip=(t,), scale=scale)
+    components of a velocity or rotation) when given. The time t is sampled like the other
+    symbols: a condition on a support driven as a function of t (a belt, a turntable) carries
+    it explicitly, and leaving it out of the sample sent every such row to ``simplify``
+    (seconds per row for a ball on a driven turntable); q(t) and its derivatives are sampled
+    as wholes, so the value of t does not reach them."""
+    return vanishes(e, scale=scale)
 
 
 def closure_conditions(link, meets=None) -> list:

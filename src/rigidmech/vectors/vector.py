@@ -32,6 +32,7 @@ from ._rotations import (
     path_to_ancestor,
     transpose,
 )
+from .euler_parameters import euler_parameters_of
 from .symbols import _is_rate, partial_derivative, time_derivative
 
 __all__ = ["Vector", "dot", "cross", "mixed", "rotation_vector", "partial_rotation_vector"]
@@ -788,10 +789,28 @@ def _own_rotation(f, variable=None):
     if f._axis is not None:
         r = rate(f._angle)
         return tuple(r if n == f._axis else ZERO for n in range(3))
+    e = euler_parameters_of(f)
+    if e is not None:
+        return _euler_parameter_rotation(e, [rate(x) for x in e])
     c = f._matrix
     cdot = tuple(tuple(rate(x) for x in row) for row in c)
     w = matmul(transpose(c), cdot)  # skew: [[0,-wz,wy],[wz,0,-wx],[-wy,wx,0]]
     return tuple(sp.simplify(x) for x in (w[2][1], w[0][2], w[1][0]))
+
+
+def _euler_parameter_rotation(e, rates):
+    """omega of the frame of Euler parameters ``e`` (its matrix normalised by |e|^2, see
+    :mod:`rigidmech.vectors.euler_parameters`) in its own basis, from the rates e' (or their
+    partial derivatives: the expression is linear in them):
+    omega = 2 vec(conj(e) * e') / |e|^2. The axial vector of C^T C' for C of p = e / |e| is
+    2 vec(conj(p) * p'), and vec(conj(e) * e) = 0 leaves only the term above; written in
+    closed form here because ``simplify`` of C^T C' took seconds (book, ch. 9.1.2)."""
+    a, b, c, d = e
+    da, db, dc, dd = rates
+    k = 2 / (a**2 + b**2 + c**2 + d**2)
+    return (k * (a * db - b * da + d * dc - c * dd),
+            k * (a * dc - c * da + b * dd - d * db),
+            k * (a * dd - d * da + c * db - b * dc))
 
 
 @lru_cache(maxsize=16384)
