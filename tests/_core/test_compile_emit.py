@@ -68,3 +68,19 @@ def test_generated_code_names_what_cse_shares_and_counts_as_sympy_cse():
         mp.setattr(_cse, "_CSE_OPTIMIZATIONS", [])
         g = compile_expressions(EXPRESSIONS, [x, y, z])
     assert f.n_ops <= 1.02 * g.n_ops
+
+
+def test_stand_ins_leave_powers_unevaluated_only_when_asked():
+    """``xreplace_shared(..., powers=False)`` (the stand-ins of compiled equations) does not
+    evaluate a power again after its base changed: sqrt(q(t)**2) with a real symbol for q(t)
+    stays a square root, of the same value; by default it becomes |q| as with xreplace."""
+    from rigidmech._core.symbolic import xreplace_shared
+
+    t = sympy.Symbol("t")
+    q = sympy.Function("q")(t)
+    e = sympy.sqrt(q**2) + q**2 * x
+    kept, = xreplace_shared([e], {q: z}, powers=False)
+    evaluated, = xreplace_shared([e], {q: z})
+    assert evaluated.has(sympy.Abs(z)) and e.xreplace({q: z}).has(sympy.Abs(z))
+    assert kept.has(sympy.sqrt(z**2, evaluate=False)) and not kept.has(sympy.Abs)
+    assert float(kept.subs({z: -0.7, x: 2.0})) == pytest.approx(0.7 + 0.98, rel=1e-15)
