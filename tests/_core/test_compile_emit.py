@@ -84,3 +84,14 @@ def test_stand_ins_leave_powers_unevaluated_only_when_asked():
     assert evaluated.has(sympy.Abs(z)) and e.xreplace({q: z}).has(sympy.Abs(z))
     assert kept.has(sympy.sqrt(z**2, evaluate=False)) and not kept.has(sympy.Abs)
     assert float(kept.subs({z: -0.7, x: 2.0})) == pytest.approx(0.7 + 0.98, rel=1e-15)
+
+
+@pytest.mark.parametrize("cse", [True, False], ids=["cse", "no-cse"])
+def test_operations_counted_while_writing_equal_the_count_on_the_code(cse):
+    from rigidmech._core._codegen import count_operations
+
+    f = compile_expressions(EXPRESSIONS, [x, y, z], cse=cse)
+    body = [line.split(" = ", 1)[1] for line in f.single_source.splitlines()[1:-1]]
+    returned = f.single_source.splitlines()[-1].strip()[len("return "):]
+    floats = returned.count("float(")     # the output's float(...) calls are not counted
+    assert f.n_ops == count_operations(body + [returned]) - floats

@@ -397,7 +397,9 @@ class _Prepared:
             flat, use_cse, _MathPrinter(self.printed_names), self.array_printer())
         self.math_replacements = [code.math for _, code in self.replacements]
         self.math_reduced = [code.math for code in self.reduced]
-        self.n_ops = count_operations(self.math_replacements + self.math_reduced)
+        # counted as the code was written, by the rule of count_operations
+        self.n_ops = (sum(code.ops for _, code in self.replacements)
+                      + sum(code.ops for code in self.reduced))
         self.sizes = sizes
         self.symbols = tuple(groups)
         self.names = names
