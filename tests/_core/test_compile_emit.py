@@ -70,20 +70,23 @@ def test_generated_code_names_what_cse_shares_and_counts_as_sympy_cse():
     assert f.n_ops <= 1.02 * g.n_ops
 
 
-def test_stand_ins_leave_powers_unevaluated_only_when_asked():
-    """``xreplace_shared(..., powers=False)`` (the stand-ins of compiled equations) does not
-    evaluate a power again after its base changed: sqrt(q(t)**2) with a real symbol for q(t)
-    stays a square root, of the same value; by default it becomes |q| as with xreplace."""
+def test_stand_ins_leave_powers_and_functions_unevaluated_only_when_asked():
+    """``xreplace_shared(..., evaluate=False)`` (the stand-ins of compiled equations) does not
+    evaluate a power or a function again after its arguments changed: sqrt(q(t)**2) and
+    re(q(t)) with a real symbol for q(t) stay a square root and re, of the same value; by
+    default they become |q| and q as with xreplace."""
     from rigidmech._core.symbolic import xreplace_shared
 
     t = sympy.Symbol("t")
     q = sympy.Function("q")(t)
-    e = sympy.sqrt(q**2) + q**2 * x
-    kept, = xreplace_shared([e], {q: z}, powers=False)
+    e = sympy.sqrt(q**2) + q**2 * x + sympy.re(q) * x
+    kept, = xreplace_shared([e], {q: z}, evaluate=False)
     evaluated, = xreplace_shared([e], {q: z})
     assert evaluated.has(sympy.Abs(z)) and e.xreplace({q: z}).has(sympy.Abs(z))
+    assert not evaluated.has(sympy.re)
     assert kept.has(sympy.sqrt(z**2, evaluate=False)) and not kept.has(sympy.Abs)
-    assert float(kept.subs({z: -0.7, x: 2.0})) == pytest.approx(0.7 + 0.98, rel=1e-15)
+    assert kept.has(sympy.re(z, evaluate=False))
+    assert float(kept.subs({z: -0.7, x: 2.0})) == pytest.approx(0.7 + 0.98 - 1.4, rel=1e-15)
 
 
 @pytest.mark.parametrize("cse", [True, False], ids=["cse", "no-cse"])
