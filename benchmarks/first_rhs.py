@@ -8,13 +8,15 @@ Two families, each size in a fresh process (sympy's cache cold):
   parent by Euler angles z-x-z (precession, nutation, spin), a ball joint at the tip of the
   previous link, gravity -g z. 3n degrees of freedom.
 
-Times, per size: derive (build the System, ``equations_of_motion``), compile (the first
+Times (CPU seconds of the case's process; ``--wall`` for wall-clock seconds), per size:
+derive (build the System, ``equations_of_motion``), compile (the first
 ``EquationsOfMotion.rhs(**params)``: cse, code generation, Python's compile), the first call
-f(t, y) and the best later call; the ratios to "Kane-8" (KanesMethod deriving the planar
-8-link pendulum, ``derive.py``, measured in the same run); the operation counts of the
-generated code (``n_ops``: operators and calls of the generated single-state code) and of M,
-f written out as trees (:func:`tree_operations`: what a tree walk such as sympy's ``cse`` or
-``count_ops`` has to visit); the growth exponents of each over n (log-log least squares).
+f(t, y) (it imports scipy.linalg, which solves M q'' = f for n > 6) and the best later call;
+the ratios to "Kane-8" (KanesMethod deriving the planar 8-link pendulum, ``derive.py``,
+measured in the same run and with the same clock); the operation counts of the generated code
+(``n_ops``: operators and calls of the generated single-state code) and of M, f written out as
+trees (:func:`tree_operations`: what a tree walk such as sympy's ``cse`` or ``count_ops`` has
+to visit); the growth exponents of each over n (log-log least squares).
 Correctness: the compiled q'' against M^-1 f evaluated from the symbolic M and f (one pass over
 the DAG, numpy) at 3 random states, relative to 1e-12.
 
@@ -23,6 +25,7 @@ Run::
     python benchmarks/first_rhs.py                       # planar 5..30, 3D 2..6 (~10 min)
     python benchmarks/first_rhs.py --planar 5 10 --chain 2 3 4
     python benchmarks/first_rhs.py --profile-chain 4     # cProfile of one compile, top 25
+    python benchmarks/first_rhs.py --wall                # wall-clock instead of CPU seconds
 """
 
 from __future__ import annotations
@@ -47,6 +50,17 @@ from derive import (  # noqa: E402
 )
 
 PLANAR = (5, 10, 20, 30)
+
+#: The clock of derive, compile, first call and Kane-8: CPU seconds of the case's process by
+#: default (steady on a shared machine; every timed step is single-threaded sympy/Python), wall
+#: seconds with ``--wall`` (passed to the case processes through the environment).
+_WALL = "FIRST_RHS_WALL"
+
+
+def _clock():
+    return time.perf_counter() if os.environ.get(_WALL) else time.process_time()
+
+
 CHAIN = (2, 3, 4, 5, 6)
 N_CHECK = 3
 
@@ -100,23 +114,23 @@ def case(kind, n):
     from rigidmech._core.symbolic import xreplace_shared
 
     _preimport()
-    start = time.perf_counter()
+    start = _clock()
     system = n_link_pendulum(n) if kind == "planar" else spherical_chain(n)
     eqs = system.equations_of_motion()
-    derive = time.perf_counter() - start
+    derive = _clock() - start
     _emit(derive=derive)
     rng = np.random.default_rng(n)
     params = _params(system, rng)
-    start = time.perf_counter()
+    start = _clock()
     fun = eqs.rhs(**params)
-    compile_time = time.perf_counter() - start
+    compile_time = _clock() - start
     k = len(eqs.coordinates)
     q = rng.uniform(0.3, 1.2, size=(k, N_CHECK))       # nutations away from 0 and pi
     u = rng.uniform(-1.0, 1.0, size=(k, N_CHECK))
     y = np.concatenate((q[:, 0], u[:, 0]))
-    start = time.perf_counter()
+    start = _clock()
     fun(0.0, y)
-    first_call = time.perf_counter() - start
+    first_call = _clock() - start
     solver = eqs._cache["solver"]
     _emit(compile=compile_time, first_call=first_call, n_ops=solver.n_ops,
           call=_best(lambda: fun(0.0, y)))
@@ -137,9 +151,9 @@ def case(kind, n):
 
 def case_kane8():
     _preimport()
-    start = time.perf_counter()
+    start = _clock()
     kane_pendulum(8)
-    _emit(derive=time.perf_counter() - start)
+    _emit(derive=_clock() - start)
 
 
 def profile_chain(n, top=25):
@@ -170,9 +184,13 @@ def main(argv=None):
     parser.add_argument("--planar", nargs="*", type=int, default=list(PLANAR))
     parser.add_argument("--chain", nargs="*", type=int, default=list(CHAIN))
     parser.add_argument("--timeout", type=float, default=400.0, help="seconds per case")
+    parser.add_argument("--wall", action="store_true",
+                        help="time with the wall clock instead of the process's CPU time")
     parser.add_argument("--profile-chain", type=int, help=argparse.SUPPRESS)
     parser.add_argument("--case", nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
+    if args.wall:
+        os.environ[_WALL] = "1"
     if args.case:
         kind, n = args.case[0], int(args.case[1])
         case_kane8() if kind == "kane8" else case(kind, n)
@@ -184,7 +202,9 @@ def main(argv=None):
                            "sympy KanesMethod", "Time to the first rhs: derive, compile, call"),
           flush=True)
     k8 = run_case(8, "kane8", args.timeout, script=__file__).get("derive", float("nan"))
-    print(f"Kane-8 (KanesMethod, planar 8-link pendulum, derive): {k8:.2f} s\n", flush=True)
+    clock = "wall-clock" if args.wall else "CPU"
+    print(f"Kane-8 (KanesMethod, planar 8-link pendulum, derive): {k8:.2f} s; all times in "
+          f"{clock} seconds\n", flush=True)
     cols = ("family", "n", "dof", "derive", "compile", "1st call", "call [us]", "first rhs",
             "/Kane-8", "compile/derive", "ops tree", "ops code", "rel diff")
     widths = (7, 3, 4, 9, 9, 9, 10, 10, 8, 15, 10, 9, 9)

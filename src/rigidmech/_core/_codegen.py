@@ -22,7 +22,7 @@ from sympy.printing.numpy import SciPyPrinter
 from sympy.printing.pycode import PythonCodePrinter
 from sympy.tensor.array import NDimArray
 
-from ._cse import common_subexpressions
+from ._emit import Code, generate
 from .errors import ArgumentError, ArgumentTypeError, CompilationError
 
 __all__: list[str] = []
@@ -112,7 +112,11 @@ class _ArrayPrinter(_Named, SciPyPrinter):
 
 
 def print_expr(printer, expr):
-    """Print one expression, turning a printer failure into a :class:`CompilationError`."""
+    """Print one expression, turning a printer failure into a :class:`CompilationError`; an
+    expression already printed (a :class:`~rigidmech._core._emit.Code`) gives its code for
+    that printer's path."""
+    if type(expr) is Code:
+        return expr.array if isinstance(printer, _ArrayPrinter) else expr.math
     try:
         return printer.doprint(expr)
     except PrintMethodNotImplementedError as exc:
@@ -387,12 +391,15 @@ class _Prepared:
             s: n for s, n in zip(symbols, names, strict=True)
             if n != s.name or isinstance(s, sympy.Dummy)
         }
-        self.replacements, self.reduced = common_subexpressions(flat, use_cse)
-        # the single-state path's printing, once: its code and its operation count
-        printer = _MathPrinter(self.printed_names)
-        self.math_replacements = [print_expr(printer, rhs) for _, rhs in self.replacements]
-        self.math_reduced = [print_expr(printer, e) for e in self.reduced]
-        self.n_ops = count_operations(self.math_replacements + self.math_reduced)
+        # the cse and the printing of both paths in one pass (replacements and reduced
+        # expressions as Code, which print_expr passes through)
+        self.replacements, self.reduced = generate(
+            flat, use_cse, _MathPrinter(self.printed_names), self.array_printer())
+        self.math_replacements = [code.math for _, code in self.replacements]
+        self.math_reduced = [code.math for code in self.reduced]
+        # counted as the code was written, by the rule of count_operations
+        self.n_ops = (sum(code.ops for _, code in self.replacements)
+                      + sum(code.ops for code in self.reduced))
         self.sizes = sizes
         self.symbols = tuple(groups)
         self.names = names

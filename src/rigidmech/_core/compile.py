@@ -5,7 +5,8 @@ actions, energies, positions of points) goes through this module once.  It knows
 it takes sympy expressions and the symbols to use as arguments.
 
 Each compiled function carries two code paths generated from one common-subexpression
-elimination (``sympy.cse``) of its expressions:
+elimination of its expressions (sympy's algorithm, :mod:`rigidmech._core._cse`; the code of
+both paths written in one pass over the result, :mod:`rigidmech._core._emit`):
 
 * a **single-state** path, used when every scalar argument is a number and every vector
   argument is 1-D of its declared length: the arguments are unpacked into Python floats and
@@ -365,8 +366,8 @@ def compile_expressions(exprs, args, *, name="f", cse=True):
     name : str, optional
         Name of the function, used in the generated source and the repr.
     cse : bool, optional
-        Whether to share common subexpressions with ``sympy.cse`` (default True).  Turn it off
-        only for tiny expressions where cse costs more time than it saves.
+        Whether to share common subexpressions (default True).  Turn it off only for tiny
+        expressions where cse costs more time than it saves.
 
     Returns
     -------
@@ -385,9 +386,11 @@ def compile_expressions(exprs, args, *, name="f", cse=True):
 
     Notes
     -----
-    The expressions go through ``sympy.cse`` once; the replacement list and the reduced
-    expressions are printed twice, with the ``math`` module for the single-state path and with
-    numpy / scipy.special for the vectorised path, and compiled with :func:`compile`.  For a
+    The expressions go through a common-subexpression elimination once; the replacement list
+    and the reduced expressions are written twice in the same pass, with the ``math`` module
+    for the single-state path and with numpy / scipy.special for the vectorised path (sympy's
+    printers' rules; a node without a rule of its own is printed by them), and compiled with
+    :func:`compile`.  For a
     batch, a vector argument has shape ``(k, *batch)`` and a scalar argument any shape that
     broadcasts with the others; each output gets shape ``out_shape + batch``.
 
@@ -759,7 +762,7 @@ def compile_linear_solve(A, b, args, *, symmetric=False, name="solve", cse=True,
     name : str, optional
         Name used in the generated source and the repr.
     cse : bool, optional
-        Whether to share common subexpressions with ``sympy.cse`` (default True).
+        Whether to share common subexpressions (default True).
     saddle : int, optional
         Declare A the saddle-point matrix [[M, C^T], [C, 0]] of a constrained system, M its
         leading ``saddle`` x ``saddle`` block, symmetric positive definite (checked:

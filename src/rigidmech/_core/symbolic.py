@@ -52,7 +52,7 @@ __all__ = ["xreplace_shared", "free_symbols_shared", "atoms_shared", "is_exactly
            "is_identically_zero", "simplifies_to_zero", "zero_decision"]
 
 
-def xreplace_shared(exprs, rule, memo=None):
+def xreplace_shared(exprs, rule, memo=None, *, evaluate=True):
     """Apply ``rule`` (an exact, structural replacement like ``xreplace``) to each expression
     of ``exprs``, rebuilding every distinct subexpression only once.
 
@@ -63,6 +63,13 @@ def xreplace_shared(exprs, rule, memo=None):
         Mapping of subexpressions to replacements; a matched node is not entered.
     memo : dict, optional
         Cache shared between calls (pass the same dict to share work across calls).
+    evaluate : bool, optional
+        Whether powers and functions whose arguments changed are evaluated again (default
+        True; sums and products never are). False when ``rule`` puts symbols in place of
+        leaves and the result is to be computed with (compiled code): the value is the same,
+        and ``Pow`` asks the assumptions of its base, a large sum, again (0.2 s for the 210
+        powers of the 3D chain of 6 links), ``sin`` and ``cos`` look for multiples of pi
+        (0.1 s for the planar 20-link pendulum; benchmarks/first_rhs.py).
 
     Returns
     -------
@@ -89,7 +96,8 @@ def xreplace_shared(exprs, rule, memo=None):
             args = tuple(walk(a) for a in e.args)
             if all(a is b for a, b in zip(args, e.args, strict=True)):
                 out = e
-            elif isinstance(e, sp.Add | sp.Mul):
+            elif isinstance(e, sp.Add | sp.Mul) or (
+                    not evaluate and isinstance(e, sp.Pow | sp.Function)):
                 # Replacing leaves by leaves keeps sums and products as they are: skip the
                 # canonical re-sorting that dominates the cost of rebuilding them.
                 out = e.func(*args, evaluate=False)

@@ -99,8 +99,8 @@ def symbolic(eqs):
         q_s, u_s, a_s, w_s, rule = stand_ins(eqs)
         n = len(q_s)
         memo = {}
-        M = xreplace_shared(list(eqs._M), rule, memo)
-        f = xreplace_shared(list(eqs._f), rule, memo)
+        M = xreplace_shared(list(eqs._M), rule, memo, evaluate=False)
+        f = xreplace_shared(list(eqs._f), rule, memo, evaluate=False)
         eqs._cache["symbolic"] = (q_s, u_s, w_s, rule, sp.ImmutableMatrix(n, n, M),
                                   sp.ImmutableMatrix(n, 1, f))
     return eqs._cache["symbolic"]
