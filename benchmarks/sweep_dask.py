@@ -13,9 +13,9 @@ cluster's start nor the compilation (done once before timing, as a user's second
 the fixed cost of a Dask sweep (a 1-point sweep, scheduling and round trips) is printed too,
 with the break-even size it implies on 2 idle cores.
 
-The workers are started with the two settings docs/api/sweeps.rst recommends (the nanny leaves
-glibc's malloc thresholds alone, the workers' statistical profiler off); ``--dask-defaults``
-starts them with dask's defaults instead, for comparison.
+The workers are started under ``rigidmech.sweeps.WORKER_CONFIG`` (the nanny leaves glibc's
+malloc thresholds alone, the workers' statistical profiler off); ``--dask-defaults`` starts
+them with dask's defaults instead, for comparison.
 
     python benchmarks/sweep_dask.py [n_per_axis] [chunk_size] [--dask-defaults]
 """
@@ -30,13 +30,7 @@ import numpy as np
 import sympy as sp
 
 import rigidmech as rm
-from rigidmech.sweeps import grid, points, sweep
-
-#: Dask settings for workers running sweeps (see docs/api/sweeps.rst, "Workers for sweeps").
-SWEEP_WORKERS = {
-    "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
-    "distributed.worker.profile.enabled": False,
-}
+from rigidmech.sweeps import WORKER_CONFIG, grid, points, sweep
 
 
 def two_mass_pendulum():
@@ -80,7 +74,7 @@ def main():
     t_serial = time.perf_counter() - t0
     c1, f1 = cpu_and_faults()
     c_serial, f_serial = c1 - c0, f1 - f0
-    with dask.config.set({} if defaults else SWEEP_WORKERS), \
+    with dask.config.set({} if defaults else WORKER_CONFIG), \
             LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                          dashboard_address=None) as cluster, Client(cluster) as client:
         sweep(eqs, grid(m2=[1.0]), backend="dask", client=client, **tiny)  # workers warmed

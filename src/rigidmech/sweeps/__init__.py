@@ -6,7 +6,8 @@ of a linearised system, at every point of a :func:`grid` or a list of :func:`poi
 in-process by default, unchanged on a Dask cluster (``backend="dask"``; ``pip install
 rigidmech[distributed]``). The results are labelled by the swept values (an
 ``xarray.DataArray`` when xarray is installed, else :class:`Labelled`); chunks that fail are
-returned beside the finished ones.
+returned beside the finished ones. :data:`WORKER_CONFIG` holds the Dask settings for the
+workers that run sweeps (to hold while a cluster starts).
 
 Examples
 --------
@@ -14,11 +15,13 @@ Examples
 ...           labels="numpy")
 >>> r.values.values.tolist()
 [[3.0, 4.0], [6.0, 8.0]]
+>>> WORKER_CONFIG["distributed.worker.profile.enabled"]
+False
 """
 
 from ._labelled import Labelled, Points, grid, points
-from ._run import ChunkFailure, ClusterError
+from ._run import WORKER_CONFIG, ChunkFailure, ClusterError
 from .api import SweepResult, sweep
 
 __all__ = ["sweep", "grid", "points", "Points", "Labelled", "SweepResult", "ChunkFailure",
-           "ClusterError"]
+           "ClusterError", "WORKER_CONFIG"]
