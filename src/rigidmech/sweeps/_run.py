@@ -19,23 +19,12 @@ Examples
 from __future__ import annotations
 
 import sys
-from types import MappingProxyType
 
 import numpy as np
 
 from .._core.errors import ArgumentError, RigidmechError
 
-__all__ = ["ChunkFailure", "ClusterError", "WORKER_CONFIG", "run_chunks"]
-
-#: Dask settings for the workers of sweeps, to hold while they start: the nanny does not set
-#: ``MALLOC_TRIM_THRESHOLD_`` (with it, glibc maps and unmaps each array of more than 128 KiB,
-#: a page fault per page: a worker's CPU a point a third above the serial one on the double
-#: pendulum sweep in chunks of 1000), and no statistical profiler samples their stacks every
-#: 10 ms. ``with dask.config.set(WORKER_CONFIG): LocalCluster(...)``; a plain mapping, read-only.
-WORKER_CONFIG = MappingProxyType({
-    "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
-    "distributed.worker.profile.enabled": False,
-})
+__all__ = ["ChunkFailure", "ClusterError", "run_chunks"]
 
 
 class ClusterError(RigidmechError, ConnectionError):

@@ -193,7 +193,7 @@ def sweep(target, over, *, quantity="final", t=(0.0, 10.0), times=None, method="
         chunk it is in within the tolerance, never on the backend.
     chunk_size : int
         Points per chunk (the last chunk may be smaller). The default, 1000: on the double
-        pendulum's 10^4-point sweep a point costs 2.2-2.6x less CPU than in chunks of 256 (each
+        pendulum's 10^4-point sweep a point costs 2.2-2.4x less CPU than in chunks of 256 (each
         batched call of the right-hand side has a fixed cost, shared by the chunk), 1.2-1.3x
         more than in chunks of 2500, and 10 chunks leave a few to each worker of a small
         cluster. Both backends cut the same chunks.
