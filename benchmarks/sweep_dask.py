@@ -11,7 +11,7 @@ at the cost of the serial path) and serial CPU over the busiest worker's CPU (th
 idle cores) are the figures that carry over. The run with 2 workers includes neither the
 cluster's start nor the compilation (done once before timing, as a user's second sweep would);
 the fixed cost of a Dask sweep (a 1-point sweep, scheduling and round trips) is printed too,
-with the break-even size it implies on 2 idle cores.
+with the break-even size it implies on 2 idle cores at the measured cost a point and parity.
 
 The workers are started under ``rigidmech.sweeps.WORKER_CONFIG`` (the nanny leaves glibc's
 malloc thresholds alone, the workers' statistical profiler off); ``--dask-defaults`` starts
@@ -94,9 +94,10 @@ def main():
     summed, busiest = sum(cpu.values()), max(cpu.values())
     same = np.array_equal(np.asarray(serial.values.values), np.asarray(dask_run.values.values),
                           equal_nan=True)
-    per_point = c_serial / over.size
-    # on idle cores: serial N c against N c / 2 + fixed, equal at N = 2 fixed / c
-    even = 2 * max(t_fixed, 0.0) / per_point
+    per_point, parity = c_serial / over.size, summed / c_serial
+    # on idle cores: serial N c against N c p / 2 + fixed (p the parity), equal at
+    # N = 2 fixed / (c (2 - p))
+    even = 2 * max(t_fixed, 0.0) / (per_point * (2 - parity)) if parity < 2 else float("inf")
     print(f"{over.size} points, chunks of {chunk}, workers with "
           f"{'dask defaults' if defaults else 'the sweep settings'}; load average "
           f"{load0[0]:.1f} at the start, {os.getloadavg()[0]:.1f} at the end")
@@ -109,7 +110,7 @@ def main():
           f"{summed / c_serial:.2f} (parity 1.00); serial CPU / busiest worker's CPU "
           f"{c_serial / busiest:.2f}x (the ratio on 2 idle cores)")
     print(f"  fixed cost of a Dask sweep {1e3 * t_fixed:.0f} ms: break-even on 2 idle cores "
-          f"at about {even:.0f} points (in 2 chunks or more)")
+          f"at about {even:.0f} points of this cost and parity (in 2 chunks or more)")
     print(f"  failed chunks {len(serial.failed)}/{len(dask_run.failed)}; bit for bit: {same}")
 
 
