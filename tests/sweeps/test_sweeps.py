@@ -8,7 +8,7 @@ import sympy as sp
 
 import rigidmech as rm
 from rigidmech import vibrations
-from rigidmech.sweeps import ClusterError, Labelled, grid, points, sweep
+from rigidmech.sweeps import WORKER_CONFIG, ClusterError, Labelled, grid, points, sweep
 
 
 def two_mass_pendulum():
@@ -164,10 +164,24 @@ def test_unreachable_scheduler_is_a_clear_error(eqs):
 @pytest.fixture(scope="module")
 def client():
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster, \
+    import dask
+    with dask.config.set(WORKER_CONFIG), \
+            distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                     dashboard_address=None) as cluster, \
             distributed.Client(cluster, set_as_default=False) as c:
         yield c
+
+
+def test_workers_started_under_worker_config_keep_malloc_defaults_and_no_profiler(client):
+    # dask's nanny sets MALLOC_TRIM_THRESHOLD_ in its workers (glibc then maps and unmaps
+    # every large array: a page fault per page, the worker's CPU a point up by a third on the
+    # sweep benchmark) and samples their stacks every 10 ms; WORKER_CONFIG undoes both
+    import os
+
+    import dask
+    seen = client.run(lambda: (os.environ.get("MALLOC_TRIM_THRESHOLD_"),
+                               dask.config.get("distributed.worker.profile.enabled")))
+    assert len(seen) == 2 and set(seen.values()) == {(None, False)}
 
 
 def test_dask_equals_inprocess_bit_for_bit(eqs, client):
