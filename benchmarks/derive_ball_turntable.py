@@ -2,13 +2,14 @@
 Kane-8 (sympy's KanesMethod deriving the planar 8-link rod pendulum) and against KanesMethod
 on the same ball, same run (book, ch. 9.1.2, 10.1.3, 25.3).
 
-The model (built from rigidmech's public objects): a uniform ball (mass m, radius r, inertia
-2 m r^2 / 5) whose centre is G = (x, y, r) in the Galilean R0 and whose frame is oriented
-relative to R0 by the Euler parameters (e0, e1, e2, e3) (``Frame.euler_parameters``); it
-rolls without slipping (``RollingContact`` of ``ContactKinematics.between`` the sphere and
-the table's plane) on a turntable driven at the prescribed rate Omega about R0.k: a body
-whose frame is ``R0.rotated("Rt", about=R0.k, angle=Omega * t)``, pivoted to R0, with no
-parameter of its own. Gravity -g R0.k. Six parameters, two nonholonomic conditions.
+The model (the catalogue's ``rigidmech.models.ball_on_turntable``): a uniform ball (mass m,
+radius r, inertia 2 m r^2 / 5) whose centre is G = (x, y, r) in the Galilean R0 and whose
+frame is oriented relative to R0 by the Euler parameters (e0, e1, e2, e3)
+(``Frame.euler_parameters``); it rolls without slipping (``RollingContact`` of
+``ContactKinematics.between`` the sphere and the table's plane) on a turntable driven at the
+prescribed rate Omega about R0.k: a body whose frame is ``R0.rotated("Rt", about=R0.k,
+angle=Omega * t)``, pivoted to R0, with no parameter of its own. Gravity -g R0.k. Six
+parameters, two nonholonomic conditions.
 
 KanesMethod on the same ball: q = (x, y, e0..e3) with sympy's ``"Quaternion"`` orientation,
 u = the rotation vector's body components (w1, w2, w3), independent, and the velocity of G
@@ -43,32 +44,18 @@ import sympy.physics.mechanics as me
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import derive  # noqa: E402  (benchmarks/derive.py: Kane-8 and the pre-imports)
 
-import rigidmech as rm  # noqa: E402
-from rigidmech.kinematics import ContactKinematics  # noqa: E402
-from rigidmech.kinematics.surfaces import Sphere  # noqa: E402
+from rigidmech import models  # noqa: E402
 
 TARGET = 0.2  # of Kane-8 (issue #20)
 PARAMS = dict(m=1.3, r=0.4, g=9.81, Omega=1.7)
 
 
 def ball_on_turntable():
-    """The ball on the driven turntable with rigidmech; returns ``(system, (x, y, e0, e1,
-    e2, e3), (m, r, g, Omega))``."""
-    x, y, e0, e1, e2, e3 = rm.coordinates("x y e0 e1 e2 e3")
-    m, r, g, W = rm.constants("m r g Omega", positive=True)
-    R0 = rm.Frame("R0")
-    Rt = R0.rotated("Rt", about=R0.k, angle=W * rm.t)
-    table = rm.Body("table", frame=Rt, mass=1)
-    G = R0.point("G", x, y, r)
-    R = R0.euler_parameters("R", e0, e1, e2, e3, origin=G)
-    ball = rm.Body("ball", frame=R, mass=m, centre=G,
-                   inertia=rm.inertia.sphere(m, r, frame=R, centre=G))
-    s = rm.System(galilean=R0)
-    s.connect(R0, table, rm.joints.Pivot(at=R0.origin, axis=R0.k))
-    contact = ContactKinematics.between(R, Sphere(G, r), Rt, rm.Plane(Rt.origin, Rt.k))
-    s.connect(table, ball, rm.actions.RollingContact(contact))
-    s.act(rm.gravity(-g * R0.k))
-    return s, (x, y, e0, e1, e2, e3), (m, r, g, W)
+    """The ball on the driven turntable with rigidmech (the catalogue's
+    ``models.ball_on_turntable``); returns ``(system, (x, y, e0, e1, e2, e3), (m, r, g,
+    Omega))``."""
+    model = models.ball_on_turntable()
+    return model.system, model.coordinates, model.constants
 
 
 def ball_kane():

@@ -1,6 +1,7 @@
 """A uniform ball on Euler parameters rolling without slipping on a turntable driven at the
-constant rate Omega about the vertical (book, ch. 9.1.2, 10.1.3, 25.3): the model of
-``benchmarks/derive_ball_turntable.py`` (the table a body whose frame turns by Omega t).
+constant rate Omega about the vertical (book, ch. 9.1.2, 10.1.3, 25.3): the catalogue's
+:func:`rigidmech.models.ball_on_turntable` (the table a body whose frame turns by Omega t),
+the model ``benchmarks/derive_ball_turntable.py`` times.
 
 References, independent of rigidmech's derivation:
 
@@ -22,6 +23,7 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
+from rigidmech import models
 from rigidmech.vectors import euler_parameter_rates
 
 _PATH = Path(__file__).resolve().parents[2] / "benchmarks" / "derive_ball_turntable.py"
@@ -37,8 +39,8 @@ def bench():
 
 
 @pytest.fixture(scope="module")
-def equations(bench):
-    return bench.ball_on_turntable()[0].equations_of_motion()
+def equations():
+    return models.ball_on_turntable().system.equations_of_motion()
 
 
 def test_ball_on_turntable_matches_kanes_method(bench, equations):

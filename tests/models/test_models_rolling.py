@@ -61,3 +61,38 @@ def test_wheel_rolls_down_the_incline_at_g_sin_alpha_over_one_plus_k2_over_r2(in
 def test_wheel_rejects_an_unknown_inertia():
     with pytest.raises(ArgumentError, match=r"`inertia` must be one of \('disk', 'ring'\)"):
         models.wheel_on_incline(0.1, "rod")
+
+
+def test_ball_on_turntable_handles_and_the_table_driven_without_a_coordinate():
+    model = models.ball_on_turntable()
+    assert [q.func.__name__ for q in model.coordinates] == ["x", "y", "e0", "e1", "e2", "e3"]
+    assert [c.name for c in model.constants] == ["m", "r", "g", "Omega"]
+    assert [b.name for b in model.bodies] == ["table", "ball"]
+    assert [f.name for f in model.frames] == ["R0", "Rt", "R"]
+    # the table turns by Omega t about R0.k and adds no parameter of situation
+    assert model.system.coordinates == model.coordinates
+    assert len(model.system.constraints()) == 2
+
+
+def test_ball_on_turntable_no_slip_is_v_G_equal_to_the_table_velocity_omega_k_cross_rho():
+    # at e = (1, 0, 0, 0), e' = 0 (the ball not turning), t = 0, the conditions read
+    # v_G - Omega k ^ (x i + y j) = 0: x' + Omega y = 0 and y' - Omega x = 0 (ch. 10.1, 17.1)
+    # (the conditions are written in the table's axes, turned by Omega t)
+    model = models.ball_on_turntable()
+    x, y, e0, e1, e2, e3 = model.coordinates
+    W = model.constant("Omega")
+    t = sp.Symbol("t")
+    at_rest = {**{e.diff(): 0 for e in (e0, e1, e2, e3)}, e0: 1, e1: 0, e2: 0, e3: 0}
+    at_t0 = {sp.sin(W * t): 0, sp.cos(W * t): 1}
+    got = [sp.simplify(c.subs(at_rest).subs(at_t0)) for c in _conditions(model.system)]
+    expected = [x.diff() + W * y, y.diff() - W * x]
+    assert all(sp.simplify(a - b) == 0 for a, b in zip(got, expected, strict=True))
+
+
+def test_ball_on_turntable_takes_a_given_rate():
+    model = models.ball_on_turntable(Omega=sp.Rational(3, 2))
+    assert model.constants[-1] == sp.Rational(3, 2)
+    symbols = set().union(*(c.free_symbols for c in _conditions(model.system)))
+    assert "Omega" not in {s.name for s in symbols}
+    assert sp.Rational(3, 2) * sp.Symbol("t") in {a for c in _conditions(model.system)
+                                                  for a in sp.preorder_traversal(c)}

@@ -2,6 +2,8 @@
 kinematic torsors, simplification, the naming of long expressions (one rule, tested at its
 boundary), loops with their closure conditions and multipliers, systems refused."""
 
+import re
+
 import pytest
 import sympy as sp
 
@@ -144,6 +146,38 @@ def test_a_loop_shows_its_closure_conditions_and_multipliers():
     assert "A^T lambda = " in text and str(lam[0]) in text
 
 
+def test_the_hyperstatic_unknowns_of_a_closing_joint_are_named_in_the_report():
+    # the warning's names (4.Z, 4.L, 4.M: the closing pivot's out-of-plane components, ch.
+    # 14.2) are in the report's linked parameters, text and LaTeX, said to be taken zero
+    four_bar = models.four_bar()
+    names = ", ".join(four_bar.system.hyperstatic_unknowns())
+    with pytest.warns(rm.errors.HyperstaticWarning, match=re.escape(names)):
+        got = report.derivation(four_bar, simplify=False)
+    linked = got.steps[1]
+    assert linked.title == "Linked parameters"
+    line = ("hyperstatic unknowns 4.Z, 4.L, 4.M: components of the action of the "
+            "loop-closing joint 4 that the equations do not determine; taken zero (the tree "
+            "joints carry the load, ch. 14.2)")
+    assert "   " + line in linked.to_text().splitlines()
+    assert line in linked.to_latex()
+    assert "closes a loop: its multipliers; hyperstatic 4.Z, 4.L, 4.M taken zero" in got.to_text()
+
+
+def test_the_hyperstatic_unknowns_of_a_loop_without_conditions_are_named():
+    # a shaft in two coaxial pivots: the second closes a loop with no condition on the
+    # parameters (no linked parameters step) and 5 undetermined components
+    R0 = rm.Frame("R0")
+    Rr = R0.rotated("Rr", about=R0.i, angle=rm.coordinates("q"))
+    s = rm.System(galilean=R0)
+    shaft = rm.Body("shaft", frame=Rr, mass=1)
+    s.connect(R0, shaft, rm.joints.Pivot(at=R0.origin, axis=R0.i), label="A")
+    s.connect(R0, shaft, rm.joints.Pivot(at=R0.point("B", 1, 0, 0), axis=R0.i), label="B")
+    with pytest.warns(rm.errors.HyperstaticWarning, match=r"B\.X, B\.Y, B\.Z, B\.L, B\.M"):
+        text = report.derivation(s, simplify=False).to_text()
+    assert "Linked parameters" not in text
+    assert "closes a loop: its multipliers; hyperstatic B.X, B.Y, B.Z, B.L, B.M taken zero" in text
+
+
 def test_a_rolling_contact_is_shown_with_its_unknowns_and_its_multipliers():
     # the rolling contact is the disc's tree connection and it links the parameters: its
     # power goes through A^T lambda, and is not announced as zero (ch. 25.3.3)
@@ -153,6 +187,7 @@ def test_a_rolling_contact_is_shown_with_its_unknowns_and_its_multipliers():
             "unknowns N_1, T1_1, T2_1; linking: in the equations through its multipliers]"
             ) in text
     assert "(connection 1)" not in text
+    assert "hyperstatic" not in text              # an isostatic linking connection
     assert "A^T lambda = [[lambda_1.t1], [lambda_1.t2], [0], [0], " in text
 
 

@@ -9,7 +9,8 @@ the examples import these builders rather than building their own copies.
   masses), n-link pendulum, pendulum on a cart;
 * :mod:`~rigidmech.models.loops`: four-bar, chain of four-bars, slider-crank;
 * :mod:`~rigidmech.models.incline`: a block sliding down a smooth incline;
-* :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline;
+* :mod:`~rigidmech.models.rolling`: rolling disc, wheel on an incline, ball on a driven
+  turntable;
 * :mod:`~rigidmech.models.knife`: the Chaplygin sleigh (flat, inclined, on a turntable);
 * :mod:`~rigidmech.models.contacts`: a ball sliding then rolling, an eccentric disc rocking;
 * :mod:`~rigidmech.models.tops`: the symmetric heavy top on a ball joint;
@@ -46,14 +47,14 @@ from .friction import ladder
 from .incline import block_on_incline
 from .knife import sleigh, sleigh_on_incline, sleigh_on_turntable
 from .loops import CHAIN_COUPLER, FOUR_BAR_LENGTHS, four_bar, four_bar_chain, slider_crank
-from .rolling import rolling_disc, wheel_on_incline
+from .rolling import ball_on_turntable, rolling_disc, wheel_on_incline
 from .tops import heavy_top
 
 __all__ = ["Model", "Entry", "catalogue", "names", "get",
            "compound_pendulum", "double_pendulum", "point_mass_double_pendulum", "n_link_pendulum",
            "spherical_chain", "cart_pendulum",
            "four_bar", "four_bar_chain", "slider_crank", "FOUR_BAR_LENGTHS", "CHAIN_COUPLER",
-           "block_on_incline", "rolling_disc", "wheel_on_incline",
+           "block_on_incline", "rolling_disc", "wheel_on_incline", "ball_on_turntable",
            "sleigh", "sleigh_on_incline", "sleigh_on_turntable",
            "sliding_ball", "eccentric_disc", "heavy_top",
            "whipple_bicycle", "BENCHMARK_BICYCLE", "ladder"]
@@ -90,6 +91,7 @@ _ENTRIES = tuple(Entry(f.__name__, section, f.__module__.rsplit(".", 1)[-1], f) 
     (block_on_incline, "ch. 23.2.5, 27.4"),
     (rolling_disc, "ch. 10.1, 13.1"),
     (wheel_on_incline, "ch. 23.4"),
+    (ball_on_turntable, "ch. 10.1, 13.1, 17.1, 25.3.3"),
     (sleigh, "ch. 13.1, 25.3.3"),
     (sleigh_on_incline, "ch. 13.1, 25.3.3"),
     (sleigh_on_turntable, "ch. 13.1, 25.3.3"),
@@ -121,7 +123,7 @@ def names() -> tuple:
     --------
     >>> from rigidmech import models
     >>> len(models.names())
-    20
+    21
     """
     return tuple(_BY_NAME)
 

@@ -1,5 +1,5 @@
-"""Bodies rolling without slipping: a disc on a plane and a wheel on an incline (book,
-ch. 10.1, 13.1, 23.4).
+"""Bodies rolling without slipping: a disc on a plane, a wheel on an incline and a ball on
+a driven turntable (book, ch. 10.1, 13.1, 17.1, 23.4).
 
 The no-slip condition is a :class:`~rigidmech.actions.RollingContact` (velocity
 constraints, Lagrange multipliers), its contact point and normal either found from the
@@ -10,15 +10,15 @@ from __future__ import annotations
 
 from .. import inertia as _inertia
 from .._core.errors import ArgumentError
-from ..actions import RollingContact, gravity
+from ..actions import Pivot, RollingContact, gravity
 from ..dynamics import System
 from ..kinematics import ContactKinematics
-from ..kinematics.surfaces import Circle, Plane
+from ..kinematics.surfaces import Circle, Plane, Sphere
 from ..kinetics import Body
-from ..vectors import Frame, Line, constants, coordinates
+from ..vectors import Frame, Line, constants, coordinates, t
 from ._model import Model
 
-__all__ = ["rolling_disc", "wheel_on_incline"]
+__all__ = ["rolling_disc", "wheel_on_incline", "ball_on_turntable"]
 
 _CONTACTS = ("between", "given")
 _WHEEL_INERTIAS = ("disk", "ring")
@@ -118,3 +118,58 @@ def wheel_on_incline(alpha, inertia: str = "disk") -> Model:
     s.connect(R0, wheel, rolling)
     s.act(gravity(-g * R0.j))
     return Model(s, (x, th), (m, g, r), (R0, Ri, R1), (wheel,), (C,), (rolling,))
+
+
+def ball_on_turntable(Omega=None) -> Model:
+    """A uniform ball (mass m, radius r) on Euler parameters rolling without slipping on a
+    horizontal turntable driven at the constant rate Omega about R0.k.
+
+    The ball's centre is G = (x, y, r) in the Galilean R0 and its frame R is oriented
+    relative to R0 by the Euler parameters (e0, e1, e2, e3) (book, ch. 9.1.2); inertia
+    2 m r^2 / 5 about G. The table is a body whose frame Rt = R0 turned by Omega t about R0.k,
+    pivoted to R0 about R0.k: its motion is prescribed, so it adds no parameter of situation
+    and no equation (a driven support; its velocity at the contact, Omega k ^ GI, is the
+    velocity of entrainment of ch. 17.1). The ball rolls on the table's plane (a
+    :class:`~rigidmech.actions.RollingContact` of ``ContactKinematics.between`` the sphere
+    and the plane; the sliding velocity of ch. 10.1 zero, ch. 13.1): two nonholonomic
+    conditions, kept with Lagrange multipliers (ch. 25.3.3). Gravity ``-g R0.k``. The
+    centre runs on a circle at the rate 2 Omega / 7 in R0.
+
+    Parameters
+    ----------
+    Omega : number or sympy expression, optional
+        The table's rate; a positive symbol ``Omega`` unless given.
+
+    Returns
+    -------
+    Model
+        coordinates (x, y, e0, e1, e2, e3), constants (m, r, g, Omega), frames (R0, Rt, R),
+        bodies (table, ball), points (G,), connections (the rolling contact,).
+
+    Examples
+    --------
+    >>> from rigidmech import models
+    >>> ball = models.ball_on_turntable()
+    >>> [b.name for b in ball.bodies], len(ball.system.constraints())
+    (['table', 'ball'], 2)
+    """
+    x, y, e0, e1, e2, e3 = coordinates("x y e0 e1 e2 e3")
+    m, r, g = constants("m r g", positive=True)
+    if Omega is None:
+        Omega = constants("Omega", positive=True)
+    R0 = Frame("R0")
+    Rt = R0.rotated("Rt", about=R0.k, angle=Omega * t)
+    # the table's mass never enters: its motion is prescribed
+    table = Body("table", frame=Rt, mass=1)
+    G = R0.point("G", x, y, r)
+    R = R0.euler_parameters("R", e0, e1, e2, e3, origin=G)
+    ball = Body("ball", frame=R, mass=m, centre=G,
+                inertia=_inertia.sphere(m, r, frame=R, centre=G))
+    s = System(galilean=R0)
+    s.connect(R0, table, Pivot(at=R0.origin, axis=R0.k))
+    rolling = RollingContact(ContactKinematics.between(R, Sphere(G, r), Rt,
+                                                       Plane(Rt.origin, Rt.k)))
+    s.connect(table, ball, rolling)
+    s.act(gravity(-g * R0.k))
+    return Model(s, (x, y, e0, e1, e2, e3), (m, r, g, Omega), (R0, Rt, R), (table, ball), (G,),
+                 (rolling,))

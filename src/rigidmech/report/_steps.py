@@ -139,9 +139,32 @@ class StepsWriter:
                               Relation(velocity, 0), "condition on the velocities"))
             lines.append((Words("lambda", r"\lambda"), sp.Tuple(*s.multiplier_symbols()),
                           "Lagrange multipliers, one per condition"))
+            lines += [(None, None, note) for note in self._hyperstatic_notes()]
             self._add("Linked parameters", "ch. 25.3.3",
                       f"{len(rows)} conditions link the {len(self.q)} parameters; each has a "
                       "Lagrange multiplier.", lines)
+
+    def _hyperstatic(self, label):
+        """The names of the hyperstatic unknowns of the closing joint ``label``
+        (:meth:`System.hyperstatic_unknowns
+        <rigidmech.dynamics.System.hyperstatic_unknowns>`, ``<label>.<component>``)."""
+        return tuple(n for n in self.system.hyperstatic_unknowns()
+                     if n.rsplit(".", 1)[0] == label)
+
+    def _hyperstatic_notes(self):
+        """One note per loop-closing joint with hyperstatic unknowns: the components the
+        equations do not determine, taken zero as the connection actions take them (their
+        HyperstaticWarning says the same, ch. 14.2)."""
+        tree = {id(k) for k in self.system.mechanism.tree_links()}
+        notes = []
+        for link in self.system.mechanism.links:
+            names = () if id(link) in tree else self._hyperstatic(link.label)
+            if names:
+                notes.append(f"hyperstatic unknowns {', '.join(names)}: components of the "
+                             f"action of the loop-closing joint {link.label} that the "
+                             "equations do not determine; taken zero (the tree joints carry "
+                             "the load, ch. 14.2)")
+        return notes
 
     # -- 2. kinematics ----------------------------------------------------------------
     def kinematics(self):
@@ -194,6 +217,9 @@ class StepsWriter:
                 A = s.connection_action(_as_argument(first), _as_argument(second),
                                         label=link.label)
                 note = f"{kind} {link.label}, closes a loop: its multipliers"
+                hyperstatic = self._hyperstatic(link.label)
+                if hyperstatic:
+                    note += f"; hyperstatic {', '.join(hyperstatic)} taken zero"
             elif hasattr(conn, "action_torsor"):
                 A, unknowns = conn.action_torsor(link.label)
                 note = f"{kind} {link.label}: unknowns {', '.join(map(str, unknowns))}"

@@ -7,7 +7,8 @@ the actions' torsors, the partial kinematic torsors and the power coefficients t
 are assembled from, the equations themselves) and lays them out the book's way:
 
 1. the parameters of situation (and, for linked parameters, the closure conditions and their
-   Lagrange multipliers, ch. 25.3.3);
+   Lagrange multipliers, ch. 25.3.3, with the hyperstatic unknowns of a loop-closing joint
+   named and taken zero, ch. 14.2);
 2. each body's kinematic torsor {V(S/R)} at a chosen point (ch. 9.2.4);
 3. the kinetic and dynamic torsors {C(S/R)}, {D(S/R)} at the mass centre and the kinetic
    energy (ch. 16);
