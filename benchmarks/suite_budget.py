@@ -131,8 +131,9 @@ def main(argv=None):
     cores = args.cpus or len(os.sched_getaffinity(0))
     command = readme_test_command()
     print("The README's test command against Kane-8 (sympy KanesMethod, planar 8-link pendulum)")
+    load0 = os.getloadavg()[0]
     print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores on the machine, "
-          f"{cores} used; load average at start {os.getloadavg()[0]:.2f}")
+          f"{cores} used; load average at start {load0:.2f}")
 
     if not args.cold:   # compiled modules and rewritten tests cached, as for a second run
         env = _env(args.cpus)
@@ -162,9 +163,14 @@ def main(argv=None):
         print(f"{'slow stage, wall':34}{slow[0]:10.1f}{slow[0] / kw:10.1f}")
         print(f"{'slow stage, CPU / ' + str(cores) + ' cores':34}{slow[1] / cores:10.1f}"
               f"{slow[1] / cores / kc:10.1f}")
-    verdict = "met" if wall / kw <= BUDGET else "NOT met"
-    print(f"\nbudget: the default suite <= {BUDGET:.0f} Kane-8 (wall): {verdict} "
-          f"({wall / kw:.1f})")
+    by_wall, by_cpu = wall / kw, cpu / cores / kc
+    print(f"\nbudget: the default suite <= {BUDGET:.0f} Kane-8 on {cores} cores")
+    print(f"  by wall time (the target):      {by_wall:5.1f} Kane-8  "
+          f"{'met' if by_wall <= BUDGET else 'NOT met'}")
+    print(f"  by CPU time / {cores} cores (idle est.): {by_cpu:5.1f} Kane-8  "
+          f"{'met' if by_cpu <= BUDGET else 'NOT met'}")
+    print(f"  load average {load0:.2f} at start, {os.getloadavg()[0]:.2f} at the end: on a "
+          "shared machine the CPU figure is the steadier one")
     return 1 if rc or (slow and slow[2]) else 0
 
 

@@ -64,9 +64,9 @@ from rigidmech.testing.fuzz.strategies import models
 # every test; hypothesis draws derandomized, so the default run is a reproducible gate (a
 # failure comes from the change under test, not from a new draw) and the models of a test's
 # default sample are the first ones of its larger sample in the slow stage (the same test
-# function drawn longer). CI runs both stages: the models compared in CI are at least those of
-# the former default sample (20 trees, 3 of each constrained family, 4 actions, 10 per
-# metamorphic test) plus the seeded run.
+# function drawn longer). CI runs both stages: it compares as many models as before (the
+# former default sample, 20 trees, 3 of each constrained family, 4 actions, 10 per
+# metamorphic test, plus the seeded run of 300).
 #: models compared with sympy in the default run (each costs 0.2 s to 10 s, mostly Kane's
 #: method)
 N_MODELS = 6
@@ -84,13 +84,13 @@ N_CONSTRAINED = 1
 N_EIGENVALUES = 2
 N_HELPER = 4
 #: the seeded run of a few hundred models (CI's slow stage): trees, rolling and knife-edge
-#: models, planar loops, spherical loops -- 300 models, plus the models the default run
-#: drew before its sample was cut (20 trees, 3 of each constrained family)
-SLOW = {"trees": 200 + 20 - N_MODELS, "rolling": 40 + 3 - N_ROLLING,
-        "planar": 40 + 3 - N_PLANAR, "spherical": 20 + 3 - N_CLOSURES}
-#: the slow stage's sample of the other hypothesis tests (the default run's size before the
-#: suite's budget; the default run draws the first models of the same sequence)
-LARGER = {"actions": 4, "metamorphic": 10, "constrained": 3, "eigenvalues": 5, "helper": 10}
+#: models, planar loops, spherical loops -- 300 models
+SLOW = {"trees": 200, "rolling": 40, "planar": 40, "spherical": 20}
+#: the slow stage's sample of every test drawn by hypothesis: the default run's size before
+#: the suite's budget (the same sequence drawn longer: the default run's models are its first
+#: ones; for the four differential tests, exactly the former default sample)
+LARGER = {"trees": 20, "rolling": 3, "planar": 3, "spherical": 3, "actions": 4,
+          "metamorphic": 10, "constrained": 3, "eigenvalues": 5, "helper": 10}
 
 #: every joint but ``polar`` (its dropped coordinate, fixed, has tests of its own below)
 TREE_JOINTS = tuple(j for j in JOINT_ORDER if j not in ("polar", "ball", "disc"))
@@ -186,6 +186,16 @@ test_random_planar_loops_agree_with_kanes_method = _fuzz(
     _check_planar_loops, N_PLANAR, models(**PLANAR_LOOPS, closure="planar"))
 test_random_closed_loops_agree_with_sympy = _fuzz(
     _check_spherical_loops, N_CLOSURES, models(**SPHERICAL_LOOPS))
+# the same checks drawn longer (slow stage): the former default sample, model for model (the
+# default run's models are its first ones)
+test_random_trees_agree_with_kanes_method_larger = pytest.mark.slow(_fuzz(
+    _check_trees, LARGER["trees"], models(joints=TREE_JOINTS, **SMALL)))
+test_random_rolling_and_knife_edge_models_agree_with_kanes_method_larger = pytest.mark.slow(
+    _fuzz(_check_rolling, LARGER["rolling"], models(**ROLLING_MODELS)))
+test_random_planar_loops_agree_with_kanes_method_larger = pytest.mark.slow(_fuzz(
+    _check_planar_loops, LARGER["planar"], models(**PLANAR_LOOPS, closure="planar")))
+test_random_closed_loops_agree_with_sympy_larger = pytest.mark.slow(_fuzz(
+    _check_spherical_loops, LARGER["spherical"], models(**SPHERICAL_LOOPS)))
 
 
 def _slow(check, n, strategy):
