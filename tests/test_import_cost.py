@@ -7,6 +7,7 @@ must still resolve, to the same object as before. Checked in fresh interpreters,
 test process has imported everything already. No timing here (benchmarks/import_time.py).
 """
 
+import functools
 import json
 import os
 import subprocess
@@ -22,6 +23,7 @@ LAZY_SUBPACKAGES = ("statics", "regimes", "lagrange", "vibrations", "scenes", "m
                     "report", "drawing")
 
 
+@functools.cache     # the same script twice (two checks of one fresh import): run once
 def run_json(code):
     """Run `code` in a fresh interpreter (warnings as errors); its last stdout line, as JSON."""
     env = dict(os.environ, PYTHONPATH=str(SRC) + os.pathsep + os.environ.get("PYTHONPATH", ""))

@@ -115,7 +115,8 @@ def test_bad_input():
                                 at=R0.i)
 
 
-@pytest.mark.parametrize("seed", range(3))
+# one reference and state by default, two more in the slow stage (a derivation of 2 s each)
+@pytest.mark.parametrize("seed", [0, *(pytest.param(k, marks=pytest.mark.slow) for k in (1, 2))])
 def test_inertial_potential_energy_derives_the_power(seed):
     """In a steady motion of the reference (constant rotation vector, origin with a constant
     acceleration in its basis), the power of the inertial actions in the motion relative to

@@ -19,6 +19,8 @@ fundamental principle on each body (m a_G and d sigma_G / dt by finite differenc
 hand-written motion).
 """
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -46,6 +48,26 @@ def _body(name, frame, origin, offset, inertia=None):
                    inertia=InertiaOperator.from_matrix(inertia.tolist(), frame=frame, at=Gp))
 
 
+def _shared(build):
+    """``build`` once per module for each set of hashable arguments (the tests read the
+    systems, never change them: each derivation is done once, not once per test)."""
+    built = {}
+
+    @functools.wraps(build)
+    def shared(*args, **kwargs):
+        try:
+            key = (args, tuple(sorted(kwargs.items())))
+            hash(key)
+        except TypeError:               # an array among the arguments: built for the caller
+            return build(*args, **kwargs)
+        if key not in built:
+            built[key] = build(*args, **kwargs)
+        return built[key]
+
+    return shared
+
+
+@_shared
 def rssr(finger=False, g=G, meets=True, coupler_inertia=None):
     """The RSSR four-bar; the coupler on the crank by a spherical joint (coordinates q1, q3,
     psi, theta, phi) or by a spherical joint with finger (q1, q3, a, b). ``meets=False``
@@ -365,6 +387,7 @@ def test_connection_actions_satisfy_newton_on_each_body(finger):
 
 
 # -- the same mechanism with the loop closed at the rocker's pivot ------------------------
+@_shared
 def rssr_closed_at_the_pivot(g=G):
     """The RSSR as the tree ground -pivot- crank -spherical- coupler -spherical- rocker (the
     rocker's orientation yaw alpha, pitch beta, roll gamma about B), the loop closed by the

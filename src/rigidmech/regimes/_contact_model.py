@@ -224,6 +224,7 @@ class _Model:
         self._speed_terms = self._terms + 1 + len(gaps)     # + row number: its c's terms
         self._n = n
         self._memo = (None, None)
+        self._saddle_memo = (None, None, None)
 
     def closed(self, vals, contact) -> bool:
         """Whether ``contact`` (with a gap) is closed at the evaluated ``vals``: its gap is
@@ -342,9 +343,21 @@ class _Model:
         """
         n = self.n
         vals = self.values(t, y) if vals is None else vals
+        _, _, layout, x = self._solved(t, vals, states)
+        return x[:n].copy(), x[n:].copy(), list(layout)
+
+    def _solved(self, t, vals, states):
+        """(K, rhs, layout, x = K^-1 rhs) of the regime ``states`` at the evaluated ``vals``,
+        kept for the last pair: the right-hand side, the contact forces and the scales of the
+        normal forces at one state (an event check after a step) form and solve the regime
+        once (the rank check on its conditions included)."""
+        memo, states = self._saddle_memo, tuple(states)
+        if memo[0] is vals and memo[1] == states:     # ``vals`` held here: its id is not reused
+            return memo[2]
         K, rhs, layout = self._saddle(t, vals, states)
-        x = np.linalg.solve(K, rhs)
-        return x[:n], x[n:], layout
+        out = (K, rhs, tuple(layout), np.linalg.solve(K, rhs))
+        self._saddle_memo = (vals, states, out)
+        return out
 
     def _saddle(self, t, vals, states):
         """The matrix K = [[M, -G^T], [A, 0]] and right-hand side [f, bias] of the regime
@@ -376,7 +389,7 @@ class _Model:
         lift, ...) and bias_j, so its terms add up to at most sum_j |K^-1_ij| (sum of |terms
         of f_j|, |bias_j|). A normal force that small relative to them is their rounding."""
         vals = self.values(t, y)
-        K, rhs, layout = self._saddle(t, vals, states)
+        K, rhs, layout, _ = self._solved(t, vals, states)
         terms = np.asarray(vals[self._terms], dtype=float).reshape(-1)
         size = np.concatenate([terms, np.abs(rhs[self.n:])])
         x = np.abs(np.linalg.inv(K)) @ size
