@@ -76,7 +76,7 @@ def main():
     c_serial, f_serial = c1 - c0, f1 - f0
     with dask.config.set({} if defaults else WORKER_CONFIG), \
             LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                         dashboard_address=None) as cluster, Client(cluster) as client:
+                         dashboard_address=":0") as cluster, Client(cluster) as client:
         sweep(eqs, grid(m2=[1.0]), backend="dask", client=client, **tiny)  # workers warmed
         t0 = time.perf_counter()
         sweep(eqs, grid(m2=[1.0]), backend="dask", client=client, **tiny)
