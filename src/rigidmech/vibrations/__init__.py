@@ -10,7 +10,7 @@ with q' ≠ 0 (:mod:`~rigidmech.vibrations.steady`), rotors and pendulums
 (:mod:`~rigidmech.vibrations.rotors`).
 """
 
-from .critical import StabilityChange, critical_value, stability_changes
+from .critical import StabilityChange, critical_value, growth, stability_changes
 from .equilibria import Bifurcation, bifurcation, equilibria, potential_stability, stability
 from .linearize import LinearSystem, linearize
 from .modes import Modes, harmonic_response_direct, natural_modes, plot_frequency_response
@@ -59,6 +59,7 @@ __all__ = [
     "Modes", "natural_modes", "harmonic_response_direct", "plot_frequency_response",
     "LinearSystem", "linearize", "equilibria", "stability", "potential_stability",
     "Bifurcation", "bifurcation", "critical_value", "stability_changes", "StabilityChange",
+    "growth",
     "SteadyMotion", "steady_motions", "steady_stability",
     "rotor_bearing_action", "bearing_forces", "balancing_masses", "equivalent_length",
     "centre_of_percussion", "kater_conjugate", "compound_pendulum_period",
