@@ -234,20 +234,20 @@ def test_the_direct_batched_call_gives_the_checked_calls_numbers_bit_for_bit(eqs
     # the chunk's task calls the generated batched code directly; with that path switched off
     # every call goes through the compiled solve's argument checks: the same function on the
     # same arrays, so the same numbers to the last bit
-    from rigidmech.sweeps import _tasks
+    from rigidmech.dynamics import _compiled
     over = grid(m2=[0.5, 1.0, 2.0], q1=[0.2, 0.8, 1.4])
     args = dict(t=(0.0, 1.0), chunk_size=4, rtol=1e-9, atol=1e-11, labels="numpy", **FIXED)
     calls = []
-    direct = _tasks._direct_batched
+    direct = _compiled.batched_first_order
 
-    def spy(solve):
-        found = direct(solve)
-        calls.append(found[0] is not None)
+    def spy(solve, n):
+        found = direct(solve, n)
+        calls.append(found is not None)
         return found
 
-    monkeypatch.setattr(_tasks, "_direct_batched", spy)
+    monkeypatch.setattr(_compiled, "batched_first_order", spy)
     fast = sweep(eqs, over, **args).values.values
     assert calls and all(calls)
-    monkeypatch.setattr(_tasks, "_direct_batched", lambda solve: (None, False))
+    monkeypatch.setattr(_compiled, "batched_first_order", lambda solve, n: None)
     checked = sweep(eqs, over, **args).values.values
     np.testing.assert_array_equal(fast, checked)

@@ -257,6 +257,38 @@ def solver(eqs):
     return eqs._cache["solver"]
 
 
+def batched_first_order(solve, n):
+    """``step(t, y, values)``: y' = (q', q'') of a float64 batch y of shape (2n, *batch) from
+    the generated batched code of `solve` (a :class:`CompiledLinearSolve`) called directly,
+    without the argument handling of ``solve(...)``; ``values`` the arguments after q' (floats
+    or arrays along the batch). ``step`` returns None when the generated code hands A and b
+    back (a pivot too small) or raises: the caller then takes the checked call, which decides.
+    A symmetric system's code writes q'' into the rows of the output it is given (no
+    concatenation after it). None for a solve without generated batched code."""
+    if not isinstance(solve, CompiledLinearSolve):
+        return None
+    batched, into = solve.batched, solve.symmetric
+    empty, errstate = np.empty, np.errstate
+
+    def step(t, y, values):
+        u = y[n:]
+        try:
+            with errstate(all="ignore"):
+                if into:
+                    out = empty(y.shape)
+                    out[:n] = u
+                    acc = batched(t, y[:n], u, *values, y.shape[1:], out[n:])
+                else:
+                    acc = batched(t, y[:n], u, *values, y.shape[1:])
+        except (ArithmeticError, ValueError, TypeError):
+            return None
+        if type(acc) is tuple:
+            return None
+        return out if into else np.concatenate((u, acc), axis=0)
+
+    return step
+
+
 def rhs(eqs, params):
     """The first-order right-hand side ``f(t, y)`` with y = (q, q') (see
     :meth:`EquationsOfMotion.rhs <rigidmech.dynamics.EquationsOfMotion.rhs>`)."""
@@ -278,13 +310,11 @@ def rhs(eqs, params):
         # output it is given: no concatenation after it)
         compiled = isinstance(solve, CompiledLinearSolve)
         linear = solve if compiled else getattr(solve, "linear", None)
-        batched = solve.batched if compiled else None
-        into = compiled and solve.symmetric
-        empty = np.empty
         tail = tuple(float(v) for v in values)
         first_order = linear.first_order(tail) if linear is not None else None
+        batch_step = batched_first_order(solve, n)
         size, f64, ndarray, scalar = 2 * n, np.float64, np.ndarray, (float, np.float64)
-        shape, errstate = (size,), np.errstate
+        shape = (size,)
 
         def fun(t, y):
             if type(y) is ndarray and y.dtype == f64:
@@ -296,22 +326,12 @@ def rhs(eqs, params):
                             dy = None
                         if type(dy) is ndarray:
                             return dy
-                elif batched is not None and y.ndim == 2 and y.shape[0] == size and (
+                elif batch_step is not None and y.ndim == 2 and y.shape[0] == size and (
                         type(t) in scalar or (
                         type(t) is ndarray and t.shape == y.shape[1:] and t.dtype == f64)):
-                    u = y[n:]
-                    try:
-                        with errstate(all="ignore"):
-                            if into:
-                                out = empty(y.shape)
-                                out[:n] = u
-                                acc = batched(t, y[:n], u, *tail, y.shape[1:], out[n:])
-                            else:
-                                acc = batched(t, y[:n], u, *tail, y.shape[1:])
-                    except (ArithmeticError, ValueError, TypeError):
-                        acc = None
-                    if acc is not None and type(acc) is not tuple:
-                        return out if into else np.concatenate((u, acc), axis=0)
+                    dy = batch_step(t, y, tail)
+                    if dy is not None:
+                        return dy
             try:  # free unless raised
                 acc = solve(t, y[:n], y[n:], *values)
             except (ArithmeticError, ValueError, TypeError) as exc:

@@ -134,21 +134,30 @@ PROJECTION_ITERATIONS = 3
 PROJECTING = ("dop853", "dopri5", "bs32", "gbs", "radau")
 
 
+def _closure_rows(eqs):
+    """(indices of the holonomic rows, arguments (t, q, params, inputs), arguments (t, q, q',
+    params, inputs), the holonomic rows Φ and the velocity rows A q' + a on the stand-in
+    symbols, the stand-ins' rule): what the projector and the closure scales compile."""
+    c = eqs.constraints
+    q_s, u_s, _, w_s, rule = eqs._stand_ins()
+    hol = [i for i, p in enumerate(c.position) if p is not None]
+    args_q = [_t, list(q_s), *eqs._params, *w_s]
+    args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
+    phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+    vel = xreplace_shared(list(c.velocity), rule)
+    return hol, args_q, args_u, phi, vel, rule
+
+
 def closure_functions(eqs):
     """(rows of Φ, Φ(t, q, *params, *inputs), A(t, q, ...), c(t, q, u, ...)) of the
     constraints of `eqs`, compiled once (cached): Φ the holonomic rows (None if there are
     none), A the Jacobian of every row, c = A q' + a the velocity residual."""
-    c = eqs.constraints
-    q_s, u_s, _, w_s, rule = eqs._stand_ins()
     key = "projector"
     if key not in eqs._cache:
-        hol = [i for i, p in enumerate(c.position) if p is not None]
-        args_q = [_t, list(q_s), *eqs._params, *w_s]
-        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
-        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
+        c = eqs.constraints
+        hol, args_q, args_u, phi, vel, rule = _closure_rows(eqs)
         A = xreplace_shared(list(c.jacobian), rule)
-        vel = xreplace_shared(list(c.velocity), rule)
-        m, n = len(c), len(q_s)
+        m, n = len(c), len(args_q[1])
         eqs._cache[key] = (
             hol,
             compile_expressions(sp.ImmutableMatrix(len(hol), 1, phi), args_q,
@@ -163,15 +172,9 @@ def closure_scales(eqs):
     the terms of the holonomic rows Φ and of the velocity rows A q' + a (see
     :func:`~rigidmech._core.rules.magnitude`), compiled once (cached): the scales of the rule
     :func:`~rigidmech._core.rules.on_constraints`."""
-    c = eqs.constraints
-    q_s, u_s, _, w_s, rule = eqs._stand_ins()
     key = "closure_scales"
     if key not in eqs._cache:
-        hol = [i for i, p in enumerate(c.position) if p is not None]
-        args_q = [_t, list(q_s), *eqs._params, *w_s]
-        args_u = [_t, list(q_s), list(u_s), *eqs._params, *w_s]
-        phi = xreplace_shared([c.position[i] for i in hol], rule) if hol else []
-        vel = xreplace_shared(list(c.velocity), rule)
+        hol, args_q, args_u, phi, vel, _ = _closure_rows(eqs)
         eqs._cache[key] = (
             compile_expressions(sp.ImmutableMatrix(len(hol), 1, [magnitude(e) for e in phi]),
                                 args_q, name="closure_scales") if hol else None,

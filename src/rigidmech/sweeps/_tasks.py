@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._core.compile import CompiledLinearSolve
 from .._core.errors import NumericalError
 from ..dynamics import _compiled
 from ..ode import solve
@@ -74,25 +73,17 @@ class OdeTask:
         values = [columns[a] if a in columns else self.fixed[a] for a in self.arg_names]
         solve_ = self.solve
         # the generated batched code called directly on the chunk's float arrays, without the
-        # argument handling of solve_(...) (a fifth of a sweep's time on the double pendulum,
+        # argument handling of solve_(...) (a tenth of a sweep's CPU on the double pendulum,
         # chunks of 1000): the same function on the same arrays, so the same numbers; A and b
         # handed back (a pivot too small) or anything unexpected takes the checked call
-        direct, into = _direct_batched(solve_)
+        step = _compiled.batched_first_order(solve_, n)
         arrays = [np.asarray(v, dtype=float) for v in values]
-        batch = (size,)
 
         def fun(t, y):
-            if direct is not None and y.shape == y0.shape and type(t) in _SCALAR:
-                u = y[n:]
-                with np.errstate(all="ignore"):
-                    if into:
-                        out = np.empty(y.shape)
-                        out[:n] = u
-                        acc = direct(t, y[:n], u, *arrays, batch, out[n:])
-                    else:
-                        acc = direct(t, y[:n], u, *arrays, batch)
-                if type(acc) is not tuple:
-                    return out if into else np.concatenate((u, acc), axis=0)
+            if step is not None and y.shape == y0.shape and type(t) in _SCALAR:
+                dy = step(t, y, arrays)
+                if dy is not None:
+                    return dy
             return np.concatenate((y[n:], solve_(t, y[:n], y[n:], *values)), axis=0)
 
         # the members' parameter values are bound to the batch's columns (`values`), which
@@ -108,14 +99,6 @@ class OdeTask:
         if self.quantity == "final":
             return np.ascontiguousarray(res.y[:, -1, :].T)
         return np.ascontiguousarray(np.transpose(res.y, (2, 1, 0)))
-
-
-def _direct_batched(solve):
-    """(the generated batched function of `solve`, whether it writes into an output) for a
-    compiled solve; (None, False) for anything else (then every call is checked)."""
-    if isinstance(solve, CompiledLinearSolve):
-        return solve.batched, solve.symmetric
-    return None, False
 
 
 class EigenTask:
